@@ -1,0 +1,3 @@
+//! Whole-scene benchmarks of tileslide against its peers, measured in the same run.
+
+pub mod peers;

@@ -1,0 +1,3 @@
+//! The `tileslide` command-line tool.
+
+fn main() {}

@@ -1,0 +1,122 @@
+//! The solid/empty cell grid that every standard scene is built on.
+
+/// FNV-1a 64-bit offset basis.
+const FNV_OFFSET: u64 = 0xCBF2_9CE4_8422_2325;
+/// FNV-1a 64-bit prime.
+const FNV_PRIME: u64 = 0x0000_0100_0000_01B3;
+
+/// A `width`×`height` grid of solid/empty cells, row-major (index `y*width + x`);
+/// cell `(x, y)` covers `[x, x+1] × [y, y+1]`.
+///
+/// The fields are public so that other crates can convert the grid into their
+/// own map types; `solid` is expected to hold `width * height` entries. The
+/// queries never panic when it does not: a missing entry reads as empty.
+///
+/// ```
+/// use tileslide_scenes::SolidGrid;
+/// let grid = SolidGrid { width: 2, height: 1, solid: vec![true, false] };
+/// assert!(grid.is_solid(0, 0));
+/// assert!(!grid.is_solid(1, 0));
+/// assert!(!grid.is_solid(-1, 0)); // outside the grid is empty
+/// assert_eq!(grid.solid_count(), 1);
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SolidGrid {
+    /// Number of columns.
+    pub width: usize,
+    /// Number of rows.
+    pub height: usize,
+    /// `solid[y * width + x]` is `true` when cell `(x, y)` is solid.
+    pub solid: Vec<bool>,
+}
+
+impl SolidGrid {
+    /// Whether cell `(x, y)` is solid; cells outside the grid are empty (`false`).
+    #[must_use]
+    pub fn is_solid(&self, x: i64, y: i64) -> bool {
+        match (usize::try_from(x), usize::try_from(y)) {
+            (Ok(x), Ok(y)) if x < self.width && y < self.height => {
+                self.solid.get(y * self.width + x).copied().unwrap_or(false)
+            }
+            _ => false,
+        }
+    }
+
+    /// Number of solid cells.
+    #[must_use]
+    pub fn solid_count(&self) -> usize {
+        self.solid.iter().filter(|&&s| s).count()
+    }
+
+    /// FNV-1a 64-bit hash of the row-major cell bytes (1 = solid, 0 = empty),
+    /// the golden value BENCHMARKS.md publishes for each map.
+    #[must_use]
+    pub fn fingerprint(&self) -> u64 {
+        self.solid.iter().fold(FNV_OFFSET, |hash, &s| {
+            (hash ^ u64::from(u8::from(s))).wrapping_mul(FNV_PRIME)
+        })
+    }
+
+    /// [`fingerprint`](Self::fingerprint) as 16 lowercase hex digits, the form
+    /// BENCHMARKS.md prints (e.g. `"a36c9fd56f2ba422"` for dungeon256).
+    #[must_use]
+    pub fn fingerprint_hex(&self) -> String {
+        format!("{:016x}", self.fingerprint())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fnv1a_of_known_bytes() {
+        // FNV-1a 64 of the empty input is the offset basis; of the single byte 0x00
+        // it is 0xaf63bd4c8601b7df (from the FNV reference test vectors).
+        let empty = SolidGrid {
+            width: 0,
+            height: 0,
+            solid: vec![],
+        };
+        assert_eq!(empty.fingerprint(), FNV_OFFSET);
+        let one = SolidGrid {
+            width: 1,
+            height: 1,
+            solid: vec![false],
+        };
+        assert_eq!(one.fingerprint_hex(), "af63bd4c8601b7df");
+        let solid = SolidGrid {
+            width: 1,
+            height: 1,
+            solid: vec![true],
+        };
+        assert_eq!(solid.fingerprint_hex(), "af63bc4c8601b62c");
+    }
+
+    #[test]
+    fn is_solid_reads_row_major_and_treats_outside_as_empty() {
+        // Row 0: "#.", row 1: ".."
+        let grid = SolidGrid {
+            width: 2,
+            height: 2,
+            solid: vec![true, false, false, false],
+        };
+        assert!(grid.is_solid(0, 0));
+        assert!(!grid.is_solid(1, 0));
+        assert!(!grid.is_solid(0, 1));
+        for (x, y) in [(-1, 0), (0, -1), (2, 0), (0, 2), (i64::MIN, i64::MAX)] {
+            assert!(!grid.is_solid(x, y));
+        }
+    }
+
+    #[test]
+    fn short_cell_vector_reads_as_empty_instead_of_panicking() {
+        let grid = SolidGrid {
+            width: 4,
+            height: 4,
+            solid: vec![true],
+        };
+        assert!(grid.is_solid(0, 0));
+        assert!(!grid.is_solid(3, 3));
+    }
+}

@@ -1,0 +1,43 @@
+//! The seeded standard scenes of BENCHMARKS.md, shared by tests, benchmarks and the CLI.
+//!
+//! Every figure tileslide publishes comes from these scenes, so they are
+//! generated bit-for-bit from the seeds in BENCHMARKS.md with [`SplitMix64`]:
+//!
+//! - the maps [`dungeon256`] and [`open256`] (also by name through [`Scene`]),
+//!   as a plain [`SolidGrid`] of solid/empty cells;
+//! - the "rays" scene, [`scene_rays`], with [`reference_hit_distance`] as the
+//!   plain grid walk that defines what counts as a hit.
+//!
+//! Conventions: cell `(x, y)` covers `[x, x+1] × [y, y+1]`, cells are stored
+//! row-major (`y * width + x`), and cells outside a grid are empty.
+//! [`SolidGrid::to_tile_map`] turns a grid into a `tileslide` map of solid squares.
+//!
+//! ```
+//! use tileslide_scenes::{Scene, reference_hit_distance, scene_rays};
+//!
+//! let grid = Scene::Dungeon256.grid();
+//! assert_eq!(grid.fingerprint_hex(), "a36c9fd56f2ba422");
+//! let hits = scene_rays(&grid, 1_000)
+//!     .iter()
+//!     .filter(|ray| reference_hit_distance(&grid, ray).is_some())
+//!     .count();
+//! assert!(hits > 900);
+//! ```
+
+mod dungeon;
+mod edges;
+mod grid;
+mod rays;
+mod reference_walk;
+mod rng;
+mod scene;
+mod tile_map;
+pub use tile_map::TileMapError;
+
+pub use dungeon::{dungeon256, open256};
+pub use edges::ExposedEdge;
+pub use grid::SolidGrid;
+pub use rays::{SceneRay, scene_rays};
+pub use reference_walk::reference_hit_distance;
+pub use rng::SplitMix64;
+pub use scene::Scene;

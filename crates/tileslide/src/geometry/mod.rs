@@ -1,0 +1,15 @@
+//! Geometry: segments, rays, circles and axis-aligned boxes, and the exact primitive tests
+//! between them.
+//!
+//! Everything is `f32` with [`glam::Vec2`]. Degenerate and parallel cases have defined
+//! results, documented on each function, rather than whatever the arithmetic happens to give.
+
+mod aabb;
+mod circle;
+pub(crate) mod ray;
+mod segment;
+
+pub use aabb::Aabb;
+pub use circle::Circle;
+pub use ray::{Ray, RaySegmentHit, cast_ray_segment};
+pub use segment::Segment;

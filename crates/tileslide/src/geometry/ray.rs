@@ -1,0 +1,178 @@
+use glam::Vec2;
+
+use super::Segment;
+
+/// A ray as a finite segment of motion: from `origin` to `origin + delta`.
+///
+/// Queries report positions along it as `t` in `[0, 1]`: `t = 0` is the origin, `t = 1`
+/// the end point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ray {
+    /// Where the ray starts (`t = 0`).
+    pub origin: Vec2,
+    /// The motion from start to end: the end point is `origin + delta` (`t = 1`).
+    pub delta: Vec2,
+}
+
+impl Ray {
+    /// The ray from `p0` to `p1`.
+    #[must_use]
+    pub fn between(p0: Vec2, p1: Vec2) -> Self {
+        Self {
+            origin: p0,
+            delta: p1 - p0,
+        }
+    }
+
+    /// The end point, `origin + delta`.
+    #[must_use]
+    pub fn end(&self) -> Vec2 {
+        self.origin + self.delta
+    }
+
+    /// The point at `t`.
+    #[must_use]
+    pub fn point_at(&self, t: f32) -> Vec2 {
+        self.origin + self.delta * t
+    }
+
+    /// True when origin and delta are finite.
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        self.origin.is_finite() && self.delta.is_finite()
+    }
+}
+
+/// Where a ray meets a segment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RaySegmentHit {
+    /// Fraction along the ray, in `[0, 1]`.
+    pub t: f32,
+    /// Fraction along the segment from `a` to `b`, in `[0, 1]`.
+    pub s: f32,
+}
+
+/// Exact intersection of a ray with a closed segment, or `None`.
+///
+/// Solves `origin + t·delta = a + s·(b − a)` by Cramer's rule (Ericson, *Real-Time Collision
+/// Detection*, 5.1.9.1), comparing numerators against the denominator so that no division
+/// happens for a miss and `t`, `s` are never rounded outside `[0, 1]`.
+///
+/// Defined cases:
+/// - both ends are closed: a ray that ends exactly on the segment, or touches an end point
+///   of it, hits (`t = 1`, or `s` = 0 or 1);
+/// - a ray parallel to the segment never hits it, **including a collinear ray running along
+///   it**: a surface is only ever met through its face. A ray running along a floor into a
+///   wall still hits the wall, whose end point it meets at an angle;
+/// - a zero-length ray or a zero-length segment never hits (the denominator is zero).
+///
+/// ```
+/// # use tileslide::{cast_ray_segment, Ray, Segment, Vec2};
+/// let wall = Segment::new(Vec2::new(2.0, -1.0), Vec2::new(2.0, 1.0));
+/// let hit = cast_ray_segment(&Ray::between(Vec2::ZERO, Vec2::new(4.0, 0.0)), &wall).unwrap();
+/// assert_eq!(hit.t, 0.5);
+/// assert_eq!(hit.s, 0.5);
+/// // Running along the wall is not a hit.
+/// assert!(cast_ray_segment(&Ray::between(Vec2::new(2.0, -2.0), Vec2::new(2.0, 2.0)), &wall).is_none());
+/// ```
+#[must_use]
+pub fn cast_ray_segment(ray: &Ray, segment: &Segment) -> Option<RaySegmentHit> {
+    let e = segment.delta();
+    let (t, s) = solve(ray.origin, ray.delta, segment.a, e)?;
+    Some(RaySegmentHit { t, s })
+}
+
+/// The shared kernel of every ray–segment test in the crate (the grid walk calls it with
+/// precomputed `e = b − a`), so that all ray queries agree bit for bit.
+#[inline(always)]
+pub(crate) fn solve(origin: Vec2, delta: Vec2, a: Vec2, e: Vec2) -> Option<(f32, f32)> {
+    let den = delta.perp_dot(e);
+    let w = a - origin;
+    let tn = w.perp_dot(e);
+    let sn = w.perp_dot(delta);
+    let inside = if den > 0.0 {
+        tn >= 0.0 && tn <= den && sn >= 0.0 && sn <= den
+    } else if den < 0.0 {
+        tn <= 0.0 && tn >= den && sn <= 0.0 && sn >= den
+    } else {
+        // Parallel, collinear or degenerate (also NaN): defined as no hit.
+        false
+    };
+    if inside {
+        Some((tn / den, sn / den))
+    } else {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: f32, y: f32) -> Vec2 {
+        Vec2::new(x, y)
+    }
+
+    #[test]
+    fn crossing_ray_hits_at_exact_fraction() {
+        let hit = cast_ray_segment(
+            &Ray::between(v(0.0, 0.0), v(4.0, 4.0)),
+            &Segment::new(v(0.0, 2.0), v(4.0, 2.0)),
+        )
+        .unwrap();
+        assert_eq!(hit.t, 0.5);
+        assert_eq!(hit.s, 0.5);
+    }
+
+    #[test]
+    fn ray_ending_exactly_on_segment_hits_at_t_one() {
+        let hit = cast_ray_segment(
+            &Ray::between(v(0.0, 0.0), v(2.0, 0.0)),
+            &Segment::new(v(2.0, -1.0), v(2.0, 1.0)),
+        )
+        .unwrap();
+        assert_eq!(hit.t, 1.0);
+    }
+
+    #[test]
+    fn ray_stopping_short_misses() {
+        let hit = cast_ray_segment(
+            &Ray::between(v(0.0, 0.0), v(1.999, 0.0)),
+            &Segment::new(v(2.0, -1.0), v(2.0, 1.0)),
+        );
+        assert!(hit.is_none());
+    }
+
+    #[test]
+    fn ray_through_segment_end_point_hits() {
+        let hit = cast_ray_segment(
+            &Ray::between(v(0.0, 1.0), v(4.0, 1.0)),
+            &Segment::new(v(2.0, -1.0), v(2.0, 1.0)),
+        )
+        .unwrap();
+        assert_eq!(hit.t, 0.5);
+        assert_eq!(hit.s, 1.0);
+    }
+
+    #[test]
+    fn parallel_and_collinear_rays_never_hit() {
+        let seg = Segment::new(v(0.0, 0.0), v(2.0, 0.0));
+        assert!(cast_ray_segment(&Ray::between(v(-1.0, 1.0), v(3.0, 1.0)), &seg).is_none());
+        assert!(cast_ray_segment(&Ray::between(v(-1.0, 0.0), v(3.0, 0.0)), &seg).is_none());
+        assert!(cast_ray_segment(&Ray::between(v(0.5, 0.0), v(1.5, 0.0)), &seg).is_none());
+    }
+
+    #[test]
+    fn zero_length_ray_or_segment_never_hits() {
+        let seg = Segment::new(v(0.0, -1.0), v(0.0, 1.0));
+        assert!(cast_ray_segment(&Ray::between(v(0.0, 0.0), v(0.0, 0.0)), &seg).is_none());
+        let point = Segment::new(v(1.0, 0.0), v(1.0, 0.0));
+        assert!(cast_ray_segment(&Ray::between(v(0.0, 0.0), v(2.0, 0.0)), &point).is_none());
+    }
+
+    #[test]
+    fn nan_input_never_hits() {
+        let seg = Segment::new(v(0.0, -1.0), v(0.0, 1.0));
+        assert!(cast_ray_segment(&Ray::between(v(f32::NAN, 0.0), v(1.0, 0.0)), &seg).is_none());
+    }
+}

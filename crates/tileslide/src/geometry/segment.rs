@@ -1,0 +1,81 @@
+use glam::Vec2;
+
+use super::Aabb;
+
+/// A closed line segment from `a` to `b`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment {
+    /// Start point.
+    pub a: Vec2,
+    /// End point.
+    pub b: Vec2,
+}
+
+impl Segment {
+    /// The segment from `a` to `b`.
+    #[must_use]
+    pub fn new(a: Vec2, b: Vec2) -> Self {
+        Self { a, b }
+    }
+
+    /// `b − a`.
+    #[must_use]
+    pub fn delta(&self) -> Vec2 {
+        self.b - self.a
+    }
+
+    /// Length of the segment.
+    #[must_use]
+    pub fn length(&self) -> f32 {
+        self.delta().length()
+    }
+
+    /// True when both end points are finite.
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        self.a.is_finite() && self.b.is_finite()
+    }
+
+    /// The point at fraction `s` from `a` (0) to `b` (1).
+    #[must_use]
+    pub fn point_at(&self, s: f32) -> Vec2 {
+        self.a + self.delta() * s
+    }
+
+    /// The point of the segment nearest to `p`. A zero-length segment returns `a`.
+    ///
+    /// ```
+    /// # use tileslide::{Segment, Vec2};
+    /// let s = Segment::new(Vec2::ZERO, Vec2::new(2.0, 0.0));
+    /// assert_eq!(s.closest_point(Vec2::new(1.0, 5.0)), Vec2::new(1.0, 0.0));
+    /// assert_eq!(s.closest_point(Vec2::new(-3.0, 1.0)), Vec2::ZERO);
+    /// ```
+    #[must_use]
+    pub fn closest_point(&self, p: Vec2) -> Vec2 {
+        let d = self.delta();
+        let len2 = d.length_squared();
+        if len2 == 0.0 {
+            return self.a;
+        }
+        let s = ((p - self.a).dot(d) / len2).clamp(0.0, 1.0);
+        self.point_at(s)
+    }
+
+    /// Squared distance from `p` to the segment.
+    #[must_use]
+    pub fn distance_squared_to(&self, p: Vec2) -> f32 {
+        self.closest_point(p).distance_squared(p)
+    }
+
+    /// The smallest box that contains the segment.
+    #[must_use]
+    pub fn aabb(&self) -> Aabb {
+        Aabb::from_corners(self.a, self.b)
+    }
+
+    /// The same segment, translated by `offset`.
+    #[must_use]
+    pub fn translated(&self, offset: Vec2) -> Segment {
+        Segment::new(self.a + offset, self.b + offset)
+    }
+}

@@ -1,0 +1,9 @@
+//! Loaders. Each returns a [`LoadError`] naming the file, the position (line:column or byte
+//! offset) and the cause; none panics or allocates from an unchecked size field.
+
+pub mod ascii;
+mod bytes;
+mod error;
+pub mod replica;
+
+pub use error::{LoadError, LoadErrorKind, Location};

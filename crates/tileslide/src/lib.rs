@@ -1,0 +1,54 @@
+//! # tileslide
+//!
+//! Collision detection for tile-based 2D games: tiles hold line segments with outward
+//! normals (slopes, bumps, one-way platforms), the map hides the seams between neighbouring
+//! tiles, and ray casts walk the grid exactly and return the globally nearest hit.
+//!
+//! ## Conventions
+//!
+//! - Vectors are [`glam::Vec2`] (`f32`), re-exported as [`Vec2`].
+//! - A cell is a [`Cell`] `{ col, row }`; cell (c, r) covers `[c·w, (c+1)·w) × [r·h, (r+1)·h)`
+//!   from the map's origin. The map does not assume which way is up.
+//! - A position along a ray or move is `t` in `[0, 1]`.
+//! - Normals point out of solid material; by default a ray hits only faces it meets
+//!   head-on (`dot(normal, p1 − p0) < 0`).
+//! - Bad input (files, shapes, cells) is an error naming what and where, never a panic.
+//!
+//! ## Quick start
+//!
+//! ```
+//! use tileslide::{io::ascii, Ray, RayFilter, Vec2};
+//!
+//! // '#' solid, '/' and '\' ramps, '=' one-way platform; row 0 is the top line.
+//! let map = ascii::parse("\
+//! ##########
+//! #........#
+//! #.=......#
+//! #.../####
+//! ##########", "quick.txt", 1.0)?;
+//!
+//! // Straight down from above the ramp: the nearest hit is on its slope.
+//! let down = Ray::between(Vec2::new(4.75, 1.5), Vec2::new(4.75, 4.5));
+//! let hit = map.cast_ray(down, &RayFilter::default()).unwrap();
+//! assert!((hit.point.y - 3.25).abs() < 1e-6);
+//! assert_eq!(hit.cell().map(|c| (c.col, c.row)), Some((4, 3)));
+//!
+//! // Upward through the one-way platform: its back face does not block.
+//! let up = Ray::between(Vec2::new(2.5, 2.5), Vec2::new(2.5, 1.5));
+//! assert!(map.cast_ray(up, &RayFilter::default()).is_none());
+//! # Ok::<(), tileslide::io::LoadError>(())
+//! ```
+
+pub mod geometry;
+pub mod io;
+mod query;
+mod tiles;
+
+pub use geometry::{Aabb, Circle, Ray, RaySegmentHit, Segment, cast_ray_segment};
+pub use glam::Vec2;
+pub use query::{Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
+pub use tiles::{
+    ActiveSegment, Cell, MAX_CELLS, MapError, Owner, SegmentFlags, SegmentRef, ShapeError,
+    TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet, TileSetError,
+    TileShape,
+};

@@ -1,0 +1,99 @@
+use glam::Vec2;
+
+use crate::tiles::{Owner, SegmentFlags};
+
+/// Which faces of a segment a ray can hit.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub enum Faces {
+    /// Only faces the ray meets head-on: `dot(normal, p1 − p0) < 0` (the default).
+    #[default]
+    Front,
+    /// Both faces.
+    Both,
+    /// Replica Island's direction filter: a face counts only if `dot(normal, dir) < 0`, for a
+    /// direction chosen by the caller (for example only the vertical part of a move).
+    Against(Vec2),
+}
+
+/// What a query may hit.
+///
+/// ```
+/// # use tileslide::{Faces, Owner, RayFilter, SegmentFlags, Vec2};
+/// let f = RayFilter::default();
+/// assert_eq!(f.faces, Faces::Front);
+/// let floor_only = RayFilter::against(Vec2::new(0.0, 1.0))
+///     .with_mask(SegmentFlags::SOLID)
+///     .excluding(Owner(7));
+/// assert_eq!(floor_only.exclude_owner, Some(Owner(7)));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RayFilter {
+    /// Which faces count.
+    pub faces: Faces,
+    /// A segment counts only if it has at least one of these flags.
+    pub mask: SegmentFlags,
+    /// Temporary segments of this owner are ignored (a platform casting its own rays).
+    pub exclude_owner: Option<Owner>,
+}
+
+impl Default for RayFilter {
+    fn default() -> Self {
+        Self {
+            faces: Faces::Front,
+            mask: SegmentFlags::ALL,
+            exclude_owner: None,
+        }
+    }
+}
+
+impl RayFilter {
+    /// Front faces only, every flag, no owner excluded (same as `default()`).
+    #[must_use]
+    pub fn front_faces() -> Self {
+        Self::default()
+    }
+
+    /// Both faces count.
+    #[must_use]
+    pub fn both_sides() -> Self {
+        Self {
+            faces: Faces::Both,
+            ..Self::default()
+        }
+    }
+
+    /// Faces opposing `dir` count (Replica Island's direction filter).
+    #[must_use]
+    pub fn against(dir: Vec2) -> Self {
+        Self {
+            faces: Faces::Against(dir),
+            ..Self::default()
+        }
+    }
+
+    /// The same filter, counting only segments with one of `mask`'s flags.
+    #[must_use]
+    pub fn with_mask(self, mask: SegmentFlags) -> Self {
+        Self { mask, ..self }
+    }
+
+    /// The same filter, ignoring `owner`'s temporary segments.
+    #[must_use]
+    pub fn excluding(self, owner: Owner) -> Self {
+        Self {
+            exclude_owner: Some(owner),
+            ..self
+        }
+    }
+
+    /// The direction a face must oppose, for a ray moving by `delta`, or `None` for
+    /// [`Faces::Both`].
+    #[inline(always)]
+    pub(crate) fn face_direction(&self, delta: Vec2) -> Option<Vec2> {
+        match self.faces {
+            Faces::Front => Some(delta),
+            Faces::Both => None,
+            Faces::Against(dir) => Some(dir),
+        }
+    }
+}

@@ -1,0 +1,61 @@
+use glam::Vec2;
+
+use crate::tiles::{Cell, Owner, SegmentFlags, SegmentRef, TileId};
+
+/// Where a segment found by a query comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SegmentSource {
+    /// An active segment of a tile.
+    Tile {
+        /// The active segment (its cell and index in the cell).
+        segment: SegmentRef,
+        /// The tile in that cell.
+        tile: TileId,
+        /// Index of the segment in the tile's shape.
+        source: u32,
+    },
+    /// A temporary segment.
+    Temporary {
+        /// Who submitted it.
+        owner: Owner,
+        /// Its index in [`TileMap::temporaries`](crate::TileMap::temporaries).
+        index: usize,
+        /// How fast it moves.
+        velocity: Vec2,
+    },
+}
+
+/// A ray's hit on a segment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RayHit {
+    /// Fraction along the ray, in `[0, 1]`.
+    pub t: f32,
+    /// The point hit, in world coordinates.
+    pub point: Vec2,
+    /// The outward unit normal of the segment hit.
+    pub normal: Vec2,
+    /// The flags of the segment hit.
+    pub flags: SegmentFlags,
+    /// What was hit.
+    pub source: SegmentSource,
+}
+
+impl RayHit {
+    /// The cell of the tile hit, or `None` for a temporary segment.
+    #[must_use]
+    pub fn cell(&self) -> Option<Cell> {
+        match self.source {
+            SegmentSource::Tile { segment, .. } => Some(segment.cell),
+            SegmentSource::Temporary { .. } => None,
+        }
+    }
+
+    /// The tile hit, or `None` for a temporary segment.
+    #[must_use]
+    pub fn tile(&self) -> Option<TileId> {
+        match self.source {
+            SegmentSource::Tile { tile, .. } => Some(tile),
+            SegmentSource::Temporary { .. } => None,
+        }
+    }
+}

@@ -1,0 +1,12 @@
+//! Queries against a [`TileMap`](crate::TileMap) and its temporary segments: ray casts by
+//! exact grid traversal, and overlap and point queries.
+
+mod filter;
+mod hit;
+mod overlap;
+mod ray_cast;
+mod traversal;
+
+pub use filter::{Faces, RayFilter};
+pub use hit::{RayHit, SegmentSource};
+pub use overlap::SegmentOverlap;

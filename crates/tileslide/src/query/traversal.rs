@@ -1,0 +1,191 @@
+//! The grid walk under every ray query: Amanatides & Woo, "A Fast Voxel Traversal Algorithm
+//! for Ray Tracing" (Eurographics 1987), extended so that the walk visits **every cell whose
+//! closed rectangle the ray touches**:
+//!
+//! - where the ray crosses a cell corner exactly (or within rounding of it), both cells
+//!   beside the corner are visited before the diagonal one (Bresenham, which Replica Island
+//!   used, skips them);
+//! - the cells that only touch the start point (a ray starting on a cell boundary) are
+//!   visited;
+//! - a ray running exactly along a grid line walks the strips of cells on both sides.
+//!
+//! Every segment lies in the closed rectangle of its own cell, so a segment the ray hits is
+//! always in a visited cell; together with visiting cells in order of entry this lets the
+//! caller stop as soon as its nearest hit lies before the current cell's exit (the hit is
+//! then the global nearest).
+
+use glam::Vec2;
+
+/// Relative difference under which the next x and y boundary crossings count as the same
+/// crossing (a corner): both side cells are then visited.
+const CORNER_TIE: f32 = 1e-6;
+
+/// `a <= b`, false when either is NaN (so a NaN ends a walk).
+#[inline(always)]
+fn at_most(a: f32, b: f32) -> bool {
+    matches!(
+        a.partial_cmp(&b),
+        Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+    )
+}
+
+/// A ray in grid units (cell (c, r) covers `[c, c+1) × [r, r+1)`).
+pub(crate) struct GridRay {
+    pub origin: Vec2,
+    pub delta: Vec2,
+    pub width: u32,
+    pub height: u32,
+}
+
+/// Calls `visit(cell_index, t_exit)` for every cell the ray touches up to `t_limit`, roughly
+/// in order of entry; stops when `visit` returns `true`. `t_exit` is the ray fraction at
+/// which the walk leaves the cell, or `-∞` for an extra cell (a corner's side cell, a cell
+/// touching only the start) after which the caller must not stop.
+#[inline(always)]
+pub(crate) fn walk(ray: &GridRay, t_limit: f32, mut visit: impl FnMut(usize, f32) -> bool) {
+    if !(ray.origin.is_finite() && ray.delta.is_finite()) {
+        return;
+    }
+    let size = Vec2::new(ray.width as f32, ray.height as f32);
+    // Clip [0, t_limit] to the map rectangle (slab test).
+    let (mut t_lo, mut t_hi) = (0.0f32, t_limit);
+    for axis in 0..2 {
+        let (o, d, n) = (ray.origin[axis], ray.delta[axis], size[axis]);
+        if d == 0.0 {
+            if !(o >= 0.0 && o <= n) {
+                return;
+            }
+        } else {
+            let inv = 1.0 / d;
+            let (t0, t1) = ((0.0 - o) * inv, (n - o) * inv);
+            t_lo = t_lo.max(t0.min(t1));
+            t_hi = t_hi.min(t0.max(t1));
+        }
+    }
+    if !at_most(t_lo, t_hi) {
+        return;
+    }
+    let start = ray.origin + ray.delta * t_lo;
+    let col = (start.x.floor().max(0.0) as u32).min(ray.width - 1);
+    let row = (start.y.floor().max(0.0) as u32).min(ray.height - 1);
+    let on_x_line = start.x == col as f32 && col > 0;
+    let on_y_line = start.y == row as f32 && row > 0;
+
+    // Cells touching only the start point.
+    if on_x_line || on_y_line {
+        let w = ray.width as usize;
+        let (c, r) = (col as usize, row as usize);
+        if on_x_line && visit(r * w + c - 1, f32::NEG_INFINITY) {
+            return;
+        }
+        if on_y_line && visit((r - 1) * w + c, f32::NEG_INFINITY) {
+            return;
+        }
+        if on_x_line && on_y_line && visit((r - 1) * w + c - 1, f32::NEG_INFINITY) {
+            return;
+        }
+    }
+    if walk_strip(ray, t_hi, col, row, &mut visit) {
+        return;
+    }
+    // Running exactly along a grid line: the strip on the other side touches the ray too.
+    if ray.delta.y == 0.0 && on_y_line && walk_strip(ray, t_hi, col, row - 1, &mut visit) {
+        return;
+    }
+    if ray.delta.x == 0.0 && on_x_line {
+        walk_strip(ray, t_hi, col - 1, row, &mut visit);
+    }
+}
+
+/// The Amanatides & Woo loop from cell (`col`, `row`). Returns `true` if `visit` stopped it.
+#[inline(always)]
+fn walk_strip(
+    ray: &GridRay,
+    t_hi: f32,
+    mut col: u32,
+    mut row: u32,
+    visit: &mut impl FnMut(usize, f32) -> bool,
+) -> bool {
+    let w = ray.width;
+    let (o, d) = (ray.origin, ray.delta);
+    let step_x: i32 = if d.x > 0.0 {
+        1
+    } else if d.x < 0.0 {
+        -1
+    } else {
+        0
+    };
+    let step_y: i32 = if d.y > 0.0 {
+        1
+    } else if d.y < 0.0 {
+        -1
+    } else {
+        0
+    };
+    let inv = Vec2::new(1.0 / d.x, 1.0 / d.y);
+    // The ray fraction where it crosses the next vertical (x) or horizontal (y) grid line,
+    // computed from the origin each time rather than accumulated, so no error builds up.
+    let next_x = |col: u32| -> f32 {
+        match step_x {
+            1 => (col as f32 + 1.0 - o.x) * inv.x,
+            -1 => (col as f32 - o.x) * inv.x,
+            _ => f32::INFINITY,
+        }
+    };
+    let next_y = |row: u32| -> f32 {
+        match step_y {
+            1 => (row as f32 + 1.0 - o.y) * inv.y,
+            -1 => (row as f32 - o.y) * inv.y,
+            _ => f32::INFINITY,
+        }
+    };
+    let (mut tx, mut ty) = (next_x(col), next_y(row));
+    // Each step moves one column or row (a corner step both) in a fixed direction, so no
+    // walk is longer than this; the bound also ends it if rounding ever produced a NaN.
+    let max_steps = ray.width as u64 + ray.height as u64 + 2;
+    for _ in 0..max_steps {
+        let t_next = tx.min(ty);
+        if visit((row * w + col) as usize, t_next) {
+            return true;
+        }
+        if !at_most(t_next, t_hi) {
+            return false;
+        }
+        let corner = step_x != 0 && step_y != 0 && (tx - ty).abs() <= CORNER_TIE * t_next.abs();
+        if corner {
+            // Through a corner: visit both side cells, then go on diagonally.
+            let nc = col as i64 + step_x as i64;
+            let nr = row as i64 + step_y as i64;
+            let in_x = nc >= 0 && nc < w as i64;
+            let in_y = nr >= 0 && nr < ray.height as i64;
+            if in_x && visit((row * w) as usize + nc as usize, f32::NEG_INFINITY) {
+                return true;
+            }
+            if in_y && visit(nr as usize * w as usize + col as usize, f32::NEG_INFINITY) {
+                return true;
+            }
+            if !(in_x && in_y) {
+                return false;
+            }
+            col = nc as u32;
+            row = nr as u32;
+            tx = next_x(col);
+            ty = next_y(row);
+        } else if tx < ty {
+            let nc = col as i64 + step_x as i64;
+            if nc < 0 || nc >= w as i64 {
+                return false;
+            }
+            col = nc as u32;
+            tx = next_x(col);
+        } else {
+            let nr = row as i64 + step_y as i64;
+            if nr < 0 || nr >= ray.height as i64 {
+                return false;
+            }
+            row = nr as u32;
+            ty = next_y(row);
+        }
+    }
+    false
+}

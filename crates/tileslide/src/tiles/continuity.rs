@@ -1,0 +1,73 @@
+//! End-point continuity: for each end of an active segment, the active segment that
+//! continues the surface from there, if any.
+//!
+//! A resolver sliding a circle along a floor asks this at every seam: if the floor continues
+//! into a collinear (or concave) neighbour, the end point is not a corner and must not push
+//! the circle back. This is the information Box2D's chain shapes carry as "ghost vertices".
+
+use glam::Vec2;
+
+use super::Cell;
+use super::store::{SegmentRef, SegmentStore};
+
+/// Two ends closer than this (in cells) are the same point.
+const JOIN_TOLERANCE: f32 = 1e-4;
+
+/// Recomputes the links of every active segment in cell `(col, row)` from the active
+/// segments of that cell and its eight neighbours.
+pub(crate) fn link_cell(
+    store: &mut SegmentStore,
+    width: u32,
+    height: u32,
+    cell_size: Vec2,
+    col: u32,
+    row: u32,
+) {
+    let index = (row * width + col) as usize;
+    let count = store.cell(index).len();
+    if count == 0 {
+        return;
+    }
+    let tol = cell_size.max_element() * JOIN_TOLERANCE;
+    let tol2 = tol * tol;
+    for i in 0..count {
+        let seg = store.cell(index)[i];
+        let mut ends = [None; 2];
+        for (k, end) in [seg.a, seg.b()].into_iter().enumerate() {
+            let mut best: Option<(f32, SegmentRef)> = None;
+            for dr in -1i64..=1 {
+                for dc in -1i64..=1 {
+                    let (c, r) = (col as i64 + dc, row as i64 + dr);
+                    if c < 0 || r < 0 || c >= width as i64 || r >= height as i64 {
+                        continue;
+                    }
+                    let other_index = (r as u32 * width + c as u32) as usize;
+                    for (j, other) in store.cell(other_index).iter().enumerate() {
+                        if other_index == index && j == i {
+                            continue;
+                        }
+                        let touches = other.a.distance_squared(end) <= tol2
+                            || other.b().distance_squared(end) <= tol2;
+                        let score = seg.normal.dot(other.normal);
+                        // Back-to-back faces (a thin sheet folding back) are not a continuation.
+                        if !touches || score < -0.999 {
+                            continue;
+                        }
+                        if best.is_none_or(|(s, _)| score > s) {
+                            let cell = Cell::new(c as u32, r as u32);
+                            best = Some((
+                                score,
+                                SegmentRef {
+                                    cell,
+                                    index: j as u32,
+                                },
+                            ));
+                        }
+                    }
+                }
+            }
+            ends[k] = best.map(|(_, r)| r);
+        }
+        store.links_mut(index)[i] = ends;
+    }
+}

@@ -1,0 +1,467 @@
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+use glam::Vec2;
+use thiserror::Error;
+
+use super::continuity::link_cell;
+use super::culling::{Side, active_segments};
+use super::store::{HotSegment, SegmentRef, SegmentStore};
+use super::{Cell, SegmentFlags, TemporaryError, TemporarySegment, TileId, TileSet, TileShape};
+use crate::geometry::{Aabb, Segment};
+
+/// The most cells a map may have (2²⁶, e.g. 8192 × 8192).
+pub const MAX_CELLS: u64 = 1 << 26;
+
+/// Why a map could not be built or edited.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum MapError {
+    /// Width and height must both be at least 1.
+    #[error("map size {width}×{height} is empty")]
+    EmptySize {
+        /// Width given.
+        width: u32,
+        /// Height given.
+        height: u32,
+    },
+    /// More cells than [`MAX_CELLS`], or more segments than the map can index.
+    #[error("map size {width}×{height} is too large (at most {MAX_CELLS} cells)")]
+    TooLarge {
+        /// Width given.
+        width: u32,
+        /// Height given.
+        height: u32,
+    },
+    /// The origin has a NaN or infinite coordinate.
+    #[error("map origin ({x}, {y}) is not finite")]
+    NonFiniteOrigin {
+        /// x given.
+        x: f32,
+        /// y given.
+        y: f32,
+    },
+    /// A cell outside the map.
+    #[error("cell {cell} is outside the {width}×{height} map")]
+    CellOutOfBounds {
+        /// The cell asked for.
+        cell: Cell,
+        /// Map width.
+        width: u32,
+        /// Map height.
+        height: u32,
+    },
+    /// A tile id the tile set does not have.
+    #[error("tile {id} is not in the tile set")]
+    UnknownTile {
+        /// The id asked for.
+        id: TileId,
+    },
+    /// The list of tiles does not have one entry per cell.
+    #[error("expected {expected} tiles (one per cell), got {got}")]
+    WrongTileCount {
+        /// width × height.
+        expected: usize,
+        /// Length of the list given.
+        got: usize,
+    },
+    /// A temporary segment was refused.
+    #[error(transparent)]
+    Temporary(#[from] TemporaryError),
+}
+
+/// An active segment of a map: what queries test, after seam culling, in world coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ActiveSegment {
+    /// The segment in world coordinates. A piece of a partly hidden tile segment is shorter
+    /// than the tile segment it comes from.
+    pub segment: Segment,
+    /// Outward unit normal.
+    pub normal: Vec2,
+    /// What the segment is.
+    pub flags: SegmentFlags,
+    /// The tile it comes from.
+    pub tile: TileId,
+    /// Index of the segment in the tile's shape.
+    pub source: u32,
+    /// For each end (`segment.a`, `segment.b`), the active segment the surface continues into
+    /// there, if any: the one sharing that end point whose normal is closest to this one's.
+    pub continues: [Option<SegmentRef>; 2],
+}
+
+/// A grid of tiles with the active segments of every cell.
+///
+/// Cell `(col, row)` covers `origin + [col·w, (col+1)·w) × [row·h, (row+1)·h)` where `w × h`
+/// is the tile set's tile size. The map does not know which way is up: loaders decide
+/// whether row 0 is the top (ASCII, Tiled) or the bottom (Replica Island).
+///
+/// ```
+/// # use std::sync::Arc;
+/// # use tileslide::{Cell, TileId, TileMap, TileSet, TileShape, Vec2};
+/// let mut set = TileSet::new(Vec2::ONE)?;
+/// set.insert(TileId(1), TileShape::polygon(&[Vec2::ZERO, Vec2::X, Vec2::ONE, Vec2::Y])?)?;
+/// let mut map = TileMap::new(Arc::new(set), 4, 3, Vec2::ZERO)?;
+/// map.set_tile(Cell::new(1, 2), Some(TileId(1)))?;
+/// map.set_tile(Cell::new(2, 2), Some(TileId(1)))?;
+/// // Two squares side by side: the shared seam is hidden, 6 of 8 edges stay active.
+/// assert_eq!(map.placed_segment_count(), 8);
+/// assert_eq!(map.active_segment_count(), 6);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct TileMap {
+    tile_set: Arc<TileSet>,
+    width: u32,
+    height: u32,
+    origin: Vec2,
+    cell_size: Vec2,
+    inv_cell_size: Vec2,
+    /// Tile id per cell, row-major; `EMPTY` for none.
+    tiles: Vec<u32>,
+    placed: usize,
+    pub(crate) store: SegmentStore,
+    pub(crate) temporaries: Vec<TemporarySegment>,
+    scratch: Vec<HotSegment>,
+}
+
+const EMPTY: u32 = u32::MAX;
+
+impl TileMap {
+    /// An empty map of `width × height` cells of the tile set's tile size, cell (0, 0)'s
+    /// corner at `origin`.
+    pub fn new(
+        tile_set: Arc<TileSet>,
+        width: u32,
+        height: u32,
+        origin: Vec2,
+    ) -> Result<Self, MapError> {
+        if width == 0 || height == 0 {
+            return Err(MapError::EmptySize { width, height });
+        }
+        let cells = width as u64 * height as u64;
+        // Each cell's block holds at most five times the largest shape (its own segments
+        // split by neighbours' covers), rounded up to a power of two, twice over for blocks
+        // freed by edits: all of it must be indexable by u32.
+        let largest = tile_set
+            .iter()
+            .map(|(_, s)| s.segments().len())
+            .max()
+            .unwrap_or(0)
+            .max(1) as u64;
+        if cells > MAX_CELLS || cells * (5 * largest).next_power_of_two() * 2 > u32::MAX as u64 {
+            return Err(MapError::TooLarge { width, height });
+        }
+        if !origin.is_finite() {
+            return Err(MapError::NonFiniteOrigin {
+                x: origin.x,
+                y: origin.y,
+            });
+        }
+        let cell_size = tile_set.tile_size();
+        Ok(Self {
+            tile_set,
+            width,
+            height,
+            origin,
+            cell_size,
+            inv_cell_size: cell_size.recip(),
+            tiles: vec![EMPTY; cells as usize],
+            placed: 0,
+            store: SegmentStore::new(cells as usize),
+            temporaries: Vec::new(),
+            scratch: Vec::new(),
+        })
+    }
+
+    /// A map filled from `tiles`, one entry per cell in row-major order (`row · width + col`).
+    pub fn from_tiles(
+        tile_set: Arc<TileSet>,
+        width: u32,
+        height: u32,
+        origin: Vec2,
+        tiles: &[Option<TileId>],
+    ) -> Result<Self, MapError> {
+        let mut map = Self::new(tile_set, width, height, origin)?;
+        if tiles.len() != map.tiles.len() {
+            return Err(MapError::WrongTileCount {
+                expected: map.tiles.len(),
+                got: tiles.len(),
+            });
+        }
+        for (slot, id) in map.tiles.iter_mut().zip(tiles) {
+            if let Some(id) = id {
+                if map.tile_set.shape(*id).is_none() {
+                    return Err(MapError::UnknownTile { id: *id });
+                }
+                *slot = id.0;
+            }
+        }
+        map.rebuild();
+        Ok(map)
+    }
+
+    /// Recomputes every cell's active segments and links from the tiles.
+    fn rebuild(&mut self) {
+        for row in 0..self.height {
+            for col in 0..self.width {
+                self.update_cell(col, row);
+            }
+        }
+        for row in 0..self.height {
+            for col in 0..self.width {
+                link_cell(
+                    &mut self.store,
+                    self.width,
+                    self.height,
+                    self.cell_size,
+                    col,
+                    row,
+                );
+            }
+        }
+        self.placed = self
+            .tiles
+            .iter()
+            .map(|&t| self.shape_of_raw(t).map_or(0, |s| s.segments().len()))
+            .sum();
+    }
+
+    /// Puts tile `id` (or nothing) in `cell`, updating seam culling for the cell and its four
+    /// neighbours and end-point links around them: O(1), whatever the map's size.
+    pub fn set_tile(&mut self, cell: Cell, id: Option<TileId>) -> Result<(), MapError> {
+        let index = self.index_of(cell)?;
+        let raw = match id {
+            Some(id) if self.tile_set.shape(id).is_none() => {
+                return Err(MapError::UnknownTile { id });
+            }
+            Some(id) => id.0,
+            None => EMPTY,
+        };
+        let old = self.tiles[index];
+        if old == raw {
+            return Ok(());
+        }
+        let count = |map: &Self, t: u32| map.shape_of_raw(t).map_or(0, |s| s.segments().len());
+        self.placed = self.placed - count(self, old) + count(self, raw);
+        self.tiles[index] = raw;
+        let (col, row) = (cell.col as i64, cell.row as i64);
+        for (dc, dr) in [(0, 0), (-1, 0), (1, 0), (0, -1), (0, 1)] {
+            if let Some((c, r)) = self.in_bounds(col + dc, row + dr) {
+                self.update_cell(c, r);
+            }
+        }
+        // Links read the active segments of the 3×3 block around a cell, and active segments
+        // changed in the plus-shaped block above: relink everything within two cells.
+        for dr in -2..=2 {
+            for dc in -2..=2 {
+                if let Some((c, r)) = self.in_bounds(col + dc, row + dr) {
+                    link_cell(
+                        &mut self.store,
+                        self.width,
+                        self.height,
+                        self.cell_size,
+                        c,
+                        r,
+                    );
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Removes the tile from `cell` (digging).
+    pub fn clear_tile(&mut self, cell: Cell) -> Result<(), MapError> {
+        self.set_tile(cell, None)
+    }
+
+    fn update_cell(&mut self, col: u32, row: u32) {
+        let index = (row * self.width + col) as usize;
+        let mut out = std::mem::take(&mut self.scratch);
+        out.clear();
+        if let Some(shape) = self.shape_of_raw(self.tiles[index]) {
+            let base = self.cell_corner(Cell::new(col, row));
+            let neighbour = |side: Side| -> Option<&TileShape> {
+                let (dc, dr) = side.neighbour_offset();
+                let (c, r) = self.in_bounds(col as i64 + dc, row as i64 + dr)?;
+                self.shape_of_raw(self.tiles[(r * self.width + c) as usize])
+            };
+            active_segments(shape, self.cell_size, base, neighbour, &mut out);
+        }
+        self.store.set_cell(index, &out);
+        self.scratch = out;
+    }
+
+    fn shape_of_raw(&self, raw: u32) -> Option<&TileShape> {
+        if raw == EMPTY {
+            None
+        } else {
+            self.tile_set.shape(TileId(raw))
+        }
+    }
+
+    fn in_bounds(&self, col: i64, row: i64) -> Option<(u32, u32)> {
+        (col >= 0 && row >= 0 && col < self.width as i64 && row < self.height as i64)
+            .then_some((col as u32, row as u32))
+    }
+
+    fn index_of(&self, cell: Cell) -> Result<usize, MapError> {
+        if cell.col < self.width && cell.row < self.height {
+            Ok((cell.row * self.width + cell.col) as usize)
+        } else {
+            Err(MapError::CellOutOfBounds {
+                cell,
+                width: self.width,
+                height: self.height,
+            })
+        }
+    }
+
+    /// The tile in `cell`, or `None` for an empty cell or a cell outside the map.
+    #[must_use]
+    pub fn tile(&self, cell: Cell) -> Option<TileId> {
+        let index = self.index_of(cell).ok()?;
+        let raw = self.tiles[index];
+        (raw != EMPTY).then_some(TileId(raw))
+    }
+
+    /// The tile set the map draws its shapes from.
+    #[must_use]
+    pub fn tile_set(&self) -> &Arc<TileSet> {
+        &self.tile_set
+    }
+
+    /// Number of columns.
+    #[must_use]
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Number of rows.
+    #[must_use]
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// Width and height of a cell (the tile set's tile size).
+    #[must_use]
+    pub fn cell_size(&self) -> Vec2 {
+        self.cell_size
+    }
+
+    /// World position of cell (0, 0)'s corner.
+    #[must_use]
+    pub fn origin(&self) -> Vec2 {
+        self.origin
+    }
+
+    pub(crate) fn inv_cell_size(&self) -> Vec2 {
+        self.inv_cell_size
+    }
+
+    /// The world rectangle the whole map covers.
+    #[must_use]
+    pub fn bounds(&self) -> Aabb {
+        let size = Vec2::new(self.width as f32, self.height as f32) * self.cell_size;
+        Aabb::from_corners(self.origin, self.origin + size)
+    }
+
+    /// World position of a cell's corner with the smallest coordinates.
+    #[must_use]
+    pub fn cell_corner(&self, cell: Cell) -> Vec2 {
+        self.origin + Vec2::new(cell.col as f32, cell.row as f32) * self.cell_size
+    }
+
+    /// The closed world rectangle of a cell.
+    #[must_use]
+    pub fn cell_rect(&self, cell: Cell) -> Aabb {
+        let corner = self.cell_corner(cell);
+        Aabb::from_corners(corner, corner + self.cell_size)
+    }
+
+    /// The cell that contains world point `p` (cells are half-open), or `None` outside the
+    /// map or for a non-finite point.
+    #[must_use]
+    pub fn cell_at(&self, p: Vec2) -> Option<Cell> {
+        let g = ((p - self.origin) * self.inv_cell_size).floor();
+        if !g.is_finite()
+            || g.x < 0.0
+            || g.y < 0.0
+            || g.x >= self.width as f32
+            || g.y >= self.height as f32
+        {
+            return None;
+        }
+        Some(Cell::new(g.x as u32, g.y as u32))
+    }
+
+    /// Sum of the tile segments of every placed tile, before seam culling.
+    #[must_use]
+    pub fn placed_segment_count(&self) -> usize {
+        self.placed
+    }
+
+    /// Number of active segments after seam culling (pieces of partly hidden segments count
+    /// one each).
+    #[must_use]
+    pub fn active_segment_count(&self) -> usize {
+        self.store.active_count()
+    }
+
+    /// How many cells hold each tile id, by increasing id.
+    #[must_use]
+    pub fn tile_counts(&self) -> BTreeMap<TileId, usize> {
+        let mut counts = BTreeMap::new();
+        for &raw in &self.tiles {
+            if raw != EMPTY {
+                *counts.entry(TileId(raw)).or_insert(0) += 1;
+            }
+        }
+        counts
+    }
+
+    /// The active segments of `cell` (none outside the map).
+    pub fn active_segments(&self, cell: Cell) -> impl ExactSizeIterator<Item = ActiveSegment> + '_ {
+        let index = self.index_of(cell).ok();
+        let (hot, links): (&[HotSegment], &[[Option<SegmentRef>; 2]]) = match index {
+            Some(i) => (self.store.cell(i), self.store.links(i)),
+            None => (&[], &[]),
+        };
+        let tile = index.map_or(TileId(EMPTY), |i| TileId(self.tiles[i]));
+        hot.iter().zip(links).map(move |(h, l)| ActiveSegment {
+            segment: Segment::new(h.a, h.b()),
+            normal: h.normal,
+            flags: h.flags,
+            tile,
+            source: h.source,
+            continues: *l,
+        })
+    }
+
+    /// The active segment `r` names, if it still exists.
+    #[must_use]
+    pub fn active_segment(&self, r: SegmentRef) -> Option<ActiveSegment> {
+        self.active_segments(r.cell).nth(r.index as usize)
+    }
+
+    /// Adds a temporary segment (a moving platform, a door) that every query sees until
+    /// [`clear_temporaries`](Self::clear_temporaries). Refused if non-finite or degenerate.
+    pub fn add_temporary(&mut self, segment: TemporarySegment) -> Result<(), MapError> {
+        self.temporaries.push(segment.validated()?);
+        Ok(())
+    }
+
+    /// Removes every temporary segment (call once per frame before submitting new ones).
+    pub fn clear_temporaries(&mut self) {
+        self.temporaries.clear();
+    }
+
+    /// Removes the temporary segments of one owner.
+    pub fn clear_temporaries_of(&mut self, owner: super::Owner) {
+        self.temporaries.retain(|t| t.owner != owner);
+    }
+
+    /// The temporary segments, in the order they were added.
+    #[must_use]
+    pub fn temporaries(&self) -> &[TemporarySegment] {
+        &self.temporaries
+    }
+}

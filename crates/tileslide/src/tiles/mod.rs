@@ -1,0 +1,24 @@
+//! Tile sets, tile maps, seam culling and end-point continuity.
+//!
+//! A [`TileSet`] maps a [`TileId`] to a [`TileShape`]: segments with outward normals and
+//! [`SegmentFlags`] in tile-local coordinates. A [`TileMap`] places tiles on a grid and keeps,
+//! per cell, the *active* segments left after seam culling, each knowing which segment its
+//! ends continue into.
+
+mod cell;
+mod continuity;
+mod culling;
+mod flags;
+mod map;
+mod shape;
+pub(crate) mod store;
+mod temporary;
+mod tile_set;
+
+pub use cell::{Cell, TileId};
+pub use flags::SegmentFlags;
+pub use map::{ActiveSegment, MAX_CELLS, MapError, TileMap};
+pub use shape::{ShapeError, TileSegment, TileShape};
+pub use store::SegmentRef;
+pub use temporary::{Owner, TemporaryError, TemporarySegment};
+pub use tile_set::{TileSet, TileSetError};

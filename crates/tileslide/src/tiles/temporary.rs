@@ -1,0 +1,59 @@
+use glam::Vec2;
+use thiserror::Error;
+
+use super::SegmentFlags;
+use crate::geometry::Segment;
+
+/// Who submitted a temporary segment: any number the game uses for its objects.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Owner(pub u64);
+
+/// A segment that is part of the world only until it is cleared: a moving platform's top, a
+/// door. Queries treat it like a tile segment, except that it knows who owns it (so the
+/// owner's own casts can skip it) and how fast it moves (so a rider can be carried).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TemporarySegment {
+    /// The segment, in world coordinates.
+    pub segment: Segment,
+    /// Outward unit normal (normalised when added).
+    pub normal: Vec2,
+    /// What the segment is.
+    pub flags: SegmentFlags,
+    /// Who submitted it.
+    pub owner: Owner,
+    /// How far it moves per second (or per step: the game's unit), for riders.
+    pub velocity: Vec2,
+}
+
+/// Why a temporary segment was refused.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Error)]
+pub enum TemporaryError {
+    /// A coordinate, normal or velocity component is NaN or infinite.
+    #[error("temporary segment of owner {0} has a non-finite coordinate, normal or velocity")]
+    NonFinite(u64),
+    /// Start and end point are the same.
+    #[error("temporary segment of owner {0} has zero length")]
+    ZeroLength(u64),
+    /// The normal is the zero vector.
+    #[error("temporary segment of owner {0} has a zero normal")]
+    ZeroNormal(u64),
+}
+
+impl TemporarySegment {
+    /// Checks the segment and normalises its normal.
+    pub(crate) fn validated(mut self) -> Result<Self, TemporaryError> {
+        let id = self.owner.0;
+        if !(self.segment.is_finite() && self.normal.is_finite() && self.velocity.is_finite()) {
+            return Err(TemporaryError::NonFinite(id));
+        }
+        if self.segment.a == self.segment.b {
+            return Err(TemporaryError::ZeroLength(id));
+        }
+        let len = self.normal.length();
+        if len <= f32::MIN_POSITIVE {
+            return Err(TemporaryError::ZeroNormal(id));
+        }
+        self.normal /= len;
+        Ok(self)
+    }
+}
