@@ -1,3 +1,4 @@
 //! Whole-scene benchmarks of tileslide against its peers, measured in the same run.
 
 pub mod peers;
+pub mod rays;

@@ -1,3 +1,90 @@
-//! The `tileslide` command-line tool.
+//! The `tileslide` command-line tool: inspect maps, cast rays, run the standard benchmarks.
 
-fn main() {}
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+mod bench;
+mod info;
+mod map_file;
+mod raycast;
+
+/// Collision detection for tile-based 2D games: inspect maps, cast rays, benchmark.
+#[derive(Parser, Debug)]
+#[command(name = "tileslide", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Size, cell size, tiles used and segments before and after seam culling.
+    Info {
+        #[command(flatten)]
+        map: map_file::MapArgs,
+        /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Cast rays against a map: the nearest surface each ray hits.
+    Raycast {
+        #[command(flatten)]
+        map: map_file::MapArgs,
+        /// Start point `X,Y` in map coordinates.
+        #[arg(
+            long,
+            value_name = "X,Y",
+            requires = "to",
+            conflicts_with = "rays",
+            allow_hyphen_values = true
+        )]
+        from: Option<String>,
+        /// End point `X,Y` in map coordinates.
+        #[arg(
+            long,
+            value_name = "X,Y",
+            requires = "from",
+            allow_hyphen_values = true
+        )]
+        to: Option<String>,
+        /// A CSV file with one ray per line, `x0,y0,x1,y1` (`#` starts a comment line).
+        #[arg(long, value_name = "FILE", required_unless_present = "from")]
+        rays: Option<PathBuf>,
+        /// Hit back faces too (by default a ray hits only faces it meets head-on).
+        #[arg(long)]
+        both_sides: bool,
+        /// Print one JSON object per ray, one per line, in input order.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Run a standard benchmark scene of BENCHMARKS.md against the peers in the same run.
+    Bench {
+        #[command(subcommand)]
+        which: bench::BenchCommand,
+    },
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Info { map, json } => info::run(&map, json),
+        Command::Raycast {
+            map,
+            from,
+            to,
+            rays,
+            both_sides,
+            json,
+        } => raycast::run(&map, from.zip(to), rays, both_sides, json),
+        Command::Bench { which } => bench::run(which),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}

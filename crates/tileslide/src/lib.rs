@@ -48,7 +48,7 @@ pub use geometry::{Aabb, Circle, Ray, RaySegmentHit, Segment, cast_ray_segment};
 pub use glam::Vec2;
 pub use query::{Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{
-    ActiveSegment, Cell, MAX_CELLS, MapError, Owner, SegmentFlags, SegmentRef, ShapeError,
-    TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet, TileSetError,
-    TileShape,
+    ActiveSegment, Cell, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError, Owner, SegmentFlags, SegmentRef,
+    ShapeError, TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet,
+    TileSetError, TileShape,
 };

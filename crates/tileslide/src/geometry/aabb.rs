@@ -12,16 +12,27 @@ pub struct Aabb {
 }
 
 impl Aabb {
-    /// A box from two corners, in any order.
+    /// A box from two corners, in any order. A corner with a NaN coordinate gives a box that
+    /// is not [valid](Self::is_valid), which every query treats as overlapping nothing.
     ///
     /// ```
     /// # use tileslide::{Aabb, Vec2};
     /// let b = Aabb::from_corners(Vec2::new(2.0, 0.0), Vec2::new(0.0, 1.0));
     /// assert_eq!(b.min, Vec2::new(0.0, 0.0));
     /// assert_eq!(b.max, Vec2::new(2.0, 1.0));
+    /// assert!(!Aabb::from_corners(Vec2::new(f32::NAN, 0.0), Vec2::ONE).is_valid());
     /// ```
     #[must_use]
     pub fn from_corners(a: Vec2, b: Vec2) -> Self {
+        // glam's `min`/`max`, like `f32::min`, return the other operand when one is NaN: a
+        // NaN corner would silently become a valid box at the other corner. Keep the NaN so
+        // that `is_valid` is false and the queries see nothing.
+        if a.is_nan() || b.is_nan() {
+            return Self {
+                min: Vec2::NAN,
+                max: Vec2::NAN,
+            };
+        }
         Self {
             min: a.min(b),
             max: a.max(b),

@@ -86,23 +86,28 @@ pub fn cast_ray_segment(ray: &Ray, segment: &Segment) -> Option<RaySegmentHit> {
 /// precomputed `e = b − a`), so that all ray queries agree bit for bit.
 #[inline(always)]
 pub(crate) fn solve(origin: Vec2, delta: Vec2, a: Vec2, e: Vec2) -> Option<(f32, f32)> {
-    let den = delta.perp_dot(e);
-    let w = a - origin;
-    let tn = w.perp_dot(e);
-    let sn = w.perp_dot(delta);
-    let inside = if den > 0.0 {
-        tn >= 0.0 && tn <= den && sn >= 0.0 && sn <= den
-    } else if den < 0.0 {
-        tn <= 0.0 && tn >= den && sn <= 0.0 && sn >= den
-    } else {
-        // Parallel, collinear or degenerate (also NaN): defined as no hit.
-        false
-    };
+    let (inside, tn, sn, den) = solve_parts(origin, delta, a, e);
     if inside {
         Some((tn / den, sn / den))
     } else {
         None
     }
+}
+
+/// Cramer's rule without branches: returns whether the ray hits and the numerators of `t`
+/// and `s` over a positive denominator (`t = tn / den`). Branch-free because which way the
+/// test goes is a coin toss for the branch predictor on random rays, and a misprediction
+/// costs more than the few extra instructions.
+#[inline(always)]
+pub(crate) fn solve_parts(origin: Vec2, delta: Vec2, a: Vec2, e: Vec2) -> (bool, f32, f32, f32) {
+    let den = delta.perp_dot(e);
+    let w = a - origin;
+    // Make the denominator positive; negating is exact, so t and s are unchanged.
+    let sign = 1.0f32.copysign(den);
+    let (den, tn, sn) = (den * sign, w.perp_dot(e) * sign, w.perp_dot(delta) * sign);
+    // Parallel, collinear or degenerate (den = 0), or NaN: every comparison is false.
+    let inside = (den > 0.0) & (tn >= 0.0) & (tn <= den) & (sn >= 0.0) & (sn <= den);
+    (inside, tn, sn, den)
 }
 
 #[cfg(test)]

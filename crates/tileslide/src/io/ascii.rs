@@ -156,7 +156,17 @@ pub fn parse(text: &str, path: impl AsRef<Path>, cell: f32) -> Result<TileMap, L
     for (r, row) in rows.iter().enumerate() {
         tiles[r * width..r * width + row.len()].copy_from_slice(row);
     }
-    let set = tile_set(cell).map_err(|e| err(Location::File, e.into()))?;
+    // The built-in shapes can only fail to build when `cell` is so large or small that their
+    // areas overflow or underflow f32 (e.g. 1e20 or 1e-30): the cause is the cell size the
+    // caller gave, not a tile they never defined, so say so.
+    let set = tile_set(cell).map_err(|e| {
+        err(
+            Location::File,
+            LoadErrorKind::Parameter(format!(
+                "cell size {cell} is outside the range the built-in tiles support ({e})"
+            )),
+        )
+    })?;
     TileMap::from_tiles(
         Arc::new(set),
         width as u32,

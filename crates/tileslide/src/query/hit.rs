@@ -9,10 +9,9 @@ pub enum SegmentSource {
     Tile {
         /// The active segment (its cell and index in the cell).
         segment: SegmentRef,
-        /// The tile in that cell.
+        /// The tile in that cell. (The segment's index in the tile's shape is
+        /// [`TileMap::active_segment`](crate::TileMap::active_segment)`(segment).source`.)
         tile: TileId,
-        /// Index of the segment in the tile's shape.
-        source: u32,
     },
     /// A temporary segment.
     Temporary {

@@ -78,7 +78,6 @@ impl TileMap {
                                 index: index as u32,
                             },
                             tile,
-                            source: s.source,
                         },
                     });
                 }

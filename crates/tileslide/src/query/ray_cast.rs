@@ -1,11 +1,13 @@
 use glam::Vec2;
 
+use super::fast_walk::{FastWalk, WalkData, fast_walk};
+use super::segment_test::{SegmentTest, cell_segments};
 use super::traversal::{GridRay, walk};
 use super::{RayFilter, RayHit, SegmentSource};
 use crate::geometry::Ray;
 use crate::geometry::ray::solve;
-use crate::tiles::store::{HotSegment, SegmentRef};
-use crate::tiles::{Cell, TileId, TileMap};
+use crate::tiles::store::{SegmentRef, face_index, face_normal, face_segment};
+use crate::tiles::{Cell, SegmentFlags, TileId, TileMap};
 
 impl TileMap {
     /// The nearest segment the ray hits, or `None`.
@@ -14,16 +16,18 @@ impl TileMap {
     /// `Ray { origin, delta: dir * length }` for a direction and a length (which keeps the
     /// bits that rounding `origin + dir * length` to an end point would lose).
     ///
-    /// The grid is walked cell by cell from `p0` (see `query::traversal`), testing each
-    /// visited cell's active segments and the temporary segments, and stops once the nearest
-    /// hit so far lies before the current cell's exit: the result is the **global** nearest
-    /// hit, not the first cell's. Defined cases:
+    /// The grid is walked cell by cell from the origin (Amanatides & Woo, visiting every
+    /// cell the ray touches, corners included), testing each visited cell's active segments
+    /// and the temporary segments, and stops once the nearest hit so far lies before the
+    /// current cell's exit: the result is the **global** nearest hit, not the first cell's.
+    /// Defined cases:
     /// - a ray that starts and ends in one cell tests that cell;
     /// - a ray ending exactly on a surface hits it at `t = 1`;
     /// - a ray running along a surface does not hit it (see [`cast_ray_segment`]), but does
     ///   hit a wall it runs into;
-    /// - a ray starting exactly on a front face is not stopped by it (its motion leaves the
-    ///   face); with [`Faces::Both`] it is, at `t = 0`;
+    /// - a ray starting exactly on a surface and moving into it hits at `t = 0`; one moving
+    ///   away from it is not stopped by it (for that motion it is a back face), unless the
+    ///   filter is [`Faces::Both`];
     /// - a zero-length ray, or one with a NaN or infinite coordinate, hits nothing;
     /// - on equal `t`, the first found wins: temporary segments, then cells in walk order.
     ///
@@ -48,50 +52,60 @@ impl TileMap {
         if !(p0.is_finite() && delta.is_finite()) {
             return None;
         }
-        let face_dir = filter.face_direction(delta);
-        let mask = filter.mask;
         let mut best_t = f32::INFINITY;
         let mut best: Option<Found> = None;
+        // Temporary segments first (none: no cost); their nearest hit shortens the walk.
         if !self.temporaries.is_empty() {
-            for (index, tmp) in self.temporaries.iter().enumerate() {
-                if filter.exclude_owner == Some(tmp.owner)
-                    || !tmp.flags.intersects(mask)
-                    || face_dir.is_some_and(|f| tmp.normal.dot(f) >= 0.0)
-                {
-                    continue;
-                }
-                let e = tmp.segment.b - tmp.segment.a;
-                if let Some((t, _)) = solve(p0, delta, tmp.segment.a, e)
-                    && t < best_t
-                {
+            for (index, t) in self.temporary_hits(p0, delta, filter) {
+                if t < best_t {
                     best_t = t;
                     best = Some(Found::Temporary(index));
                 }
             }
         }
-        let slots = self.store.slots();
-        let hot = self.store.hot();
-        let ray = self.grid_ray(p0, delta);
+        let grid = self.grid_ray(p0, delta);
+        let test = SegmentTest::new(p0, delta, filter);
         let limit = if best_t.is_finite() { best_t } else { 1.0 };
-        walk(&ray, limit, |cell, t_exit| {
-            let slot = slots[cell];
-            if slot.len != 0 {
-                let segs = &hot[slot.start as usize..(slot.start + slot.len) as usize];
-                for (i, s) in segs.iter().enumerate() {
-                    if !s.flags.intersects(mask) || face_dir.is_some_and(|f| s.normal.dot(f) >= 0.0)
-                    {
-                        continue;
-                    }
-                    if let Some((t, _)) = solve(p0, delta, s.a, s.e)
-                        && t < best_t
-                    {
+        let data = WalkData {
+            kinds: self.store.kinds(),
+            starts: self.store.starts(),
+            hot: self.store.hot(),
+        };
+        let mut general = None;
+        let mut fallback = false;
+        match fast_walk(&grid, &data, &test, limit, &mut best_t, &mut general) {
+            FastWalk::Done => {}
+            FastWalk::Face {
+                index: _,
+                col,
+                row,
+                face,
+                kind,
+            } => {
+                // The face's exact intersection, from the cell's geometry alone (the store
+                // keeps whole-edge faces in this very form: see `face_segment`), so no
+                // segment data is read. Rounding at the face's very end can disagree with
+                // the walk's step; then the general walk decides.
+                let cell = Cell::new(col, row);
+                let (a, e) = face_segment(self.cell_corner(cell), self.cell_size(), face);
+                match solve(p0, delta, a, e) {
+                    Some((t, _)) if t < best_t => {
                         best_t = t;
-                        best = Some(Found::Tile(cell, i as u32));
+                        best = Some(Found::Face(cell, face_index(kind, face), face));
+                        general = None;
                     }
+                    Some(_) => {}
+                    None => fallback = true,
                 }
             }
-            best_t <= t_exit
-        });
+            FastWalk::Fallback => fallback = true,
+        }
+        if let Some((index, i)) = general {
+            best = Some(Found::Tile(self.cell_of(index), index, i));
+        }
+        if fallback && let Some(found) = self.general_walk(&grid, &test, limit, &mut best_t) {
+            best = Some(found);
+        }
         best.map(|found| self.make_hit(found, best_t, p0, delta))
     }
 
@@ -111,44 +125,57 @@ impl TileMap {
         if !(p0.is_finite() && delta.is_finite()) {
             return;
         }
-        let face_dir = filter.face_direction(delta);
-        let mask = filter.mask;
-        for (index, tmp) in self.temporaries.iter().enumerate() {
-            if filter.exclude_owner == Some(tmp.owner)
-                || !tmp.flags.intersects(mask)
-                || face_dir.is_some_and(|f| tmp.normal.dot(f) >= 0.0)
-            {
-                continue;
-            }
-            let e = tmp.segment.b - tmp.segment.a;
-            if let Some((t, _)) = solve(p0, delta, tmp.segment.a, e) {
-                out.push(self.make_hit(Found::Temporary(index), t, p0, delta));
-            }
+        for (index, t) in self.temporary_hits(p0, delta, filter) {
+            out.push(self.make_hit(Found::Temporary(index), t, p0, delta));
         }
+        let test = SegmentTest::new(p0, delta, filter);
         let mut found: Vec<(f32, usize, u32)> = Vec::new();
-        let slots = self.store.slots();
+        let starts = self.store.starts();
         let hot = self.store.hot();
-        walk(&self.grid_ray(p0, delta), 1.0, |cell, _| {
-            let slot = slots[cell];
-            let segs: &[HotSegment] = &hot[slot.start as usize..(slot.start + slot.len) as usize];
-            for (i, s) in segs.iter().enumerate() {
-                if !s.flags.intersects(mask) || face_dir.is_some_and(|f| s.normal.dot(f) >= 0.0) {
-                    continue;
-                }
-                if let Some((t, _)) = solve(p0, delta, s.a, s.e)
-                    && !found.iter().any(|&(_, c, j)| c == cell && j == i as u32)
+        walk(&self.grid_ray(p0, delta), 1.0, |index, _| {
+            for (i, s) in cell_segments(starts, hot, index).iter().enumerate() {
+                // A cell can be visited twice (a start cell that is also a corner's side
+                // cell); each segment is reported once.
+                if let Some(t) = test.hit(s)
+                    && !found.iter().any(|&(_, c, j)| c == index && j == i as u32)
                 {
-                    found.push((t, cell, i as u32));
+                    found.push((t, index, i as u32));
                 }
             }
             false
         });
-        out.extend(
-            found
-                .into_iter()
-                .map(|(t, cell, i)| self.make_hit(Found::Tile(cell, i), t, p0, delta)),
-        );
+        out.extend(found.into_iter().map(|(t, index, i)| {
+            self.make_hit(Found::Tile(self.cell_of(index), index, i), t, p0, delta)
+        }));
         out.sort_by(|a, b| a.t.total_cmp(&b.t));
+    }
+
+    /// The closest-hit walk for the rays the fast walk declines (kept out of line so the
+    /// fast path stays small).
+    #[inline(never)]
+    fn general_walk(
+        &self,
+        ray: &GridRay,
+        test: &SegmentTest,
+        limit: f32,
+        best_t: &mut f32,
+    ) -> Option<Found> {
+        let (starts, hot) = (self.store.starts(), self.store.hot());
+        let mut best = None;
+        walk(ray, limit, |index, t_exit| {
+            if let Some(i) = test.nearest(cell_segments(starts, hot, index), best_t) {
+                best = Some(Found::Tile(self.cell_of(index), index, i));
+            }
+            *best_t <= t_exit
+        });
+        best
+    }
+
+    #[inline(always)]
+    fn cell_of(&self, index: usize) -> Cell {
+        // 32-bit division: a 64-bit one costs several times more on x86-64.
+        let (index, width) = (index as u32, self.width());
+        Cell::new(index % width, index / width)
     }
 
     pub(crate) fn grid_ray(&self, p0: Vec2, delta: Vec2) -> GridRay {
@@ -178,10 +205,18 @@ impl TileMap {
                     },
                 }
             }
-            Found::Tile(cell_index, i) => {
-                let w = self.width() as usize;
-                let cell = Cell::new((cell_index % w) as u32, (cell_index / w) as u32);
-                let s = self.store.cell(cell_index)[i as usize];
+            Found::Face(cell, i, face) => RayHit {
+                t,
+                point,
+                normal: face_normal(face),
+                flags: SegmentFlags::SOLID,
+                source: SegmentSource::Tile {
+                    segment: SegmentRef { cell, index: i },
+                    tile: self.tile(cell).unwrap_or(TileId(u32::MAX)),
+                },
+            },
+            Found::Tile(cell, index, i) => {
+                let s = cell_segments(self.store.starts(), self.store.hot(), index)[i as usize];
                 RayHit {
                     t,
                     point,
@@ -190,16 +225,41 @@ impl TileMap {
                     source: SegmentSource::Tile {
                         segment: SegmentRef { cell, index: i },
                         tile: self.tile(cell).unwrap_or(TileId(u32::MAX)),
-                        source: s.source,
                     },
                 }
             }
         }
+    }
+
+    /// The temporary segments `filter` lets a ray from `p0` by `delta` hit: (index, t).
+    fn temporary_hits(
+        &self,
+        p0: Vec2,
+        delta: Vec2,
+        filter: &RayFilter,
+    ) -> impl Iterator<Item = (usize, f32)> {
+        let face_dir = filter.face_direction(delta);
+        self.temporaries
+            .iter()
+            .enumerate()
+            .filter_map(move |(index, tmp)| {
+                if filter.exclude_owner == Some(tmp.owner)
+                    || !tmp.flags.intersects(filter.mask)
+                    || face_dir.is_some_and(|f| tmp.normal.dot(f) >= 0.0)
+                {
+                    return None;
+                }
+                let e = tmp.segment.b - tmp.segment.a;
+                solve(p0, delta, tmp.segment.a, e).map(|(t, _)| (index, t))
+            })
     }
 }
 
 #[derive(Clone, Copy)]
 enum Found {
     Temporary(usize),
-    Tile(usize, u32),
+    /// A whole-edge face: its cell, its index in the cell, and its `FACE_*` bit.
+    Face(Cell, u32, u8),
+    /// Cell, its index, and the segment's index in it.
+    Tile(Cell, usize, u32),
 }

@@ -16,9 +16,11 @@
 
 use glam::Vec2;
 
-/// Relative difference under which the next x and y boundary crossings count as the same
-/// crossing (a corner): both side cells are then visited.
-const CORNER_TIE: f32 = 1e-6;
+/// How close (in cells) a ray may pass to a cell for the walk to visit it anyway. It
+/// covers the rounding of world-to-grid coordinates and of the walk's own arithmetic: a
+/// cell visited needlessly costs a little time (hits are decided by the exact segment
+/// test), a cell the ray touches but the walk skips would lose a hit.
+pub(crate) const TOUCH_TOLERANCE: f32 = 1e-4;
 
 /// `a <= b`, false when either is NaN (so a NaN ends a walk).
 #[inline(always)]
@@ -37,27 +39,33 @@ pub(crate) struct GridRay {
     pub height: u32,
 }
 
-/// Calls `visit(cell_index, t_exit)` for every cell the ray touches up to `t_limit`, roughly
-/// in order of entry; stops when `visit` returns `true`. `t_exit` is the ray fraction at
-/// which the walk leaves the cell, or `-∞` for an extra cell (a corner's side cell, a cell
-/// touching only the start) after which the caller must not stop.
+/// Calls `visit(cell_index, t_exit)` for every cell the ray touches up to `t_limit`
+/// (within [`TOUCH_TOLERANCE`]), roughly in order of entry; stops when `visit` returns
+/// `true`. `t_exit` is the ray fraction at which the walk leaves the cell, or `-∞` for an
+/// extra cell (a corner's side cell, a cell touching only the start) after which the caller
+/// must not stop.
 #[inline(always)]
 pub(crate) fn walk(ray: &GridRay, t_limit: f32, mut visit: impl FnMut(usize, f32) -> bool) {
-    if !(ray.origin.is_finite() && ray.delta.is_finite()) {
+    let (o, d) = (ray.origin, ray.delta);
+    if !(o.is_finite() && d.is_finite()) || d == Vec2::ZERO {
         return;
     }
     let size = Vec2::new(ray.width as f32, ray.height as f32);
-    // Clip [0, t_limit] to the map rectangle (slab test).
-    let (mut t_lo, mut t_hi) = (0.0f32, t_limit);
+    // The tolerance as a ray fraction, along the faster-moving axis.
+    let tol_t = TOUCH_TOLERANCE / d.x.abs().max(d.y.abs());
+    // Clip [0, t_limit] (widened by the tolerance) to the map rectangle, also widened, so
+    // that a ray touching the map's border is not clipped away by rounding (slab test).
+    let (mut t_lo, mut t_hi) = (0.0f32, t_limit + tol_t);
     for axis in 0..2 {
-        let (o, d, n) = (ray.origin[axis], ray.delta[axis], size[axis]);
+        let (o, d, n) = (o[axis], d[axis], size[axis]);
+        let (lo, hi) = (-TOUCH_TOLERANCE, n + TOUCH_TOLERANCE);
         if d == 0.0 {
-            if !(o >= 0.0 && o <= n) {
+            if !(o >= lo && o <= hi) {
                 return;
             }
         } else {
             let inv = 1.0 / d;
-            let (t0, t1) = ((0.0 - o) * inv, (n - o) * inv);
+            let (t0, t1) = ((lo - o) * inv, (hi - o) * inv);
             t_lo = t_lo.max(t0.min(t1));
             t_hi = t_hi.min(t0.max(t1));
         }
@@ -65,35 +73,38 @@ pub(crate) fn walk(ray: &GridRay, t_limit: f32, mut visit: impl FnMut(usize, f32
     if !at_most(t_lo, t_hi) {
         return;
     }
-    let start = ray.origin + ray.delta * t_lo;
-    let col = (start.x.floor().max(0.0) as u32).min(ray.width - 1);
-    let row = (start.y.floor().max(0.0) as u32).min(ray.height - 1);
-    let on_x_line = start.x == col as f32 && col > 0;
-    let on_y_line = start.y == row as f32 && row > 0;
-
-    // Cells touching only the start point.
-    if on_x_line || on_y_line {
-        let w = ray.width as usize;
-        let (c, r) = (col as usize, row as usize);
-        if on_x_line && visit(r * w + c - 1, f32::NEG_INFINITY) {
-            return;
-        }
-        if on_y_line && visit((r - 1) * w + c, f32::NEG_INFINITY) {
-            return;
-        }
-        if on_x_line && on_y_line && visit((r - 1) * w + c - 1, f32::NEG_INFINITY) {
-            return;
+    let start = o + d * t_lo;
+    let clamp = |v: f32, n: u32| (v.floor().max(0.0) as u32).min(n - 1);
+    let (col, row) = (clamp(start.x, ray.width), clamp(start.y, ray.height));
+    // Every cell within the tolerance of the start point touches the ray there.
+    let (c_lo, c_hi) = (
+        clamp(start.x - TOUCH_TOLERANCE, ray.width),
+        clamp(start.x + TOUCH_TOLERANCE, ray.width),
+    );
+    let (r_lo, r_hi) = (
+        clamp(start.y - TOUCH_TOLERANCE, ray.height),
+        clamp(start.y + TOUCH_TOLERANCE, ray.height),
+    );
+    let w = ray.width as usize;
+    for r in r_lo..=r_hi {
+        for c in c_lo..=c_hi {
+            if (c, r) != (col, row) && visit(r as usize * w + c as usize, f32::NEG_INFINITY) {
+                return;
+            }
         }
     }
-    if walk_strip(ray, t_hi, col, row, &mut visit) {
-        return;
-    }
-    // Running exactly along a grid line: the strip on the other side touches the ray too.
-    if ray.delta.y == 0.0 && on_y_line && walk_strip(ray, t_hi, col, row - 1, &mut visit) {
-        return;
-    }
-    if ray.delta.x == 0.0 && on_x_line {
-        walk_strip(ray, t_hi, col - 1, row, &mut visit);
+    walk_strip(ray, t_hi, tol_t, col, row, &mut visit);
+    // A ray running along a grid line touches the strip of cells on its other side too.
+    // Each strip's early stop is valid only within it, so the other strip is walked even
+    // when the first one stopped.
+    if d.y == 0.0 {
+        for r in (r_lo..=r_hi).filter(|&r| r != row) {
+            walk_strip(ray, t_hi, tol_t, col, r, &mut visit);
+        }
+    } else if d.x == 0.0 {
+        for c in (c_lo..=c_hi).filter(|&c| c != col) {
+            walk_strip(ray, t_hi, tol_t, c, row, &mut visit);
+        }
     }
 }
 
@@ -102,6 +113,7 @@ pub(crate) fn walk(ray: &GridRay, t_limit: f32, mut visit: impl FnMut(usize, f32
 fn walk_strip(
     ray: &GridRay,
     t_hi: f32,
+    tol_t: f32,
     mut col: u32,
     mut row: u32,
     visit: &mut impl FnMut(usize, f32) -> bool,
@@ -151,7 +163,7 @@ fn walk_strip(
         if !at_most(t_next, t_hi) {
             return false;
         }
-        let corner = step_x != 0 && step_y != 0 && (tx - ty).abs() <= CORNER_TIE * t_next.abs();
+        let corner = step_x != 0 && step_y != 0 && (tx - ty).abs() <= tol_t;
         if corner {
             // Through a corner: visit both side cells, then go on diagonally.
             let nc = col as i64 + step_x as i64;

@@ -121,7 +121,8 @@ pub(crate) fn active_segments<'s>(
                 e: wb - wa,
                 normal: s.normal,
                 flags: s.flags,
-                source: index as u32,
+                source: index as u16,
+                count: 0,
             });
         };
         match side {

@@ -6,7 +6,7 @@ use thiserror::Error;
 
 use super::continuity::link_cell;
 use super::culling::{Side, active_segments};
-use super::store::{HotSegment, SegmentRef, SegmentStore};
+use super::store::{HotSegment, SegmentRef, SegmentStore, canonical_faces, kind_of};
 use super::{Cell, SegmentFlags, TemporaryError, TemporarySegment, TileId, TileSet, TileShape};
 use crate::geometry::{Aabb, Segment};
 
@@ -277,8 +277,8 @@ impl TileMap {
         let index = (row * self.width + col) as usize;
         let mut out = std::mem::take(&mut self.scratch);
         out.clear();
+        let base = self.cell_corner(Cell::new(col, row));
         if let Some(shape) = self.shape_of_raw(self.tiles[index]) {
-            let base = self.cell_corner(Cell::new(col, row));
             let neighbour = |side: Side| -> Option<&TileShape> {
                 let (dc, dr) = side.neighbour_offset();
                 let (c, r) = self.in_bounds(col as i64 + dc, row as i64 + dr)?;
@@ -286,7 +286,9 @@ impl TileMap {
             };
             active_segments(shape, self.cell_size, base, neighbour, &mut out);
         }
-        self.store.set_cell(index, &out);
+        let kind = kind_of(&out, base, self.cell_size);
+        canonical_faces(&mut out, kind, base, self.cell_size);
+        self.store.set_cell(index, &out, kind);
         self.scratch = out;
     }
 
@@ -431,7 +433,7 @@ impl TileMap {
             normal: h.normal,
             flags: h.flags,
             tile,
-            source: h.source,
+            source: h.source.into(),
             continues: *l,
         })
     }

@@ -36,6 +36,9 @@ impl TileSegment {
     }
 }
 
+/// Most segments one tile shape may have.
+pub const MAX_SHAPE_SEGMENTS: usize = 4096;
+
 /// Why a tile shape was refused.
 #[derive(Clone, Debug, PartialEq, Error)]
 pub enum ShapeError {
@@ -73,6 +76,12 @@ pub enum ShapeError {
         first: usize,
         /// Index of the second edge.
         second: usize,
+    },
+    /// More than [`MAX_SHAPE_SEGMENTS`] segments.
+    #[error("the shape has {count} segments, more than the {MAX_SHAPE_SEGMENTS} a tile may have")]
+    TooManySegments {
+        /// How many it would have.
+        count: usize,
     },
     /// A segment leaves the tile's rectangle `[0, w] × [0, h]`.
     #[error("segment {segment} leaves the tile's {w}×{h} rectangle")]
@@ -125,6 +134,11 @@ impl TileShape {
         flags: SegmentFlags,
     ) -> Result<Self, ShapeError> {
         let first = self.segments.len();
+        if first + points.len() > MAX_SHAPE_SEGMENTS {
+            return Err(ShapeError::TooManySegments {
+                count: first + points.len(),
+            });
+        }
         let edges = polygon_edges(points, first)?;
         for (a, b, normal) in edges {
             self.segments.push(TileSegment::new(a, b, normal, flags));
@@ -152,6 +166,11 @@ impl TileShape {
             }
             s.normal /= len;
             if !out.contains(&s) {
+                if out.len() == MAX_SHAPE_SEGMENTS {
+                    return Err(ShapeError::TooManySegments {
+                        count: out.len() + 1,
+                    });
+                }
                 out.push(s);
             }
         }

@@ -1,0 +1,293 @@
+//! The ray benchmark: the "rays" scene of BENCHMARKS.md cast on "dungeon256" or "open256"
+//! by tileslide and, in the same process on the same rays, by parry2d's `Voxels` and
+//! `Polyline` shapes.
+//!
+//! Each engine casts every ray once untimed to record its answers (hits, mean hit fraction,
+//! disagreements with tileslide), then `passes` timed passes are run, interleaving the
+//! engines so that machine noise falls on all of them alike; throughput is the median pass.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use tileslide::{Ray, RayFilter, TileMap};
+use tileslide_scenes::{Scene, SceneRay, TileMapError, scene_rays};
+
+use crate::peers::{ParryPolyline, ParryVoxels};
+
+/// Two answers disagree when their hit distances differ by more than this many cells (or
+/// one hits and the other does not).
+pub const DISAGREEMENT_TOLERANCE: f32 = 1e-3;
+
+/// One engine's cast: ray index → hit distance in cells.
+type CastFn<'a> = dyn Fn(usize) -> Option<f32> + 'a;
+
+/// What to run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RaysConfig {
+    /// The map.
+    pub scene: Scene,
+    /// How many rays of the scene (the first `n`).
+    pub rays: usize,
+    /// How many timed passes per engine (the median is reported).
+    pub passes: usize,
+}
+
+impl Default for RaysConfig {
+    fn default() -> Self {
+        Self {
+            scene: Scene::Dungeon256,
+            rays: 1_000_000,
+            passes: 7,
+        }
+    }
+}
+
+/// One engine's figures.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EngineResult {
+    /// Engine name (`tileslide`, `parry2d-voxels`, `parry2d-polyline`).
+    pub name: &'static str,
+    /// Median throughput over the timed passes, in millions of rays per second.
+    pub mrays_per_s: f64,
+    /// Slowest and fastest pass, in millions of rays per second.
+    pub spread: (f64, f64),
+    /// Rays that hit.
+    pub hits: usize,
+    /// Mean hit fraction `t` in `[0, 1]` over the rays that hit.
+    pub mean_t: f64,
+    /// Mean hit distance in cells over the rays that hit.
+    pub mean_distance: f64,
+    /// Rays whose answer differs from tileslide's (see [`DISAGREEMENT_TOLERANCE`]).
+    pub disagreements: usize,
+}
+
+/// The whole benchmark's result.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RaysReport {
+    /// Scene name.
+    pub scene: &'static str,
+    /// FNV-1a fingerprint of the map, as 16 hex digits.
+    pub fingerprint: String,
+    /// Number of rays.
+    pub rays: usize,
+    /// Timed passes per engine.
+    pub passes: usize,
+    /// One entry per engine, tileslide first.
+    pub results: Vec<EngineResult>,
+}
+
+/// Why the benchmark could not run.
+#[derive(Debug)]
+pub enum RaysError {
+    /// The generated map does not match the fingerprint BENCHMARKS.md publishes.
+    FingerprintMismatch {
+        /// Scene name.
+        scene: &'static str,
+        /// Published fingerprint.
+        expected: &'static str,
+        /// Generated fingerprint.
+        found: String,
+    },
+    /// The map could not be built.
+    Map(TileMapError),
+    /// Zero rays or zero passes.
+    Empty,
+}
+
+impl std::fmt::Display for RaysError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            RaysError::FingerprintMismatch {
+                scene,
+                expected,
+                found,
+            } => write!(
+                f,
+                "scene {scene}: map fingerprint {found} differs from the published {expected}"
+            ),
+            RaysError::Map(e) => write!(f, "cannot build the map: {e}"),
+            RaysError::Empty => write!(f, "the benchmark needs at least one ray and one pass"),
+        }
+    }
+}
+
+impl std::error::Error for RaysError {}
+
+/// Runs the benchmark; `progress(done, total)` is called after each timed pass.
+pub fn run_rays(
+    config: RaysConfig,
+    mut progress: impl FnMut(usize, usize),
+) -> Result<RaysReport, RaysError> {
+    if config.rays == 0 || config.passes == 0 {
+        return Err(RaysError::Empty);
+    }
+    let grid = config.scene.grid();
+    let fingerprint = grid.fingerprint_hex();
+    if let Some(expected) = config.scene.expected_fingerprint()
+        && expected != fingerprint
+    {
+        return Err(RaysError::FingerprintMismatch {
+            scene: config.scene.name(),
+            expected,
+            found: fingerprint,
+        });
+    }
+    let rays = scene_rays(&grid, config.rays);
+    let map = grid.to_tile_map().map_err(RaysError::Map)?;
+    let voxels = ParryVoxels::new(&grid);
+    let polyline = ParryPolyline::new(&grid);
+    let ours: Vec<Ray> = rays
+        .iter()
+        .map(|r| Ray {
+            origin: r.origin,
+            delta: r.dir * r.length,
+        })
+        .collect();
+
+    let engines: [(&'static str, &CastFn); 3] = [
+        ("tileslide", &|i| {
+            cast_tileslide(&map, ours[i]).map(|t| t * rays[i].length)
+        }),
+        (ParryVoxels::NAME, &|i| voxels.cast(&rays[i])),
+        (ParryPolyline::NAME, &|i| polyline.cast(&rays[i])),
+    ];
+    let answers: Vec<Vec<Option<f32>>> = engines
+        .iter()
+        .map(|(_, cast)| (0..rays.len()).map(cast).collect())
+        .collect();
+
+    // Timed passes: each engine runs over all rays in a tight loop of its own, so that the
+    // closure indirection above is not part of what is measured.
+    let total = config.passes * engines.len();
+    let mut times = vec![Vec::with_capacity(config.passes); engines.len()];
+    for pass in 0..config.passes {
+        for (engine, slot) in times.iter_mut().enumerate() {
+            let start = Instant::now();
+            let checksum = match engine {
+                0 => pass_tileslide(&map, &ours),
+                1 => pass_peer(&rays, |r| voxels.cast(r)),
+                _ => pass_peer(&rays, |r| polyline.cast(r)),
+            };
+            slot.push(start.elapsed().as_secs_f64());
+            black_box(checksum);
+            progress(pass * engines.len() + engine + 1, total);
+        }
+    }
+
+    let results = engines
+        .iter()
+        .zip(&answers)
+        .zip(&times)
+        .map(|(((name, _), answer), time)| summarize(name, answer, &answers[0], &rays, time))
+        .collect();
+    Ok(RaysReport {
+        scene: config.scene.name(),
+        fingerprint,
+        rays: rays.len(),
+        passes: config.passes,
+        results,
+    })
+}
+
+#[inline(never)]
+fn cast_tileslide(map: &TileMap, ray: Ray) -> Option<f32> {
+    map.cast_ray(ray, &RayFilter::default()).map(|h| h.t)
+}
+
+#[inline(never)]
+fn pass_tileslide(map: &TileMap, rays: &[Ray]) -> f32 {
+    let filter = RayFilter::default();
+    let mut sum = 0.0;
+    for ray in rays {
+        if let Some(hit) = map.cast_ray(*ray, &filter) {
+            sum += hit.t;
+        }
+    }
+    sum
+}
+
+#[inline(never)]
+fn pass_peer(rays: &[SceneRay], cast: impl Fn(&SceneRay) -> Option<f32>) -> f32 {
+    let mut sum = 0.0;
+    for ray in rays {
+        if let Some(d) = cast(ray) {
+            sum += d;
+        }
+    }
+    sum
+}
+
+fn summarize(
+    name: &'static str,
+    answer: &[Option<f32>],
+    reference: &[Option<f32>],
+    rays: &[SceneRay],
+    times: &[f64],
+) -> EngineResult {
+    let mut hits = 0;
+    let (mut sum_t, mut sum_d) = (0.0f64, 0.0f64);
+    for (a, ray) in answer.iter().zip(rays) {
+        if let Some(d) = a {
+            hits += 1;
+            sum_d += f64::from(*d);
+            sum_t += f64::from(*d) / f64::from(ray.length);
+        }
+    }
+    let disagreements = answer
+        .iter()
+        .zip(reference)
+        .filter(|(a, b)| match (a, b) {
+            (Some(a), Some(b)) => (a - b).abs() > DISAGREEMENT_TOLERANCE,
+            (None, None) => false,
+            _ => true,
+        })
+        .count();
+    let mut rates: Vec<f64> = times.iter().map(|t| rays.len() as f64 / t / 1e6).collect();
+    rates.sort_by(f64::total_cmp);
+    let median = rates[rates.len() / 2];
+    let per_hit = |s: f64| if hits > 0 { s / hits as f64 } else { 0.0 };
+    EngineResult {
+        name,
+        mrays_per_s: median,
+        spread: (rates[0], rates[rates.len() - 1]),
+        hits,
+        mean_t: per_hit(sum_t),
+        mean_distance: per_hit(sum_d),
+        disagreements,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn small_run_reports_every_engine_and_they_agree() {
+        let report = run_rays(
+            RaysConfig {
+                scene: Scene::Dungeon256,
+                rays: 5_000,
+                passes: 1,
+            },
+            |_, _| {},
+        )
+        .unwrap();
+        assert_eq!(report.fingerprint, "a36c9fd56f2ba422");
+        let names: Vec<_> = report.results.iter().map(|r| r.name).collect();
+        assert_eq!(names, ["tileslide", "parry2d-voxels", "parry2d-polyline"]);
+        let ours = &report.results[0];
+        assert_eq!(ours.disagreements, 0);
+        assert!(ours.hits > 4_000 && ours.mean_t > 0.0 && ours.mean_t <= 1.0);
+        assert_eq!(report.results[1].disagreements, 0);
+        assert_eq!(report.results[1].hits, ours.hits);
+    }
+
+    #[test]
+    fn zero_rays_is_an_error() {
+        let config = RaysConfig {
+            rays: 0,
+            ..RaysConfig::default()
+        };
+        assert!(matches!(run_rays(config, |_, _| {}), Err(RaysError::Empty)));
+    }
+}

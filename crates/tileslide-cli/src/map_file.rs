@@ -1,0 +1,82 @@
+//! Loading the MAP argument by its extension.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use anyhow::{Context, Result, bail};
+use clap::Args;
+use tileslide::TileMap;
+use tileslide::io::{ascii, replica};
+
+/// The map arguments shared by every command that reads a map.
+#[derive(Args, Debug)]
+pub struct MapArgs {
+    /// The map: `.txt` ASCII map, or `.bin` Replica Island level (needs `--tileset`).
+    pub map: PathBuf,
+    /// The tile set for maps that need one (Replica Island: `collision.bin`).
+    #[arg(long, value_name = "FILE")]
+    pub tileset: Option<PathBuf>,
+    /// Cell size of an ASCII map.
+    #[arg(long, value_name = "SIZE", default_value_t = 1.0)]
+    pub cell: f32,
+}
+
+/// The kind of map file, from its extension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MapFormat {
+    Ascii,
+    ReplicaIsland,
+}
+
+impl MapFormat {
+    pub fn name(self) -> &'static str {
+        match self {
+            MapFormat::Ascii => "ascii",
+            MapFormat::ReplicaIsland => "replica-island",
+        }
+    }
+
+    fn of(path: &Path) -> Result<Self> {
+        match path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase)
+            .as_deref()
+        {
+            Some("txt") => Ok(MapFormat::Ascii),
+            Some("bin") => Ok(MapFormat::ReplicaIsland),
+            _ => bail!(
+                "{}: unknown map format (expected a .txt ASCII map or a .bin Replica Island level)",
+                path.display()
+            ),
+        }
+    }
+}
+
+/// Loads the map the arguments name.
+pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
+    let format = MapFormat::of(&args.map)?;
+    let map = match format {
+        MapFormat::Ascii => {
+            if args.tileset.is_some() {
+                bail!(
+                    "{}: an ASCII map uses the built-in tile set; drop --tileset",
+                    args.map.display()
+                );
+            }
+            ascii::load(&args.map, args.cell)?
+        }
+        MapFormat::ReplicaIsland => {
+            let Some(tileset) = &args.tileset else {
+                bail!(
+                    "{}: a Replica Island level needs its tile set: add --tileset collision.bin",
+                    args.map.display()
+                );
+            };
+            let set = replica::load_tile_set(tileset)?;
+            replica::load_level(&args.map, Arc::new(set))
+                .with_context(|| format!("loading level {}", args.map.display()))?
+        }
+    };
+    Ok((map, format))
+}

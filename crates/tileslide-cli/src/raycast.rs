@@ -1,0 +1,170 @@
+//! `tileslide raycast`.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, anyhow, bail};
+use serde_json::json;
+use tileslide::{Ray, RayFilter, RayHit, Vec2};
+
+use crate::map_file::{self, MapArgs};
+
+pub fn run(
+    args: &MapArgs,
+    points: Option<(String, String)>,
+    rays_file: Option<PathBuf>,
+    both_sides: bool,
+    as_json: bool,
+) -> Result<()> {
+    // Read the rays before the map, so a bad ray file fails fast.
+    let rays = match (points, rays_file) {
+        (Some((from, to)), _) => vec![(parse_point(&from, "--from")?, parse_point(&to, "--to")?)],
+        (None, Some(path)) => read_rays(&path)?,
+        (None, None) => bail!("give --from X,Y --to X,Y or --rays FILE"),
+    };
+    let (map, _) = map_file::load(args)?;
+    let filter = if both_sides {
+        RayFilter::both_sides()
+    } else {
+        RayFilter::default()
+    };
+    for (i, (p0, p1)) in rays.iter().enumerate() {
+        let hit = map.cast_ray(Ray::between(*p0, *p1), &filter);
+        if as_json {
+            println!("{}", hit_json(hit.as_ref()));
+        } else {
+            println!(
+                "ray {} ({}, {}) → ({}, {}): {}",
+                i + 1,
+                p0.x,
+                p0.y,
+                p1.x,
+                p1.y,
+                describe(hit.as_ref())
+            );
+        }
+    }
+    Ok(())
+}
+
+fn hit_json(hit: Option<&RayHit>) -> serde_json::Value {
+    match hit {
+        None => json!({ "hit": false }),
+        Some(h) => {
+            let mut v = json!({
+                "hit": true, "t": h.t, "x": h.point.x, "y": h.point.y,
+                "nx": h.normal.x, "ny": h.normal.y,
+            });
+            if let (Some(cell), Some(tile)) = (h.cell(), h.tile()) {
+                v["cell"] = json!([cell.col, cell.row]);
+                v["tile"] = json!(tile.0);
+            }
+            v
+        }
+    }
+}
+
+fn describe(hit: Option<&RayHit>) -> String {
+    match hit {
+        None => "no hit".to_string(),
+        Some(h) => {
+            let mut s = format!(
+                "hit at t = {} ({}, {}), normal ({}, {})",
+                h.t, h.point.x, h.point.y, h.normal.x, h.normal.y
+            );
+            if let (Some(cell), Some(tile)) = (h.cell(), h.tile()) {
+                s += &format!(", cell {cell}, tile {tile}");
+            }
+            s
+        }
+    }
+}
+
+/// Parses `X,Y` into a finite point; errors name the argument.
+fn parse_point(text: &str, what: &str) -> Result<Vec2> {
+    let parts: Vec<&str> = text.split(',').collect();
+    let [x, y] = parts.as_slice() else {
+        bail!("{what} {text:?}: expected X,Y (two numbers separated by a comma)");
+    };
+    let parse = |s: &str, axis: &str| -> Result<f32> {
+        let v: f32 = s
+            .trim()
+            .parse()
+            .map_err(|_| anyhow!("{what} {text:?}: {axis} = {s:?} is not a number"))?;
+        if !v.is_finite() {
+            bail!("{what} {text:?}: {axis} = {s:?} is not finite");
+        }
+        Ok(v)
+    };
+    Ok(Vec2::new(parse(x, "x")?, parse(y, "y")?))
+}
+
+/// Reads a CSV ray file: `x0,y0,x1,y1` per line; blank lines and lines starting with `#`
+/// are skipped. Errors name the file, line and column.
+fn read_rays(path: &Path) -> Result<Vec<(Vec2, Vec2)>> {
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("{}: cannot read the ray file", path.display()))?;
+    let mut rays = Vec::new();
+    for (n, line) in text.lines().enumerate() {
+        let trimmed = line.trim();
+        if trimmed.is_empty() || trimmed.starts_with('#') {
+            continue;
+        }
+        let mut values = [0f32; 4];
+        let mut column = 1;
+        let fields: Vec<&str> = line.split(',').collect();
+        if fields.len() != 4 {
+            bail!(
+                "{}:{}:1: expected 4 comma-separated numbers x0,y0,x1,y1, found {} fields",
+                path.display(),
+                n + 1,
+                fields.len()
+            );
+        }
+        for (i, field) in fields.iter().enumerate() {
+            let v: f32 = field.trim().parse().map_err(|_| {
+                anyhow!(
+                    "{}:{}:{}: {:?} is not a number",
+                    path.display(),
+                    n + 1,
+                    column,
+                    field.trim()
+                )
+            })?;
+            if !v.is_finite() {
+                bail!(
+                    "{}:{}:{}: {:?} is not finite",
+                    path.display(),
+                    n + 1,
+                    column,
+                    field.trim()
+                );
+            }
+            values[i] = v;
+            column += field.chars().count() + 1;
+        }
+        rays.push((
+            Vec2::new(values[0], values[1]),
+            Vec2::new(values[2], values[3]),
+        ));
+    }
+    Ok(rays)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn points_parse_and_errors_name_the_argument() {
+        assert_eq!(
+            parse_point("1.5,-2", "--from").unwrap(),
+            Vec2::new(1.5, -2.0)
+        );
+        let e = parse_point("1.5", "--from").unwrap_err().to_string();
+        assert!(e.contains("--from") && e.contains("X,Y"), "{e}");
+        let e = parse_point("1,NaN", "--to").unwrap_err().to_string();
+        assert!(e.contains("--to") && e.contains("not finite"), "{e}");
+        let e = parse_point("1,abc", "--to").unwrap_err().to_string();
+        assert!(e.contains("not a number"), "{e}");
+    }
+}

@@ -1,0 +1,176 @@
+//! The common case of the closest-hit walk, specialised for speed.
+//!
+//! A ray that starts strictly inside the map, off every grid line, parallel to neither axis,
+//! and crosses no cell corner is walked here with Amanatides & Woo (1987) in its plainest
+//! form. Anything else returns [`FastWalk::Fallback`] and the caller walks it again from the
+//! start with the general `traversal::walk`; hits found so far stay valid, since every hit
+//! recorded is a true hit.
+//!
+//! The walk reads one byte per visited cell, the cell's *kind* (see `tiles::store`): empty,
+//! general (test its segments), or the set of whole-edge solid faces it exposes. For a
+//! front-face query, a ray entering a cell of the last sort hits it exactly when it enters
+//! through one of those faces, which the walk knows from the step it just took: the decision
+//! needs no segment data at all.
+
+use super::segment_test::{SegmentTest, cell_segments};
+use super::traversal::{GridRay, TOUCH_TOLERANCE};
+use crate::tiles::store::{
+    FACE_MAX_X, FACE_MAX_Y, FACE_MIN_X, FACE_MIN_Y, HotSegment, KIND_GENERAL,
+};
+
+/// How the fast walk ended. Small, so it comes back in a register.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum FastWalk {
+    /// The walk finished; the nearest hit on a general cell, if any, is in the `best`
+    /// argument.
+    Done,
+    /// The ray enters cell `index` through its exposed whole-edge face `face` (a `FACE_*`
+    /// bit; `kind` is the cell's kind) before any hit found so far: that face is the nearest
+    /// hit, up to the exact intersection the caller computes.
+    Face {
+        index: u32,
+        col: u32,
+        row: u32,
+        face: u8,
+        kind: u8,
+    },
+    /// The ray needs the general walk.
+    Fallback,
+}
+
+/// The map data the walk reads.
+pub(crate) struct WalkData<'a> {
+    pub kinds: &'a [u8],
+    pub starts: &'a [u32],
+    pub hot: &'a [HotSegment],
+}
+
+/// Walks `ray` up to `limit`, testing general cells' segments with `test` and recording a
+/// nearer hit in `best_t` and `best` (cell index, segment index); stops once `best_t` lies
+/// before the current cell's exit, or at the first exposed face it enters when `test`
+/// allows deciding by faces.
+#[inline(always)]
+pub(crate) fn fast_walk(
+    ray: &GridRay,
+    data: &WalkData<'_>,
+    test: &SegmentTest,
+    limit: f32,
+    best_t: &mut f32,
+    best: &mut Option<(usize, u32)>,
+) -> FastWalk {
+    let (o, d) = (ray.origin, ray.delta);
+    let (w, h) = (ray.width as i32, ray.height as i32);
+    let inside = o.x > 0.0 && o.y > 0.0 && o.x < w as f32 && o.y < h as f32;
+    if !(inside && d.x != 0.0 && d.y != 0.0) {
+        return FastWalk::Fallback;
+    }
+    // Positive, so truncation is floor.
+    let (col, row) = (o.x as i32, o.y as i32);
+    // A start within the tolerance of a grid line touches the cells on its other side too.
+    let (fx, fy) = (o.x - col as f32, o.y - row as f32);
+    let near_line = |f: f32| f <= TOUCH_TOLERANCE || f >= 1.0 - TOUCH_TOLERANCE;
+    if near_line(fx) || near_line(fy) {
+        return FastWalk::Fallback;
+    }
+    let kinds = data.kinds;
+    let step_x: i32 = if d.x > 0.0 { 1 } else { -1 };
+    let step_y: i32 = if d.y > 0.0 { 1 } else { -1 };
+    // The face a step enters the next cell through. Faces decide only front-face queries
+    // that see solid segments; otherwise face cells are tested like general ones.
+    let face_mask: u8 = if test.decides_by_faces() { 0x0f } else { 0 };
+    let general_mask: u8 = if test.decides_by_faces() {
+        KIND_GENERAL
+    } else {
+        0xff
+    };
+    let enter_x = if step_x > 0 { FACE_MIN_X } else { FACE_MAX_X };
+    let enter_y = if step_y > 0 { FACE_MIN_Y } else { FACE_MAX_Y };
+    let inv = d.recip();
+    // The touch tolerance as a ray fraction, along the faster-moving axis.
+    let tol_t = TOUCH_TOLERANCE * inv.x.abs().min(inv.y.abs());
+    // The next grid line on each axis, kept as an exact float, and the ray fraction there
+    // (computed from the origin each time, so no error accumulates).
+    let mut line_x = (col + (step_x > 0) as i32) as f32;
+    let mut line_y = (row + (step_y > 0) as i32) as f32;
+    let mut tx = (line_x - o.x) * inv.x;
+    let mut ty = (line_y - o.y) * inv.y;
+    // The walk ends when the next cell starts past `limit` or outside the map. The second
+    // happens at `t_leave`, computed by the same formula as `tx`/`ty` at the map's last
+    // grid line; one comparison with `t_stop` checks both: stop when
+    // `t_exit > limit || t_exit >= t_leave`.
+    let edge_x = if step_x > 0 { w as f32 } else { 0.0 };
+    let edge_y = if step_y > 0 { h as f32 } else { 0.0 };
+    let t_leave = ((edge_x - o.x) * inv.x).min((edge_y - o.y) * inv.y);
+    let limit = limit + tol_t;
+    let t_stop = if t_leave <= limit {
+        // The largest float below `t_leave` (> 0: the origin is strictly inside).
+        f32::from_bits(t_leave.to_bits() - 1)
+    } else {
+        limit
+    };
+    let mut index = (row * w + col) as usize;
+    let (index_step_x, index_step_y) = (step_x as isize, step_y as isize * w as isize);
+    let (line_step_x, line_step_y) = (step_x as f32, step_y as f32);
+    // The start cell is not entered through any face.
+    let mut entered: u8 = 0;
+    loop {
+        // Not `f32::min`: its NaN handling costs instructions, and no NaN gets here.
+        let t_exit = if tx < ty { tx } else { ty };
+        let kind = kinds[index];
+        if kind != 0 {
+            if kind & entered & face_mask != 0 {
+                // The cell from the grid lines ahead of it: no division of `index`.
+                let col = line_x as i32 - (step_x > 0) as i32;
+                let row = line_y as i32 - (step_y > 0) as i32;
+                return FastWalk::Face {
+                    index: index as u32,
+                    col: col as u32,
+                    row: row as u32,
+                    face: entered,
+                    kind,
+                };
+            }
+            if kind & general_mask != 0 && test_cell(data, test, index, t_exit, best_t, best) {
+                return FastWalk::Done;
+            }
+        }
+        // Within the tolerance of a corner, both side cells must be visited, which only
+        // the general walk does. Checked before the end of the walk: a ray leaving the map
+        // through a corner touches the side cell still inside it.
+        if (tx - ty).abs() <= tol_t {
+            return FastWalk::Fallback;
+        }
+        if t_exit > t_stop {
+            return FastWalk::Done;
+        }
+        if tx < ty {
+            index = index.wrapping_add_signed(index_step_x);
+            line_x += line_step_x;
+            tx = (line_x - o.x) * inv.x;
+            entered = enter_x;
+        } else {
+            index = index.wrapping_add_signed(index_step_y);
+            line_y += line_step_y;
+            ty = (line_y - o.y) * inv.y;
+            entered = enter_y;
+        }
+    }
+}
+
+/// Tests the segments of the cell at `index`, recording a nearer hit in `best_t` and `best`;
+/// true when the nearest hit lies before the cell's exit (the walk is over). Out of line so
+/// that the walk's loop stays small.
+#[inline(never)]
+fn test_cell(
+    data: &WalkData<'_>,
+    test: &SegmentTest,
+    index: usize,
+    t_exit: f32,
+    best_t: &mut f32,
+    best: &mut Option<(usize, u32)>,
+) -> bool {
+    if let Some(i) = test.nearest(cell_segments(data.starts, data.hot, index), best_t) {
+        *best = Some((index, i));
+    }
+    *best_t <= t_exit
+}

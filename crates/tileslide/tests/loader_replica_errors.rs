@@ -1,0 +1,666 @@
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+//! Proves that every error of the Replica Island loaders (tile set and level) is reported
+//! with the right kind at the right byte offset, and that its message names the file.
+
+use std::sync::Arc;
+
+use tileslide::io::{LoadError, LoadErrorKind, Location, replica};
+use tileslide::{Cell, ShapeError, TileId, TileMap, TileSet, TileSetError, Vec2};
+
+// ---------------------------------------------------------------------------------------
+// Building files by hand (FORMAT.md), little-endian.
+
+/// One segment: start, end, normal.
+type Seg = [f32; 6];
+
+const TOP: Seg = [0.0, 32.0, 32.0, 32.0, 0.0, 1.0];
+const RIGHT: Seg = [32.0, 32.0, 32.0, 0.0, 1.0, 0.0];
+const BOTTOM: Seg = [32.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+const LEFT: Seg = [0.0, 0.0, 0.0, 32.0, -1.0, 0.0];
+const SQUARE: [Seg; 4] = [TOP, RIGHT, BOTTOM, LEFT];
+
+fn tile_bytes(id: u8, segments: &[Seg]) -> Vec<u8> {
+    let mut out = vec![id, segments.len() as u8];
+    for s in segments {
+        for f in s {
+            out.extend_from_slice(&f.to_le_bytes());
+        }
+    }
+    out
+}
+
+fn tile_set_bytes(tiles: &[(u8, &[Seg])]) -> Vec<u8> {
+    let mut out = vec![52, tiles.len() as u8];
+    for (id, segments) in tiles {
+        out.extend(tile_bytes(*id, segments));
+    }
+    out
+}
+
+fn square_set() -> Arc<TileSet> {
+    Arc::new(replica::parse_tile_set(&tile_set_bytes(&[(1, &SQUARE)]), "set.bin").unwrap())
+}
+
+/// A layer: type, then a tile map of `w × h` cells (`cells` may be shorter than claimed).
+fn layer_bytes(kind: i8, w: i32, h: i32, cells: &[i8]) -> Vec<u8> {
+    let mut out = vec![kind as u8, 0];
+    out.extend_from_slice(&1.0f32.to_le_bytes());
+    out.push(42);
+    out.extend_from_slice(&w.to_le_bytes());
+    out.extend_from_slice(&h.to_le_bytes());
+    out.extend(cells.iter().map(|&c| c as u8));
+    out
+}
+
+fn level_bytes(layers: &[Vec<u8>]) -> Vec<u8> {
+    let mut out = vec![96, layers.len() as u8, 0];
+    for l in layers {
+        out.extend_from_slice(l);
+    }
+    out
+}
+
+/// Offsets in a level with its first layer at byte 3.
+const FIRST_LAYER: usize = 3;
+const MAP_SIGNATURE_AT: u64 = (FIRST_LAYER + 6) as u64;
+const WIDTH_AT: u64 = MAP_SIGNATURE_AT + 1;
+const HEIGHT_AT: u64 = WIDTH_AT + 4;
+const CELLS_AT: u64 = HEIGHT_AT + 4;
+
+fn set_err(data: &[u8]) -> LoadError {
+    replica::parse_tile_set(data, "tiles/collision.bin").unwrap_err()
+}
+
+fn level_err(data: &[u8]) -> LoadError {
+    replica::parse_level(data, "levels/level_9_9.bin", square_set()).unwrap_err()
+}
+
+/// The message names the file and, for a byte location, the offset.
+fn assert_names_file(e: &LoadError, file: &str) {
+    let text = e.to_string();
+    assert!(text.starts_with(file), "{text}");
+    if let Location::Byte(at) = e.location {
+        assert!(text.contains(&format!("byte {at}")), "{text}");
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Tile set.
+
+#[test]
+fn tile_set_valid_hand_made_file_loads() {
+    let set = replica::parse_tile_set(&tile_set_bytes(&[(1, &SQUARE), (200, &[TOP])]), "set.bin")
+        .unwrap();
+    assert_eq!(set.len(), 2);
+    assert_eq!(set.shape(TileId(200)).unwrap().segments().len(), 1);
+}
+
+#[test]
+fn tile_set_wrong_signature_is_reported_at_byte_0() {
+    let mut data = tile_set_bytes(&[(1, &SQUARE)]);
+    data[0] = 53;
+    let e = set_err(&data);
+    assert_eq!(e.location, Location::Byte(0));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::BadSignature {
+            field: "signature",
+            expected: 52,
+            found: 53,
+            format: "Replica Island collision tile set",
+        }
+    );
+    assert_names_file(&e, "tiles/collision.bin");
+    assert_eq!(
+        e.to_string(),
+        "tiles/collision.bin: byte 0: `signature` is 53, expected 52: not a Replica Island \
+         collision tile set file"
+    );
+}
+
+#[test]
+fn tile_set_empty_file_is_truncated_in_the_signature() {
+    let e = set_err(&[]);
+    assert_eq!(e.location, Location::Byte(0));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::Truncated {
+            field: "signature",
+            needed: 1
+        }
+    );
+    assert_names_file(&e, "tiles/collision.bin");
+}
+
+#[test]
+fn tile_set_truncated_in_header_names_tile_count_at_byte_1() {
+    let e = set_err(&[52]);
+    assert_eq!(e.location, Location::Byte(1));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::Truncated {
+            field: "tileCount",
+            needed: 1
+        }
+    );
+    assert_names_file(&e, "tiles/collision.bin");
+}
+
+#[test]
+fn tile_set_truncated_before_a_tile_names_tile_index() {
+    // Claims 2 tiles, holds 1.
+    let mut data = tile_set_bytes(&[(1, &SQUARE)]);
+    data[1] = 2;
+    let e = set_err(&data);
+    assert_eq!(e.location, Location::Byte(data.len() as u64));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::Truncated {
+            field: "tileIndex",
+            needed: 1
+        }
+    );
+}
+
+#[test]
+fn tile_set_truncated_mid_segment_names_the_failing_field_and_its_offset() {
+    // Header (2) + tile header (2) + startX, startY, endX, endY (16) + 2 bytes of normalX.
+    let data = tile_set_bytes(&[(1, &[TOP])]);
+    let cut = &data[..2 + 2 + 16 + 2];
+    let e = set_err(cut);
+    assert_eq!(e.location, Location::Byte(20));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::Truncated {
+            field: "normalX",
+            needed: 2
+        }
+    );
+    assert_names_file(&e, "tiles/collision.bin");
+    assert!(e.to_string().contains("`normalX`"), "{e}");
+
+    // Cut on a field boundary inside the second segment: the next field is named.
+    let data = tile_set_bytes(&[(1, &SQUARE)]);
+    let e = set_err(&data[..2 + 2 + 24 + 4]);
+    assert_eq!(e.location, Location::Byte(32));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::Truncated {
+            field: "startY",
+            needed: 4
+        }
+    );
+}
+
+#[test]
+fn tile_set_duplicate_tile_id_is_reported_at_the_second_tile() {
+    let data = tile_set_bytes(&[(7, &SQUARE), (3, &[TOP]), (7, &[TOP])]);
+    let second = 2 + (2 + 4 * 24) + (2 + 24);
+    let e = set_err(&data);
+    assert_eq!(e.location, Location::Byte(second as u64));
+    assert_eq!(e.kind, LoadErrorKind::DuplicateTile(7));
+    assert_names_file(&e, "tiles/collision.bin");
+    assert!(e.to_string().contains("tile 7 is defined twice"), "{e}");
+}
+
+#[test]
+fn tile_set_nan_coordinate_names_the_tile_id() {
+    let mut bad = RIGHT;
+    bad[1] = f32::NAN;
+    let data = tile_set_bytes(&[(1, &SQUARE), (9, &[TOP, bad])]);
+    let tile_at = 2 + 2 + 4 * 24;
+    let e = set_err(&data);
+    assert_eq!(e.location, Location::Byte(tile_at as u64));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::TileSet(TileSetError::InvalidTile {
+            id: TileId(9),
+            source: ShapeError::NonFinite { segment: 1 },
+        })
+    );
+    assert_names_file(&e, "tiles/collision.bin");
+    assert!(e.to_string().contains("tile 9"), "{e}");
+}
+
+#[test]
+fn tile_set_infinite_normal_is_refused_as_non_finite() {
+    let mut bad = TOP;
+    bad[5] = f32::INFINITY;
+    let e = set_err(&tile_set_bytes(&[(4, &[bad])]));
+    assert_eq!(e.location, Location::Byte(2));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::TileSet(TileSetError::InvalidTile {
+            id: TileId(4),
+            source: ShapeError::NonFinite { segment: 0 },
+        })
+    );
+}
+
+#[test]
+fn tile_set_zero_length_segment_names_tile_and_segment() {
+    let point: Seg = [5.0, 5.0, 5.0, 5.0, 0.0, 1.0];
+    let e = set_err(&tile_set_bytes(&[(12, &[TOP, RIGHT, point])]));
+    assert_eq!(e.location, Location::Byte(2));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::TileSet(TileSetError::InvalidTile {
+            id: TileId(12),
+            source: ShapeError::ZeroLength { segment: 2 },
+        })
+    );
+    assert_names_file(&e, "tiles/collision.bin");
+    assert!(e.to_string().contains("tile 12"), "{e}");
+}
+
+#[test]
+fn tile_set_zero_normal_is_refused() {
+    let flat: Seg = [0.0, 32.0, 32.0, 32.0, 0.0, 0.0];
+    let e = set_err(&tile_set_bytes(&[(5, &[flat])]));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::TileSet(TileSetError::InvalidTile {
+            id: TileId(5),
+            source: ShapeError::ZeroNormal { segment: 0 },
+        })
+    );
+}
+
+#[test]
+fn tile_set_segment_outside_the_32_pixel_tile_is_refused() {
+    let long: Seg = [0.0, 32.0, 64.0, 32.0, 0.0, 1.0];
+    let e = set_err(&tile_set_bytes(&[(6, &[long])]));
+    assert_eq!(e.location, Location::Byte(2));
+    assert!(
+        matches!(
+            e.kind,
+            LoadErrorKind::TileSet(TileSetError::InvalidTile {
+                id: TileId(6),
+                source: ShapeError::OutsideTile { segment: 0, .. },
+            })
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn tile_set_trailing_bytes_are_reported_with_offset_and_count() {
+    let mut data = tile_set_bytes(&[(1, &SQUARE)]);
+    let end = data.len() as u64;
+    data.extend_from_slice(&[0, 0, 0]);
+    let e = set_err(&data);
+    assert_eq!(e.location, Location::Byte(end));
+    assert_eq!(e.kind, LoadErrorKind::TrailingBytes(3));
+    assert_names_file(&e, "tiles/collision.bin");
+}
+
+#[test]
+fn tile_set_missing_file_is_an_io_error_naming_it() {
+    let path = "/nonexistent-tileslide-dir/collision.bin";
+    let e = replica::load_tile_set(path).unwrap_err();
+    assert_eq!(e.location, Location::File);
+    assert!(matches!(e.kind, LoadErrorKind::Io(_)), "{e}");
+    assert!(e.to_string().starts_with(path), "{e}");
+}
+
+// ---------------------------------------------------------------------------------------
+// Level.
+
+#[test]
+fn level_hand_made_file_flips_rows_so_row_0_is_the_bottom() {
+    // 3 × 2 cells, file rows top first: the top row holds a square at column 0.
+    let data = level_bytes(&[layer_bytes(1, 3, 2, &[1, -1, -1, -1, -1, 1])]);
+    let map = replica::parse_level(&data, "l.bin", square_set()).unwrap();
+    assert_eq!((map.width(), map.height()), (3, 2));
+    assert_eq!(map.tile(Cell::new(0, 1)), Some(TileId(1)));
+    assert_eq!(map.tile(Cell::new(2, 0)), Some(TileId(1)));
+    assert_eq!(map.tile(Cell::new(0, 0)), None);
+    assert_eq!(map.tile(Cell::new(2, 1)), None);
+}
+
+#[test]
+fn level_negative_and_unknown_tile_ids_are_empty_cells() {
+    // -1 and -128 are empty; 2, 13 and 127 are not in the set.
+    let data = level_bytes(&[layer_bytes(1, 6, 1, &[-1, -128, 2, 13, 127, 1])]);
+    let map = replica::parse_level(&data, "l.bin", square_set()).unwrap();
+    let tiles: Vec<_> = (0..6).map(|c| map.tile(Cell::new(c, 0))).collect();
+    assert_eq!(tiles, [None, None, None, None, None, Some(TileId(1))]);
+    assert_eq!(map.placed_segment_count(), 4);
+}
+
+#[test]
+fn level_layers_after_the_collision_layer_are_not_read() {
+    // A second layer that is pure garbage (bad map signature, cut short) does not matter.
+    let mut data = level_bytes(&[layer_bytes(1, 1, 1, &[1]), vec![2, 0, 0, 0]]);
+    data[1] = 2;
+    let map = replica::parse_level(&data, "l.bin", square_set()).unwrap();
+    assert_eq!(map.tile(Cell::new(0, 0)), Some(TileId(1)));
+}
+
+#[test]
+fn level_layers_before_the_collision_layer_are_skipped() {
+    let data = level_bytes(&[
+        layer_bytes(0, 4, 4, &[5; 16]),
+        layer_bytes(1, 2, 1, &[-1, 1]),
+    ]);
+    let map = replica::parse_level(&data, "l.bin", square_set()).unwrap();
+    assert_eq!((map.width(), map.height()), (2, 1));
+    assert_eq!(map.tile(Cell::new(1, 0)), Some(TileId(1)));
+}
+
+#[test]
+fn level_wrong_signature_is_reported_at_byte_0() {
+    let mut data = level_bytes(&[layer_bytes(1, 1, 1, &[1])]);
+    data[0] = 95;
+    let e = level_err(&data);
+    assert_eq!(e.location, Location::Byte(0));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::BadSignature {
+            field: "signature",
+            expected: 96,
+            found: 95,
+            format: "Replica Island level",
+        }
+    );
+    assert_names_file(&e, "levels/level_9_9.bin");
+}
+
+#[test]
+fn level_collision_tile_set_given_as_level_is_a_bad_signature() {
+    let e = level_err(&tile_set_bytes(&[(1, &SQUARE)]));
+    assert_eq!(e.location, Location::Byte(0));
+    assert!(
+        matches!(
+            e.kind,
+            LoadErrorKind::BadSignature {
+                found: 52,
+                expected: 96,
+                ..
+            }
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn level_negative_layer_count_is_reported_at_byte_1() {
+    let e = level_err(&[96, (-3i8) as u8, 0]);
+    assert_eq!(e.location, Location::Byte(1));
+    assert!(
+        matches!(
+            &e.kind,
+            LoadErrorKind::BadSize {
+                field: "layerCount",
+                value: -3,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert_names_file(&e, "levels/level_9_9.bin");
+}
+
+#[test]
+fn level_truncated_header_names_the_field() {
+    let e = level_err(&[96, 1]);
+    assert_eq!(e.location, Location::Byte(2));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::Truncated {
+            field: "backgroundIndex",
+            needed: 1
+        }
+    );
+    // Cut inside the first layer's scroll speed.
+    let data = level_bytes(&[layer_bytes(1, 1, 1, &[1])]);
+    let e = level_err(&data[..FIRST_LAYER + 2 + 1]);
+    assert_eq!(e.location, Location::Byte((FIRST_LAYER + 2) as u64));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::Truncated {
+            field: "scrollSpeed",
+            needed: 3
+        }
+    );
+    assert_names_file(&e, "levels/level_9_9.bin");
+}
+
+#[test]
+fn level_bad_tile_map_signature_is_reported_at_its_offset() {
+    let mut data = level_bytes(&[layer_bytes(1, 1, 1, &[1])]);
+    data[MAP_SIGNATURE_AT as usize] = 41;
+    let e = level_err(&data);
+    assert_eq!(e.location, Location::Byte(MAP_SIGNATURE_AT));
+    assert_eq!(
+        e.kind,
+        LoadErrorKind::BadSignature {
+            field: "tile map signature",
+            expected: 42,
+            found: 41,
+            format: "Replica Island level",
+        }
+    );
+    assert_names_file(&e, "levels/level_9_9.bin");
+}
+
+#[test]
+fn level_bad_tile_map_signature_of_a_later_layer_is_at_that_layers_offset() {
+    let first = layer_bytes(0, 2, 2, &[0; 4]);
+    let second_at = FIRST_LAYER + first.len();
+    let mut data = level_bytes(&[first, layer_bytes(1, 1, 1, &[1])]);
+    data[second_at + 6] = 0;
+    let e = level_err(&data);
+    assert_eq!(e.location, Location::Byte((second_at + 6) as u64));
+    assert!(
+        matches!(e.kind, LoadErrorKind::BadSignature { found: 0, .. }),
+        "{e}"
+    );
+}
+
+#[test]
+fn level_zero_width_is_reported_at_the_width_field() {
+    let e = level_err(&level_bytes(&[layer_bytes(1, 0, 5, &[])]));
+    assert_eq!(e.location, Location::Byte(WIDTH_AT));
+    assert!(
+        matches!(
+            &e.kind,
+            LoadErrorKind::BadSize {
+                field: "width",
+                value: 0,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert_names_file(&e, "levels/level_9_9.bin");
+}
+
+#[test]
+fn level_negative_height_is_reported_at_the_height_field() {
+    let e = level_err(&level_bytes(&[layer_bytes(1, 5, -5, &[])]));
+    assert_eq!(e.location, Location::Byte(HEIGHT_AT));
+    assert!(
+        matches!(
+            &e.kind,
+            LoadErrorKind::BadSize {
+                field: "height",
+                value: -5,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    let e = level_err(&level_bytes(&[layer_bytes(1, 5, i32::MIN, &[])]));
+    assert_eq!(e.location, Location::Byte(HEIGHT_AT));
+    assert!(
+        matches!(
+            &e.kind,
+            LoadErrorKind::BadSize {
+                field: "height",
+                ..
+            }
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn level_absurd_size_field_is_refused_before_allocating() {
+    // 2³¹ − 1 columns: the loader must compare against the bytes present (here 4) and say
+    // so, not try to allocate two gigabytes.
+    let data = level_bytes(&[layer_bytes(1, i32::MAX, 1, &[1, 1, 1, 1])]);
+    let e = level_err(&data);
+    assert_eq!(e.location, Location::Byte(WIDTH_AT));
+    let LoadErrorKind::BadSize {
+        field,
+        value,
+        reason,
+    } = &e.kind
+    else {
+        panic!("{e}")
+    };
+    assert_eq!(*field, "width × height");
+    assert_eq!(*value, i64::from(i32::MAX));
+    assert!(reason.contains("2147483647 bytes"), "{reason}");
+    assert!(reason.contains("only 4 remain"), "{reason}");
+    assert_names_file(&e, "levels/level_9_9.bin");
+
+    // Both fields at 2³¹ − 1: the product does not overflow either.
+    let e = level_err(&level_bytes(&[layer_bytes(1, i32::MAX, i32::MAX, &[])]));
+    let expected = i64::from(i32::MAX) * i64::from(i32::MAX);
+    assert!(
+        matches!(&e.kind, LoadErrorKind::BadSize { value, .. } if *value == expected),
+        "{e}"
+    );
+    assert!(e.to_string().contains("only 0 remain"), "{e}");
+}
+
+#[test]
+fn level_absurd_size_in_a_skipped_layer_is_refused_too() {
+    let data = level_bytes(&[layer_bytes(2, i32::MAX, 2, &[0; 8])]);
+    let e = level_err(&data);
+    assert_eq!(e.location, Location::Byte(WIDTH_AT));
+    assert!(e.to_string().contains("only 8 remain"), "{e}");
+}
+
+#[test]
+fn level_truncated_collision_layer_says_bytes_needed_and_remaining() {
+    // 4 × 4 cells claimed, 10 present.
+    let e = level_err(&level_bytes(&[layer_bytes(1, 4, 4, &[1; 10])]));
+    assert_eq!(e.location, Location::Byte(WIDTH_AT));
+    let LoadErrorKind::BadSize {
+        field,
+        value,
+        reason,
+    } = &e.kind
+    else {
+        panic!("{e}")
+    };
+    assert_eq!((*field, *value), ("width × height", 16));
+    assert!(
+        reason.contains("need 16 bytes but only 10 remain"),
+        "{reason}"
+    );
+    assert_names_file(&e, "levels/level_9_9.bin");
+    // Exactly one byte short is still refused; the exact size loads.
+    let e = level_err(&level_bytes(&[layer_bytes(1, 4, 4, &[1; 15])]));
+    assert!(e.to_string().contains("only 15 remain"), "{e}");
+    assert!(
+        replica::parse_level(
+            &level_bytes(&[layer_bytes(1, 4, 4, &[1; 16])]),
+            "l",
+            square_set()
+        )
+        .is_ok()
+    );
+}
+
+#[test]
+fn level_truncated_before_cells_at_data_end_is_the_same_error() {
+    let data = level_bytes(&[layer_bytes(1, 2, 2, &[])]);
+    let e = level_err(&data);
+    assert_eq!(e.location, Location::Byte(WIDTH_AT));
+    assert!(e.to_string().contains("only 0 remain"), "{e}");
+    assert_eq!(data.len() as u64, CELLS_AT);
+}
+
+#[test]
+fn level_without_collision_layer_is_reported_for_the_whole_file() {
+    let e = level_err(&level_bytes(&[
+        layer_bytes(0, 2, 2, &[1; 4]),
+        layer_bytes(3, 1, 1, &[0]),
+    ]));
+    assert_eq!(e.location, Location::File);
+    assert_eq!(e.kind, LoadErrorKind::NoCollisionLayer);
+    assert_eq!(
+        e.to_string(),
+        "levels/level_9_9.bin: the level has no collision layer (type 1)"
+    );
+    // No layers at all.
+    let e = level_err(&[96, 0, 0]);
+    assert_eq!(e.kind, LoadErrorKind::NoCollisionLayer);
+}
+
+#[test]
+fn level_collision_layer_larger_than_the_map_limit_is_refused() {
+    // 8193 × 8193 > 2²⁶ cells, with the bytes actually present (64 MiB of -1).
+    let (w, h) = (8193, 8193);
+    let mut data = level_bytes(&[layer_bytes(1, w, h, &[])]);
+    data.resize(data.len() + (w * h) as usize, 0xff);
+    let e = level_err(&data);
+    assert_eq!(e.location, Location::Byte(WIDTH_AT));
+    assert!(
+        matches!(
+            &e.kind,
+            LoadErrorKind::BadSize {
+                field: "width × height",
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert_names_file(&e, "levels/level_9_9.bin");
+}
+
+#[test]
+fn level_missing_file_is_an_io_error_naming_it() {
+    let path = "/nonexistent-tileslide-dir/level_1_1_island.bin";
+    let e = replica::load_level(path, square_set()).unwrap_err();
+    assert_eq!(e.location, Location::File);
+    assert!(matches!(e.kind, LoadErrorKind::Io(_)), "{e}");
+    assert!(e.to_string().starts_with(path), "{e}");
+}
+
+#[test]
+fn level_loaded_from_disk_names_the_path_it_was_given() {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("loader_replica_errors");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("bad_level.bin");
+    std::fs::write(&path, [96u8, 1, 0, 1, 0]).unwrap();
+    let e = replica::load_level(&path, square_set()).unwrap_err();
+    assert_eq!(e.path, path);
+    assert_eq!(e.location, Location::Byte(5));
+    assert!(
+        e.to_string().starts_with(&path.display().to_string()),
+        "{e}"
+    );
+}
+
+#[test]
+fn loaded_map_matches_one_built_directly() {
+    // The loader is a thin layer: same tiles, same active segments as TileMap::from_tiles.
+    let data = level_bytes(&[layer_bytes(1, 3, 2, &[1, 1, -1, -1, 1, 1])]);
+    let map = replica::parse_level(&data, "l.bin", square_set()).unwrap();
+    let t = Some(TileId(1));
+    let direct =
+        TileMap::from_tiles(square_set(), 3, 2, Vec2::ZERO, &[None, t, t, t, t, None]).unwrap();
+    assert_eq!(map.active_segment_count(), direct.active_segment_count());
+    for r in 0..2 {
+        for c in 0..3 {
+            let cell = Cell::new(c, r);
+            assert_eq!(map.tile(cell), direct.tile(cell));
+            assert!(map.active_segments(cell).eq(direct.active_segments(cell)));
+        }
+    }
+}
