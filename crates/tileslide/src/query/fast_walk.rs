@@ -130,7 +130,9 @@ pub(crate) fn fast_walk(
                     kind,
                 };
             }
-            if kind & general_mask != 0 && test_cell(data, test, index, t_exit, best_t, best) {
+            if kind & general_mask != 0
+                && test_cell(data, test, index, t_exit - tol_t, best_t, best)
+            {
                 return FastWalk::Done;
             }
         }
@@ -158,7 +160,9 @@ pub(crate) fn fast_walk(
 }
 
 /// Tests the segments of the cell at `index`, recording a nearer hit in `best_t` and `best`;
-/// true when the nearest hit lies before the cell's exit (the walk is over). Out of line so
+/// true when the nearest hit lies before `t_exit` (the caller passes the cell's exit less
+/// the touch tolerance: a hit within rounding of the exit may be beaten by one a hair
+/// nearer in the next cell), so the walk is over. Out of line so
 /// that the walk's loop stays small.
 #[inline(never)]
 fn test_cell(

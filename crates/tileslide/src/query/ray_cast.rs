@@ -87,9 +87,8 @@ impl TileMap {
                 // segment data is read. Rounding at the face's very end can disagree with
                 // the walk's step; then the general walk decides.
                 let cell = Cell::new(col, row);
-                let (a, e) = face_segment(self.cell_corner(cell), self.cell_size(), face);
-                match solve(p0, delta, a, e) {
-                    Some((t, _)) if t < best_t => {
+                match self.face_t(p0, delta, cell, face) {
+                    Some(t) if t < best_t => {
                         best_t = t;
                         best = Some(Found::Face(cell, face_index(kind, face), face));
                         general = None;
@@ -161,14 +160,26 @@ impl TileMap {
         best_t: &mut f32,
     ) -> Option<Found> {
         let (starts, hot) = (self.store.starts(), self.store.hot());
+        let tol_t = ray.tolerance_t();
         let mut best = None;
         walk(ray, limit, |index, t_exit| {
             if let Some(i) = test.nearest(cell_segments(starts, hot, index), best_t) {
                 best = Some(Found::Tile(self.cell_of(index), index, i));
             }
-            *best_t <= t_exit
+            // Stop once the nearest hit is clearly before the cell's exit: a hit within
+            // rounding of the exit may be beaten by one a hair nearer in the next cell.
+            *best_t + tol_t <= t_exit
         });
         best
+    }
+
+    /// Where the ray from `p0` by `delta` meets whole-edge face `face` of `cell`, computed
+    /// from the cell's geometry alone, exactly as the store keeps the face (see
+    /// `face_segment`); `None` when rounding at the face's very end makes it a miss.
+    #[inline(always)]
+    fn face_t(&self, p0: Vec2, delta: Vec2, cell: Cell, face: u8) -> Option<f32> {
+        let (a, e) = face_segment(self.cell_corner(cell), self.cell_size(), face);
+        solve(p0, delta, a, e).map(|(t, _)| t)
     }
 
     #[inline(always)]

@@ -39,6 +39,19 @@ pub(crate) struct GridRay {
     pub height: u32,
 }
 
+impl GridRay {
+    /// [`TOUCH_TOLERANCE`] as a ray fraction, along the faster-moving axis (0 for a
+    /// zero-length ray).
+    pub fn tolerance_t(&self) -> f32 {
+        let longest = self.delta.x.abs().max(self.delta.y.abs());
+        if longest > 0.0 {
+            TOUCH_TOLERANCE / longest
+        } else {
+            0.0
+        }
+    }
+}
+
 /// Calls `visit(cell_index, t_exit)` for every cell the ray touches up to `t_limit`
 /// (within [`TOUCH_TOLERANCE`]), roughly in order of entry; stops when `visit` returns
 /// `true`. `t_exit` is the ray fraction at which the walk leaves the cell, or `-∞` for an
@@ -51,8 +64,7 @@ pub(crate) fn walk(ray: &GridRay, t_limit: f32, mut visit: impl FnMut(usize, f32
         return;
     }
     let size = Vec2::new(ray.width as f32, ray.height as f32);
-    // The tolerance as a ray fraction, along the faster-moving axis.
-    let tol_t = TOUCH_TOLERANCE / d.x.abs().max(d.y.abs());
+    let tol_t = ray.tolerance_t();
     // Clip [0, t_limit] (widened by the tolerance) to the map rectangle, also widened, so
     // that a ray touching the map's border is not clipped away by rounding (slab test).
     let (mut t_lo, mut t_hi) = (0.0f32, t_limit + tol_t);
