@@ -251,6 +251,15 @@ fn non_utf8_file_is_an_error_at_the_first_bad_byte() {
         "{text}"
     );
     assert!(text.contains("UTF-8"), "{text}");
+    assert_eq!(e.kind, LoadErrorKind::NotText);
+}
+
+#[test]
+fn leading_byte_order_mark_is_ignored() {
+    let path = scratch("bom.txt", "\u{feff}#.\n.#\n".as_bytes());
+    let map = ascii::load(&path, 1.0).unwrap();
+    assert_eq!((map.width(), map.height()), (2, 2));
+    assert_eq!(map.tile(tileslide::Cell::new(0, 0)), Some(ascii::SOLID));
 }
 
 #[test]

@@ -8,7 +8,8 @@
 //! | `\` | solid triangle (0,0)-(0,1)-(1,1): a ramp falling to the right, surface facing up-right |
 //! | `=` | one-way platform: one segment along the top edge, normal pointing up (0,−1) |
 //!
-//! Lines starting with `;` are comments and are not rows. Lines may differ in length: the
+//! Lines starting with `;` are comments and are not rows. A leading UTF-8 byte-order mark
+//! is ignored. Lines may differ in length: the
 //! map is as wide as the longest, shorter lines are padded with empty cells. Blank lines
 //! after the last row are ignored; a blank line between rows is a row of empty cells. The
 //! map's origin is (0, 0).
@@ -97,7 +98,7 @@ pub fn load(path: impl AsRef<Path>, cell: f32) -> Result<TileMap, LoadError> {
         LoadError::new(
             path,
             Location::Byte(e.valid_up_to() as u64),
-            LoadErrorKind::Parameter("the file is not valid UTF-8 text".into()),
+            LoadErrorKind::NotText,
         )
     })?;
     parse(text, path, cell)
@@ -113,6 +114,8 @@ pub fn parse(text: &str, path: impl AsRef<Path>, cell: f32) -> Result<TileMap, L
             LoadErrorKind::Parameter(format!("cell size {cell} is not positive and finite")),
         ));
     }
+    // A byte-order mark (as Windows editors write) is not part of the map.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut rows: Vec<Vec<Option<TileId>>> = Vec::new();
     for (line_index, line) in text.split('\n').enumerate() {
         let line = line.strip_suffix('\r').unwrap_or(line);

@@ -70,6 +70,9 @@ pub enum LoadErrorKind {
     /// A tile id appears twice in a tile set.
     #[error("tile {0} is defined twice")]
     DuplicateTile(u32),
+    /// A text file that is not valid UTF-8 (the location is the first bad byte).
+    #[error("the file is not valid UTF-8 text")]
+    NotText,
     /// A character that is not a tile.
     #[error("unknown tile character {0:?} (expected one of `.`, space, `#`, `/`, `\\`, `=`)")]
     UnknownCharacter(char),

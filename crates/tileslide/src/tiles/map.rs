@@ -64,6 +64,9 @@ pub enum MapError {
         /// Length of the list given.
         got: usize,
     },
+    /// The map would hold more active segments than it can index (about 2³²).
+    #[error("the map would hold more active segments than it can index")]
+    TooManySegments,
     /// A temporary segment was refused.
     #[error(transparent)]
     Temporary(#[from] TemporaryError),
@@ -118,6 +121,8 @@ pub struct TileMap {
     /// Tile id per cell, row-major; `EMPTY` for none.
     tiles: Vec<u32>,
     placed: usize,
+    /// Most active segments one cell can get (see `new`).
+    max_cell_segments: usize,
     pub(crate) store: SegmentStore,
     pub(crate) temporaries: Vec<TemporarySegment>,
     scratch: Vec<HotSegment>,
@@ -138,18 +143,16 @@ impl TileMap {
             return Err(MapError::EmptySize { width, height });
         }
         let cells = width as u64 * height as u64;
-        // Each cell's block holds at most five times the largest shape (its own segments
-        // split by neighbours' covers), rounded up to a power of two, twice over for blocks
-        // freed by edits: all of it must be indexable by u32.
+        if cells > MAX_CELLS {
+            return Err(MapError::TooLarge { width, height });
+        }
+        // A cell holds at most five times the largest shape's segments: its own, each split
+        // by the covers of its four neighbours.
         let largest = tile_set
             .iter()
             .map(|(_, s)| s.segments().len())
             .max()
-            .unwrap_or(0)
-            .max(1) as u64;
-        if cells > MAX_CELLS || cells * (5 * largest).next_power_of_two() * 2 > u32::MAX as u64 {
-            return Err(MapError::TooLarge { width, height });
-        }
+            .unwrap_or(0);
         if !origin.is_finite() {
             return Err(MapError::NonFiniteOrigin {
                 x: origin.x,
@@ -165,6 +168,7 @@ impl TileMap {
             cell_size,
             inv_cell_size: cell_size.recip(),
             tiles: vec![EMPTY; cells as usize],
+            max_cell_segments: 5 * largest,
             placed: 0,
             store: SegmentStore::new(cells as usize),
             temporaries: Vec::new(),
@@ -195,14 +199,15 @@ impl TileMap {
                 *slot = id.0;
             }
         }
-        map.rebuild();
+        map.rebuild()?;
         Ok(map)
     }
 
     /// Recomputes every cell's active segments and links from the tiles.
-    fn rebuild(&mut self) {
+    fn rebuild(&mut self) -> Result<(), MapError> {
         for row in 0..self.height {
             for col in 0..self.width {
+                self.check_room(1)?;
                 self.update_cell(col, row);
             }
         }
@@ -223,6 +228,16 @@ impl TileMap {
             .iter()
             .map(|&t| self.shape_of_raw(t).map_or(0, |s| s.segments().len()))
             .sum();
+        Ok(())
+    }
+
+    /// Refuses an update of `cells` cells that could outgrow the pool's u32 indices
+    /// (checked before anything changes, so a refused edit leaves the map as it was).
+    fn check_room(&self, cells: usize) -> Result<(), MapError> {
+        if self.store.room() < cells * SegmentStore::capacity_for(self.max_cell_segments) {
+            return Err(MapError::TooManySegments);
+        }
+        Ok(())
     }
 
     /// Puts tile `id` (or nothing) in `cell`, updating seam culling for the cell and its four
@@ -240,6 +255,7 @@ impl TileMap {
         if old == raw {
             return Ok(());
         }
+        self.check_room(5)?;
         let count = |map: &Self, t: u32| map.shape_of_raw(t).map_or(0, |s| s.segments().len());
         self.placed = self.placed - count(self, old) + count(self, raw);
         self.tiles[index] = raw;

@@ -111,6 +111,9 @@ pub enum ShapeError {
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct TileShape {
     segments: Vec<TileSegment>,
+    /// For each kept segment, its index in the input (duplicates are dropped), so errors
+    /// name the segment the author wrote.
+    input_index: Vec<usize>,
     closed: bool,
 }
 
@@ -140,8 +143,9 @@ impl TileShape {
             });
         }
         let edges = polygon_edges(points, first)?;
-        for (a, b, normal) in edges {
+        for (i, (a, b, normal)) in edges.into_iter().enumerate() {
             self.segments.push(TileSegment::new(a, b, normal, flags));
+            self.input_index.push(first + i);
         }
         self.closed = outline_is_closed(&self.segments);
         Ok(self)
@@ -153,6 +157,7 @@ impl TileShape {
         segments: impl IntoIterator<Item = TileSegment>,
     ) -> Result<Self, ShapeError> {
         let mut out: Vec<TileSegment> = Vec::new();
+        let mut input_index = Vec::new();
         for (i, mut s) in segments.into_iter().enumerate() {
             if !(s.a.is_finite() && s.b.is_finite() && s.normal.is_finite()) {
                 return Err(ShapeError::NonFinite { segment: i });
@@ -172,11 +177,13 @@ impl TileShape {
                     });
                 }
                 out.push(s);
+                input_index.push(i);
             }
         }
         let closed = outline_is_closed(&out);
         Ok(Self {
             segments: out,
+            input_index,
             closed,
         })
     }
@@ -227,7 +234,7 @@ impl TileShape {
             for p in [s.a, s.b] {
                 if p.cmplt(lo).any() || p.cmpgt(hi).any() {
                     return Err(ShapeError::OutsideTile {
-                        segment: i,
+                        segment: self.input_index.get(i).copied().unwrap_or(i),
                         w: size.x,
                         h: size.y,
                     });

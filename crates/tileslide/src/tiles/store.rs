@@ -247,6 +247,16 @@ impl SegmentStore {
         &mut self.links[range]
     }
 
+    /// How many more pool entries fit before indices would reach [`NO_SEGMENTS`].
+    pub fn room(&self) -> usize {
+        (NO_SEGMENTS as usize).saturating_sub(self.hot.len())
+    }
+
+    /// Pool entries a block of `len` segments takes.
+    pub fn capacity_for(len: usize) -> usize {
+        capacity_of(len.max(1))
+    }
+
     /// Total number of active segments.
     pub fn active_count(&self) -> usize {
         self.active
