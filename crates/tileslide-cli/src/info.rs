@@ -3,6 +3,7 @@
 use anyhow::Result;
 use serde_json::json;
 
+use crate::json::number;
 use crate::map_file::{self, MapArgs};
 
 pub fn run(args: &MapArgs, as_json: bool) -> Result<()> {
@@ -23,8 +24,8 @@ pub fn run(args: &MapArgs, as_json: bool) -> Result<()> {
             "format": format.name(),
             "width": map.width(),
             "height": map.height(),
-            "cell_size": [size.x, size.y],
-            "origin": [origin.x, origin.y],
+            "cell_size": [number(size.x), number(size.y)],
+            "origin": [number(origin.x), number(origin.y)],
             "tiles_used": counts.len(),
             "occupied_cells": occupied,
             "tile_counts": tile_counts,
@@ -52,9 +53,6 @@ pub fn run(args: &MapArgs, as_json: bool) -> Result<()> {
         map.width() as u64 * map.height() as u64,
         list.join(" ")
     );
-    println!(
-        "segments:  {placed} placed, {active} active after seam culling ({} hidden or merged away)",
-        placed as i64 - active as i64
-    );
+    println!("segments:  {placed} placed, {active} active after seam culling");
     Ok(())
 }

@@ -7,6 +7,7 @@ use clap::{Parser, Subcommand};
 
 mod bench;
 mod info;
+mod json;
 mod map_file;
 mod raycast;
 

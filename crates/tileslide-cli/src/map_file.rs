@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
 use clap::Args;
 use tileslide::TileMap;
 use tileslide::io::{ascii, replica};
@@ -74,8 +74,7 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
                 );
             };
             let set = replica::load_tile_set(tileset)?;
-            replica::load_level(&args.map, Arc::new(set))
-                .with_context(|| format!("loading level {}", args.map.display()))?
+            replica::load_level(&args.map, Arc::new(set))?
         }
     };
     Ok((map, format))

@@ -6,6 +6,7 @@ use anyhow::{Context, Result, anyhow, bail};
 use serde_json::json;
 use tileslide::{Ray, RayFilter, RayHit, Vec2};
 
+use crate::json::number;
 use crate::map_file::{self, MapArgs};
 
 pub fn run(
@@ -51,8 +52,8 @@ fn hit_json(hit: Option<&RayHit>) -> serde_json::Value {
         None => json!({ "hit": false }),
         Some(h) => {
             let mut v = json!({
-                "hit": true, "t": h.t, "x": h.point.x, "y": h.point.y,
-                "nx": h.normal.x, "ny": h.normal.y,
+                "hit": true, "t": number(h.t), "x": number(h.point.x), "y": number(h.point.y),
+                "nx": number(h.normal.x), "ny": number(h.normal.y),
             });
             if let (Some(cell), Some(tile)) = (h.cell(), h.tile()) {
                 v["cell"] = json!([cell.col, cell.row]);

@@ -1,0 +1,256 @@
+//! The `tileslide` command line as a user runs it: outputs, JSON formats, and errors that
+//! name what and where.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+fn tileslide(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_tileslide"))
+        .args(args)
+        .output()
+        .expect("the tileslide binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn scratch(name: &str, contents: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("tileslide-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, contents).unwrap();
+    path
+}
+
+const ROOM: &str = "\
+; a room with a ramp and a one-way ledge
+########
+#......#
+#..=...#
+#...../#
+########
+";
+
+fn replica_dir() -> Option<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/replica-island");
+    if dir.is_dir() {
+        return Some(dir);
+    }
+    assert!(
+        std::env::var_os("CI").is_none(),
+        "CI is set but the Replica Island data is missing at {}",
+        dir.display()
+    );
+    eprintln!("skipping: no Replica Island data at {}", dir.display());
+    None
+}
+
+#[test]
+fn info_json_reports_size_tiles_and_segments() {
+    let map = scratch("info.txt", ROOM);
+    let o = tileslide(&["info", map.to_str().unwrap(), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["width"], 8);
+    assert_eq!(v["height"], 5);
+    assert_eq!(v["format"], "ascii");
+    assert_eq!(v["cell_size"], serde_json::json!([1.0, 1.0]));
+    // '#' × 22, '=' × 1, '/' × 1.
+    assert_eq!(v["tile_counts"]["1"], 22);
+    assert_eq!(v["tiles_used"], 3);
+    let (placed, active) = (
+        v["segments_placed"].as_u64().unwrap(),
+        v["segments_active"].as_u64().unwrap(),
+    );
+    assert_eq!(placed, 22 * 4 + 1 + 3);
+    assert!(active < placed, "seams are culled: {active} of {placed}");
+}
+
+#[test]
+fn info_text_names_the_segment_counts() {
+    let map = scratch("info_text.txt", ROOM);
+    let o = tileslide(&["info", map.to_str().unwrap()]);
+    assert!(o.status.success());
+    let out = stdout(&o);
+    assert!(out.contains("8 × 5 cells"), "{out}");
+    assert!(out.contains("active after seam culling"), "{out}");
+}
+
+#[test]
+fn raycast_json_prints_one_object_per_ray_in_input_order() {
+    let map = scratch("rays_map.txt", ROOM);
+    let rays = scratch(
+        "rays.csv",
+        "# x0,y0,x1,y1\n1.5,1.5,9.5,1.5\n3.5,3.5,3.5,0.5\n3.5,1.5,3.5,4.5\n\n6.75,1.5,6.75,4.5\n",
+    );
+    let o = tileslide(&[
+        "raycast",
+        map.to_str().unwrap(),
+        "--rays",
+        rays.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let lines: Vec<Value> = stdout(&o)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(lines.len(), 4);
+    // Right into the east wall.
+    assert_eq!(lines[0]["hit"], true);
+    assert_eq!(lines[0]["x"], 7.0);
+    assert_eq!(lines[0]["nx"], -1.0);
+    assert_eq!(lines[0]["cell"], serde_json::json!([7, 1]));
+    assert_eq!(lines[0]["tile"], 1);
+    // Up through the one-way ledge's back face: it reaches the ceiling.
+    assert_eq!(lines[1]["y"], 1.0);
+    // Down onto the ledge's top.
+    assert_eq!(lines[2]["y"], 2.0);
+    assert_eq!(lines[2]["tile"], 4);
+    // Down onto the ramp in (6, 3): its surface runs from (6, 4) to (7, 3).
+    assert_eq!(lines[3]["tile"], 2);
+    assert!((lines[3]["y"].as_f64().unwrap() - 3.25).abs() < 1e-6);
+    // The documented key order.
+    assert!(
+        stdout(&o).starts_with("{\"hit\":true,\"t\":"),
+        "{}",
+        stdout(&o)
+    );
+}
+
+#[test]
+fn raycast_both_sides_hits_the_ledge_from_below() {
+    let map = scratch("both.txt", ROOM);
+    let args = [
+        "raycast",
+        map.to_str().unwrap(),
+        "--from",
+        "3.5,3.5",
+        "--to",
+        "3.5,0.5",
+        "--json",
+    ];
+    let front: Value = serde_json::from_str(&stdout(&tileslide(&args))).unwrap();
+    let mut both_args = args.to_vec();
+    both_args.push("--both-sides");
+    let both: Value = serde_json::from_str(&stdout(&tileslide(&both_args))).unwrap();
+    assert_eq!(front["y"], 1.0);
+    assert_eq!(both["y"], 2.0);
+}
+
+#[test]
+fn a_miss_is_hit_false() {
+    let map = scratch("miss.txt", ROOM);
+    let o = tileslide(&[
+        "raycast",
+        map.to_str().unwrap(),
+        "--from",
+        "2.5,1.5",
+        "--to",
+        "2.6,1.5",
+        "--json",
+    ]);
+    assert_eq!(stdout(&o).trim(), "{\"hit\":false}");
+}
+
+#[test]
+fn bad_arguments_are_errors_naming_them() {
+    let map = scratch("args.txt", ROOM);
+    let m = map.to_str().unwrap();
+    let o = tileslide(&["raycast", m, "--from", "1.5", "--to", "2,2"]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("--from"), "{}", stderr(&o));
+    let o = tileslide(&["raycast", m, "--from", "1,NaN", "--to", "2,2"]);
+    assert!(stderr(&o).contains("not finite"), "{}", stderr(&o));
+    let o = tileslide(&["raycast", "map.png", "--from", "1,1", "--to", "2,2"]);
+    assert!(
+        stderr(&o).contains("map.png") && stderr(&o).contains("unknown map format"),
+        "{}",
+        stderr(&o)
+    );
+    let rays = scratch("bad.csv", "1,1,2,2\n1,1,x,2\n");
+    let o = tileslide(&["raycast", m, "--rays", rays.to_str().unwrap()]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("bad.csv:2:5"), "{}", stderr(&o));
+    let o = tileslide(&[
+        "raycast",
+        m,
+        "--rays",
+        rays.to_str().unwrap(),
+        "--from",
+        "1,1",
+        "--to",
+        "2,2",
+    ]);
+    assert!(
+        !o.status.success(),
+        "--rays and --from together are refused"
+    );
+}
+
+#[test]
+fn map_errors_name_file_and_line() {
+    let map = scratch("broken.txt", "###\n#?#\n");
+    let o = tileslide(&["info", map.to_str().unwrap()]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("broken.txt:2:2"), "{}", stderr(&o));
+}
+
+#[test]
+fn replica_level_needs_its_tile_set_and_casts_in_pixels() {
+    let Some(dir) = replica_dir() else { return };
+    let level = dir.join("level_1_1_island.bin");
+    let set = dir.join("collision.bin");
+    let o = tileslide(&["info", level.to_str().unwrap()]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("--tileset"), "{}", stderr(&o));
+    let o = tileslide(&[
+        "raycast",
+        level.to_str().unwrap(),
+        "--tileset",
+        set.to_str().unwrap(),
+        "--from",
+        "176,200",
+        "--to",
+        "176,0",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    // The floor of tile 1 in cell (5, 1): its top is y = 64 px, facing up (y up).
+    assert_eq!(v["y"], 64.0);
+    assert_eq!(v["ny"], 1.0);
+    assert_eq!(v["cell"], serde_json::json!([5, 1]));
+    assert_eq!(v["tile"], 1);
+}
+
+#[test]
+fn bench_rays_json_has_every_engine_and_the_fingerprint() {
+    let o = tileslide(&["bench", "rays", "--n", "2000", "--passes", "1", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["scene"], "dungeon256");
+    assert_eq!(v["fingerprint"], "a36c9fd56f2ba422");
+    assert_eq!(v["rays"], 2000);
+    let names: Vec<&str> = v["results"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["tileslide", "parry2d-voxels", "parry2d-polyline"]);
+    for r in v["results"].as_array().unwrap() {
+        assert!(r["mrays_per_s"].as_f64().unwrap() > 0.0);
+        assert!(r["hits"].as_u64().unwrap() > 1500);
+    }
+    assert_eq!(v["results"][0]["disagreements"], 0);
+    assert_eq!(v["results"][1]["disagreements"], 0);
+}
