@@ -345,6 +345,8 @@ enum Expected {
 }
 
 fn reference(text: &str) -> Expected {
+    // A leading byte-order mark is not part of the map.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut rows = Vec::new();
     for (i, line) in text.split('\n').enumerate() {
         let line = line.strip_suffix('\r').unwrap_or(line);

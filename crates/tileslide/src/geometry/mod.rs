@@ -11,5 +11,5 @@ mod segment;
 
 pub use aabb::Aabb;
 pub use circle::Circle;
-pub use ray::{Ray, RaySegmentHit, cast_ray_segment};
+pub use ray::{PARALLEL_SINE, Ray, RaySegmentHit, cast_ray_segment};
 pub use segment::Segment;

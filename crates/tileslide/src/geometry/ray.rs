@@ -63,7 +63,8 @@ pub struct RaySegmentHit {
 ///   of it, hits (`t = 1`, or `s` = 0 or 1);
 /// - a ray parallel to the segment never hits it, **including a collinear ray running along
 ///   it**: a surface is only ever met through its face. A ray running along a floor into a
-///   wall still hits the wall, whose end point it meets at an angle;
+///   wall still hits the wall, whose end point it meets at an angle. "Parallel" means within
+///   a sine of [`PARALLEL_SINE`] (1e-5), where the intersection is lost to rounding;
 /// - a zero-length ray or a zero-length segment never hits (the denominator is zero).
 ///
 /// ```
@@ -94,6 +95,14 @@ pub(crate) fn solve(origin: Vec2, delta: Vec2, a: Vec2, e: Vec2) -> Option<(f32,
     }
 }
 
+/// Below this sine of the angle between ray and segment, the two count as parallel.
+///
+/// At such grazing angles Cramer's rule is ill-conditioned: coordinates rounded to `f32`
+/// (a map origin of 0.1, say) turn a ray that runs exactly along a slope into one crossing
+/// it at a tiny angle, and `t` then comes out anywhere. Treating the two as parallel keeps
+/// the rule "a ray running along a surface does not hit it" true in floating point.
+pub const PARALLEL_SINE: f32 = 1e-5;
+
 /// Cramer's rule without branches: returns whether the ray hits and the numerators of `t`
 /// and `s` over a positive denominator (`t = tn / den`). Branch-free because which way the
 /// test goes is a coin toss for the branch predictor on random rays, and a misprediction
@@ -105,8 +114,11 @@ pub(crate) fn solve_parts(origin: Vec2, delta: Vec2, a: Vec2, e: Vec2) -> (bool,
     // Make the denominator positive; negating is exact, so t and s are unchanged.
     let sign = 1.0f32.copysign(den);
     let (den, tn, sn) = (den * sign, w.perp_dot(e) * sign, w.perp_dot(delta) * sign);
-    // Parallel, collinear or degenerate (den = 0), or NaN: every comparison is false.
-    let inside = (den > 0.0) & (tn >= 0.0) & (tn <= den) & (sn >= 0.0) & (sn <= den);
+    // `den = |delta| |e| sin θ`: parallel within `PARALLEL_SINE`, or degenerate (zero
+    // length), is no hit; NaN fails every comparison.
+    let crossing =
+        den * den > PARALLEL_SINE * PARALLEL_SINE * delta.length_squared() * e.length_squared();
+    let inside = crossing & (tn >= 0.0) & (tn <= den) & (sn >= 0.0) & (sn <= den);
     (inside, tn, sn, den)
 }
 
@@ -165,6 +177,26 @@ mod tests {
         assert!(cast_ray_segment(&Ray::between(v(-1.0, 1.0), v(3.0, 1.0)), &seg).is_none());
         assert!(cast_ray_segment(&Ray::between(v(-1.0, 0.0), v(3.0, 0.0)), &seg).is_none());
         assert!(cast_ray_segment(&Ray::between(v(0.5, 0.0), v(1.5, 0.0)), &seg).is_none());
+    }
+
+    #[test]
+    fn ray_along_a_slope_with_rounded_coordinates_does_not_hit_it() {
+        // In exact arithmetic the ray runs along the slope x + y = 4.2; rounded to f32 it
+        // crosses it at a tiny angle, where Cramer's rule gave t = 0.25 (far from the slope).
+        let slope = Segment::new(v(1.1, 3.1), v(2.1, 2.1));
+        let ray = Ray {
+            origin: v(7.1, -2.9),
+            delta: v(-12.0, 12.0),
+        };
+        assert!(cast_ray_segment(&ray, &slope).is_none());
+    }
+
+    #[test]
+    fn grazing_but_not_parallel_ray_still_hits() {
+        // sin θ ≈ 1e-3, far above the parallel threshold.
+        let floor = Segment::new(v(0.0, 0.0), v(10.0, 0.0));
+        let hit = cast_ray_segment(&Ray::between(v(0.0, 0.001), v(10.0, -0.009)), &floor).unwrap();
+        assert!((hit.t - 0.1).abs() < 1e-4, "{hit:?}");
     }
 
     #[test]

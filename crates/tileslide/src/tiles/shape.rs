@@ -169,7 +169,9 @@ impl TileShape {
             if len <= f32::MIN_POSITIVE || !len.is_finite() {
                 return Err(ShapeError::ZeroNormal { segment: i });
             }
-            s.normal /= len;
+            // `+ 0.0` turns a `-0` component into `0`: the same face then has the same bits
+            // whichever way it was built (see `face_normal`).
+            s.normal = s.normal / len + Vec2::ZERO;
             if !out.contains(&s) {
                 if out.len() == MAX_SHAPE_SEGMENTS {
                     return Err(ShapeError::TooManySegments {
@@ -225,10 +227,12 @@ impl TileShape {
     }
 
     /// Checks that every segment lies in the tile's rectangle `[0, w] × [0, h]` (with a
-    /// tolerance of 1e-4 of the tile size).
+    /// tolerance of 1e-5 of the tile size on each axis).
     pub(crate) fn check_inside_tile(&self, size: Vec2) -> Result<(), ShapeError> {
-        let tol = size.max_element() * 1e-4;
-        let lo = Vec2::splat(-tol);
+        // 1e-5 of a cell on each axis: well inside the ray walk's 1e-4-cell touch tolerance,
+        // which relies on every segment lying in its own cell.
+        let tol = size * 1e-5;
+        let lo = -tol;
         let hi = size + tol;
         for (i, s) in self.segments.iter().enumerate() {
             for p in [s.a, s.b] {
@@ -299,7 +303,7 @@ fn polygon_edges(points: &[Vec2], first: usize) -> Result<Vec<(Vec2, Vec2, Vec2)
                 Vec2::new(d.y, -d.x)
             } else {
                 Vec2::new(-d.y, d.x)
-            };
+            } + Vec2::ZERO; // no `-0` components (see `from_segments`)
             (a, b, normal)
         })
         .collect())

@@ -53,7 +53,7 @@ impl TemporarySegment {
         if len <= f32::MIN_POSITIVE {
             return Err(TemporaryError::ZeroNormal(id));
         }
-        self.normal /= len;
+        self.normal = self.normal / len + Vec2::ZERO;
         Ok(self)
     }
 }
