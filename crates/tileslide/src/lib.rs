@@ -52,3 +52,8 @@ pub use tiles::{
     ShapeError, TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet,
     TileSetError, TileShape,
 };
+
+/// The README's quick start, compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+pub struct ReadmeDoctests;

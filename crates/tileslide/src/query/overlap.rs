@@ -46,15 +46,20 @@ impl TileMap {
         (r0..=r1).flat_map(move |r| (c0..=c1).map(move |c| Cell::new(c, r)))
     }
 
-    /// Active and temporary segments that share a point with the closed box.
+    /// Active and temporary segments that share a point with the closed box. A box with a
+    /// NaN or infinite coordinate, or with `min > max`, overlaps nothing.
     #[must_use]
     pub fn segments_overlapping_aabb(&self, aabb: &Aabb) -> Vec<SegmentOverlap> {
         self.segments_overlapping(aabb, |s| aabb.overlaps_segment(s))
     }
 
-    /// Active and temporary segments that share a point with the disc.
+    /// Active and temporary segments that share a point with the disc. A circle with a
+    /// non-finite centre or radius, or a negative radius, overlaps nothing.
     #[must_use]
     pub fn segments_overlapping_circle(&self, circle: &Circle) -> Vec<SegmentOverlap> {
+        if !(circle.radius >= 0.0 && circle.radius.is_finite()) {
+            return Vec::new();
+        }
         self.segments_overlapping(&circle.aabb(), |s| circle.overlaps_segment(s))
     }
 
@@ -64,6 +69,9 @@ impl TileMap {
         overlaps: impl Fn(&Segment) -> bool,
     ) -> Vec<SegmentOverlap> {
         let mut out = Vec::new();
+        if !bounds.is_valid() {
+            return out;
+        }
         for cell in self.cells_overlapping(bounds) {
             let tile = self.tile(cell).unwrap_or(TileId(u32::MAX));
             for (index, s) in self.active_segments(cell).enumerate() {

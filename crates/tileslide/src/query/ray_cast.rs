@@ -128,24 +128,29 @@ impl TileMap {
             out.push(self.make_hit(Found::Temporary(index), t, p0, delta));
         }
         let test = SegmentTest::new(p0, delta, filter);
-        let mut found: Vec<(f32, usize, u32)> = Vec::new();
         let starts = self.store.starts();
         let hot = self.store.hot();
+        let temporaries = out.len();
         walk(&self.grid_ray(p0, delta), 1.0, |index, _| {
             for (i, s) in cell_segments(starts, hot, index).iter().enumerate() {
+                let Some(t) = test.hit(s) else { continue };
+                let cell = self.cell_of(index);
+                let segment = SegmentRef {
+                    cell,
+                    index: i as u32,
+                };
                 // A cell can be visited twice (a start cell that is also a corner's side
                 // cell); each segment is reported once.
-                if let Some(t) = test.hit(s)
-                    && !found.iter().any(|&(_, c, j)| c == index && j == i as u32)
-                {
-                    found.push((t, index, i as u32));
+                let seen = out[temporaries..].iter().any(
+                    |h| matches!(h.source, SegmentSource::Tile { segment: s, .. } if s == segment),
+                );
+                if !seen {
+                    out.push(self.make_hit(Found::Tile(cell, index, i as u32), t, p0, delta));
                 }
             }
             false
         });
-        out.extend(found.into_iter().map(|(t, index, i)| {
-            self.make_hit(Found::Tile(self.cell_of(index), index, i), t, p0, delta)
-        }));
+        // Stable: ties keep walk order (temporary segments first).
         out.sort_by(|a, b| a.t.total_cmp(&b.t));
     }
 
