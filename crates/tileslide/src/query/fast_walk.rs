@@ -87,7 +87,10 @@ pub(crate) fn fast_walk(
     let enter_y = if step_y > 0 { FACE_MIN_Y } else { FACE_MAX_Y };
     let inv = d.recip();
     // The touch tolerance as a ray fraction, along the faster-moving axis.
-    let tol_t = TOUCH_TOLERANCE * inv.x.abs().min(inv.y.abs());
+    // (Comparisons rather than `f32::min`, whose NaN handling costs instructions: no NaN
+    // gets here.)
+    let (ax, ay) = (inv.x.abs(), inv.y.abs());
+    let tol_t = TOUCH_TOLERANCE * if ax < ay { ax } else { ay };
     // The next grid line on each axis, kept as an exact float, and the ray fraction there
     // (computed from the origin each time, so no error accumulates).
     let mut line_x = (col + (step_x > 0) as i32) as f32;
@@ -100,7 +103,8 @@ pub(crate) fn fast_walk(
     // `t_exit > limit || t_exit >= t_leave`.
     let edge_x = if step_x > 0 { w as f32 } else { 0.0 };
     let edge_y = if step_y > 0 { h as f32 } else { 0.0 };
-    let t_leave = ((edge_x - o.x) * inv.x).min((edge_y - o.y) * inv.y);
+    let (leave_x, leave_y) = ((edge_x - o.x) * inv.x, (edge_y - o.y) * inv.y);
+    let t_leave = if leave_x < leave_y { leave_x } else { leave_y };
     let limit = limit + tol_t;
     let t_stop = if t_leave <= limit {
         // The largest float below `t_leave` (> 0: the origin is strictly inside).

@@ -76,7 +76,7 @@ impl TileMap {
         match fast_walk(&grid, &data, &test, limit, &mut best_t, &mut general) {
             FastWalk::Done => {}
             FastWalk::Face {
-                index: _,
+                index,
                 col,
                 row,
                 face,
@@ -90,7 +90,12 @@ impl TileMap {
                 match self.face_t(p0, delta, cell, face) {
                     Some(t) if t < best_t => {
                         best_t = t;
-                        best = Some(Found::Face(cell, face_index(kind, face), face));
+                        best = Some(Found::Face(
+                            cell,
+                            index as usize,
+                            face_index(kind, face),
+                            face,
+                        ));
                         general = None;
                     }
                     Some(_) => {}
@@ -221,14 +226,14 @@ impl TileMap {
                     },
                 }
             }
-            Found::Face(cell, i, face) => RayHit {
+            Found::Face(cell, index, i, face) => RayHit {
                 t,
                 point,
                 normal: face_normal(face),
                 flags: SegmentFlags::SOLID,
                 source: SegmentSource::Tile {
                     segment: SegmentRef { cell, index: i },
-                    tile: self.tile(cell).unwrap_or(TileId(u32::MAX)),
+                    tile: self.tile_at_index(index).unwrap_or(TileId(u32::MAX)),
                 },
             },
             Found::Tile(cell, index, i) => {
@@ -240,7 +245,7 @@ impl TileMap {
                     flags: s.flags,
                     source: SegmentSource::Tile {
                         segment: SegmentRef { cell, index: i },
-                        tile: self.tile(cell).unwrap_or(TileId(u32::MAX)),
+                        tile: self.tile_at_index(index).unwrap_or(TileId(u32::MAX)),
                     },
                 }
             }
@@ -274,8 +279,9 @@ impl TileMap {
 #[derive(Clone, Copy)]
 enum Found {
     Temporary(usize),
-    /// A whole-edge face: its cell, its index in the cell, and its `FACE_*` bit.
-    Face(Cell, u32, u8),
+    /// A whole-edge face: its cell, the cell's index, the face's index in the cell, and its
+    /// `FACE_*` bit.
+    Face(Cell, usize, u32, u8),
     /// Cell, its index, and the segment's index in it.
     Tile(Cell, usize, u32),
 }

@@ -23,7 +23,8 @@ pub(crate) struct SegmentTest {
 
 impl SegmentTest {
     pub fn new(p0: Vec2, delta: Vec2, filter: &RayFilter) -> Self {
-        let by_faces = filter.faces == Faces::Front && filter.mask.contains(SegmentFlags::SOLID);
+        let by_faces =
+            matches!(filter.faces, Faces::Front) && filter.mask.contains(SegmentFlags::SOLID);
         let (face_dir, face_limit) = match filter.face_direction(delta) {
             Some(dir) => (dir, 0.0),
             None => (Vec2::ZERO, 1.0),

@@ -333,6 +333,13 @@ impl TileMap {
         }
     }
 
+    /// The tile in the cell at row-major `index` (which must be in the map).
+    #[inline(always)]
+    pub(crate) fn tile_at_index(&self, index: usize) -> Option<TileId> {
+        let raw = self.tiles[index];
+        (raw != EMPTY).then_some(TileId(raw))
+    }
+
     /// The tile in `cell`, or `None` for an empty cell or a cell outside the map.
     #[must_use]
     pub fn tile(&self, cell: Cell) -> Option<TileId> {
