@@ -6,6 +6,8 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+mod drawn;
+
 use std::sync::Arc;
 
 use proptest::prelude::*;
@@ -19,15 +21,9 @@ fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)
 }
 
-/// A map drawn as text, one line per row, top row first (y grows downward). Indentation and
-/// blank lines are ignored, so empty cells are drawn as `.`, never as spaces.
+/// A map drawn as text (see `drawn`).
 fn map(drawing: &str) -> TileMap {
-    let rows: Vec<&str> = drawing
-        .lines()
-        .map(str::trim)
-        .filter(|l| !l.is_empty())
-        .collect();
-    ascii::parse(&rows.join("\n"), "overlap.txt", 1.0).unwrap()
+    drawn::map(drawing, "overlap.txt")
 }
 
 /// Which segment an overlap names: a tile segment by (cell, index) or a temporary by index.

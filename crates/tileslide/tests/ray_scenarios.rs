@@ -5,21 +5,17 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+mod drawn;
+
 use std::f32::consts::FRAC_1_SQRT_2;
 use std::sync::Arc;
 
 use tileslide::io::ascii;
 use tileslide::{Cell, Faces, Ray, RayFilter, RayHit, SegmentFlags, TileMap, Vec2};
 
-/// A map drawn as text, one line per row, top row first (y grows downward). Indentation and
-/// blank lines are ignored, so empty cells are drawn as `.`, never as spaces.
+/// A map drawn as text (see `drawn`).
 fn map(drawing: &str) -> TileMap {
-    let rows: Vec<&str> = drawing
-        .lines()
-        .map(str::trim)
-        .filter(|l| !l.is_empty())
-        .collect();
-    ascii::parse(&rows.join("\n"), "scenario.txt", 1.0).unwrap()
+    drawn::map(drawing, "scenario.txt")
 }
 
 fn v(x: f32, y: f32) -> Vec2 {
