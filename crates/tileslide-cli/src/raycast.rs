@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow, bail};
 use serde_json::json;
-use tileslide::{Ray, RayFilter, RayHit, Vec2};
+use tileslide::{Ray, RayFilter, RayHit, SegmentFlags, Vec2};
 
 use crate::json::number;
 use crate::map_file::{self, MapArgs};
@@ -74,6 +74,9 @@ fn describe(hit: Option<&RayHit>) -> String {
             );
             if let (Some(cell), Some(tile)) = (h.cell(), h.tile()) {
                 s += &format!(", cell {cell}, tile {tile}");
+            }
+            if h.flags.contains(SegmentFlags::ONE_WAY) {
+                s += ", one-way";
             }
             s
         }
