@@ -1,11 +1,12 @@
 //! Per-cell storage of active segments, laid out for the ray walk.
 //!
-//! The walk reads one `u32` per visited cell (`starts`, 4 bytes a cell, so a 256 × 256 map's
-//! index is 256 KiB and stays in L2) and touches the segment pool only at cells that have
-//! active segments. Every segment of a cell's block carries the block's length, so no other
-//! per-cell record is needed. Blocks come from free lists (exact sizes up to 8, powers of two
-//! above), so a tile edit reallocates only the cells it changes, in O(1), and the pool never
-//! needs compacting.
+//! The walk reads one byte per visited cell, its *kind* (64 KiB for a 256 × 256 map, so it
+//! stays in cache), and touches a cell's segments only when the kind says they must be
+//! tested. Those live in a pool of 32-byte records found through `starts` (a `u32` per
+//! cell); every record of a cell's block carries the block's length, so no other per-cell
+//! record is needed. Blocks come from free lists (exact sizes up to 8, powers of two above),
+//! so a tile edit reallocates only the cells it changes, in O(1), and the pool never needs
+//! compacting.
 
 use glam::Vec2;
 
