@@ -12,6 +12,8 @@
 //! through one of those faces, which the walk knows from the step it just took: the decision
 //! needs no segment data at all.
 
+use glam::Vec2;
+
 use super::segment_test::{SegmentTest, cell_segments};
 use super::traversal::{GridRay, TOUCH_TOLERANCE};
 use crate::tiles::store::{
@@ -45,6 +47,101 @@ pub(crate) struct WalkData<'a> {
     pub hot: &'a [HotSegment],
 }
 
+/// Where the fast walk of a ray starts: its state before the first cell is visited.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct WalkStart {
+    /// The ray's origin, in grid units.
+    pub o: Vec2,
+    /// `1 / delta`, per axis.
+    pub inv: Vec2,
+    /// The touch tolerance as a ray fraction, along the faster-moving axis.
+    pub tol_t: f32,
+    /// The walk ends once a cell's exit lies past this fraction (see `new`).
+    pub t_stop: f32,
+    /// The next grid line on each axis (exact integers as floats)...
+    pub line_x: f32,
+    pub line_y: f32,
+    /// ...and the ray fraction where it is crossed.
+    pub tx: f32,
+    pub ty: f32,
+    /// The start cell's index, and the index steps along x and y.
+    pub index: usize,
+    pub index_step_x: isize,
+    pub index_step_y: isize,
+    /// ±1: the grid-line steps along x and y.
+    pub line_step_x: f32,
+    pub line_step_y: f32,
+    /// The face a step along x (y) enters the next cell through.
+    pub enter_x: u8,
+    pub enter_y: u8,
+}
+
+impl WalkStart {
+    /// The start of `ray`'s fast walk up to `limit`, or `None` when the ray needs the
+    /// general walk: it starts outside the map or within the touch tolerance of a grid
+    /// line, or it is parallel to an axis.
+    #[inline(always)]
+    pub fn new(ray: &GridRay, limit: f32) -> Option<Self> {
+        let (o, d) = (ray.origin, ray.delta);
+        let (w, h) = (ray.width as i32, ray.height as i32);
+        let inside = o.x > 0.0 && o.y > 0.0 && o.x < w as f32 && o.y < h as f32;
+        if !(inside && d.x != 0.0 && d.y != 0.0) {
+            return None;
+        }
+        // Positive, so truncation is floor.
+        let (col, row) = (o.x as i32, o.y as i32);
+        // A start within the tolerance of a grid line touches the cells on its other side.
+        let (fx, fy) = (o.x - col as f32, o.y - row as f32);
+        let near_line = |f: f32| f <= TOUCH_TOLERANCE || f >= 1.0 - TOUCH_TOLERANCE;
+        if near_line(fx) || near_line(fy) {
+            return None;
+        }
+        let step_x: i32 = if d.x > 0.0 { 1 } else { -1 };
+        let step_y: i32 = if d.y > 0.0 { 1 } else { -1 };
+        let inv = d.recip();
+        // (Comparisons rather than `f32::min`, whose NaN handling costs instructions: no
+        // NaN gets here.)
+        let (ax, ay) = (inv.x.abs(), inv.y.abs());
+        let tol_t = TOUCH_TOLERANCE * if ax < ay { ax } else { ay };
+        // The next grid line on each axis, kept as an exact float, and the ray fraction
+        // there (computed from the origin each time, so no error accumulates).
+        let line_x = (col + (step_x > 0) as i32) as f32;
+        let line_y = (row + (step_y > 0) as i32) as f32;
+        // The walk ends when the next cell starts past `limit` or outside the map. The
+        // second happens at `t_leave`, computed by the same formula as the crossings at the
+        // map's last grid line; one comparison with `t_stop` checks both: stop when
+        // `t_exit > limit || t_exit >= t_leave`.
+        let edge_x = if step_x > 0 { w as f32 } else { 0.0 };
+        let edge_y = if step_y > 0 { h as f32 } else { 0.0 };
+        let (leave_x, leave_y) = ((edge_x - o.x) * inv.x, (edge_y - o.y) * inv.y);
+        let t_leave = if leave_x < leave_y { leave_x } else { leave_y };
+        let limit = limit + tol_t;
+        let t_stop = if t_leave <= limit {
+            // The largest float below `t_leave` (> 0: the origin is strictly inside).
+            f32::from_bits(t_leave.to_bits() - 1)
+        } else {
+            limit
+        };
+        Some(Self {
+            o,
+            inv,
+            tol_t,
+            t_stop,
+            line_x,
+            line_y,
+            tx: (line_x - o.x) * inv.x,
+            ty: (line_y - o.y) * inv.y,
+            index: (row * w + col) as usize,
+            index_step_x: step_x as isize,
+            index_step_y: step_y as isize * w as isize,
+            line_step_x: step_x as f32,
+            line_step_y: step_y as f32,
+            enter_x: if step_x > 0 { FACE_MIN_X } else { FACE_MAX_X },
+            enter_y: if step_y > 0 { FACE_MIN_Y } else { FACE_MAX_Y },
+        })
+    }
+}
+
 /// Walks `ray` up to `limit`, testing general cells' segments with `test` and recording a
 /// nearer hit in `best_t` and `best` (cell index, segment index); stops once `best_t` lies
 /// before the current cell's exit, or at the first exposed face it enters when `test`
@@ -58,63 +155,37 @@ pub(crate) fn fast_walk(
     best_t: &mut f32,
     best: &mut Option<(usize, u32)>,
 ) -> FastWalk {
-    let (o, d) = (ray.origin, ray.delta);
-    let (w, h) = (ray.width as i32, ray.height as i32);
-    let inside = o.x > 0.0 && o.y > 0.0 && o.x < w as f32 && o.y < h as f32;
-    if !(inside && d.x != 0.0 && d.y != 0.0) {
+    let Some(start) = WalkStart::new(ray, limit) else {
         return FastWalk::Fallback;
-    }
-    // Positive, so truncation is floor.
-    let (col, row) = (o.x as i32, o.y as i32);
-    // A start within the tolerance of a grid line touches the cells on its other side too.
-    let (fx, fy) = (o.x - col as f32, o.y - row as f32);
-    let near_line = |f: f32| f <= TOUCH_TOLERANCE || f >= 1.0 - TOUCH_TOLERANCE;
-    if near_line(fx) || near_line(fy) {
-        return FastWalk::Fallback;
-    }
+    };
+    let WalkStart {
+        o,
+        inv,
+        tol_t,
+        t_stop,
+        mut line_x,
+        mut line_y,
+        mut tx,
+        mut ty,
+        mut index,
+        index_step_x,
+        index_step_y,
+        line_step_x,
+        line_step_y,
+        enter_x,
+        enter_y,
+    } = start;
+    let step_x = line_step_x as i32;
+    let step_y = line_step_y as i32;
     let kinds = data.kinds;
-    let step_x: i32 = if d.x > 0.0 { 1 } else { -1 };
-    let step_y: i32 = if d.y > 0.0 { 1 } else { -1 };
-    // The face a step enters the next cell through. Faces decide only front-face queries
-    // that see solid segments; otherwise face cells are tested like general ones.
+    // Faces decide only front-face queries that see solid segments; otherwise face cells
+    // are tested like general ones.
     let face_mask: u8 = if test.decides_by_faces() { 0x0f } else { 0 };
     let general_mask: u8 = if test.decides_by_faces() {
         KIND_GENERAL
     } else {
         0xff
     };
-    let enter_x = if step_x > 0 { FACE_MIN_X } else { FACE_MAX_X };
-    let enter_y = if step_y > 0 { FACE_MIN_Y } else { FACE_MAX_Y };
-    let inv = d.recip();
-    // The touch tolerance as a ray fraction, along the faster-moving axis.
-    // (Comparisons rather than `f32::min`, whose NaN handling costs instructions: no NaN
-    // gets here.)
-    let (ax, ay) = (inv.x.abs(), inv.y.abs());
-    let tol_t = TOUCH_TOLERANCE * if ax < ay { ax } else { ay };
-    // The next grid line on each axis, kept as an exact float, and the ray fraction there
-    // (computed from the origin each time, so no error accumulates).
-    let mut line_x = (col + (step_x > 0) as i32) as f32;
-    let mut line_y = (row + (step_y > 0) as i32) as f32;
-    let mut tx = (line_x - o.x) * inv.x;
-    let mut ty = (line_y - o.y) * inv.y;
-    // The walk ends when the next cell starts past `limit` or outside the map. The second
-    // happens at `t_leave`, computed by the same formula as `tx`/`ty` at the map's last
-    // grid line; one comparison with `t_stop` checks both: stop when
-    // `t_exit > limit || t_exit >= t_leave`.
-    let edge_x = if step_x > 0 { w as f32 } else { 0.0 };
-    let edge_y = if step_y > 0 { h as f32 } else { 0.0 };
-    let (leave_x, leave_y) = ((edge_x - o.x) * inv.x, (edge_y - o.y) * inv.y);
-    let t_leave = if leave_x < leave_y { leave_x } else { leave_y };
-    let limit = limit + tol_t;
-    let t_stop = if t_leave <= limit {
-        // The largest float below `t_leave` (> 0: the origin is strictly inside).
-        f32::from_bits(t_leave.to_bits() - 1)
-    } else {
-        limit
-    };
-    let mut index = (row * w + col) as usize;
-    let (index_step_x, index_step_y) = (step_x as isize, step_y as isize * w as isize);
-    let (line_step_x, line_step_y) = (step_x as f32, step_y as f32);
     // The start cell is not entered through any face.
     let mut entered: u8 = 0;
     loop {
