@@ -44,7 +44,9 @@ pub mod io;
 mod query;
 mod tiles;
 
-pub use geometry::{Aabb, Circle, PARALLEL_SINE, Ray, RaySegmentHit, Segment, cast_ray_segment};
+pub use geometry::{
+    Aabb, Circle, PARALLEL_TOLERANCE, Ray, RaySegmentHit, Segment, cast_ray_segment,
+};
 pub use glam::Vec2;
 pub use query::{Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{

@@ -40,3 +40,71 @@ fn more_cells_than_max_cells_is_refused() {
         }
     );
 }
+
+#[test]
+fn an_edit_that_would_overfill_a_cell_is_refused_and_changes_nothing() {
+    use tileslide::{Ray, RayFilter, SegmentFlags, TileSegment};
+    let v = Vec2::new;
+    let mut set = TileSet::new(Vec2::ONE).unwrap();
+    // Tile 1: 300 overlapping segments along its right edge (normals differ by a hair, so
+    // none is a duplicate), and a floor across the middle.
+    let mut a: Vec<TileSegment> = (0..300)
+        .map(|i| {
+            TileSegment::new(
+                v(1.0, 0.0),
+                v(1.0, 1.0),
+                v(1.0, i as f32 * 1e-6),
+                SegmentFlags::SOLID,
+            )
+        })
+        .collect();
+    a.push(TileSegment::new(
+        v(0.0, 0.5),
+        v(1.0, 0.5),
+        v(0.0, -1.0),
+        SegmentFlags::SOLID,
+    ));
+    set.insert(TileId(1), TileShape::from_segments(a).unwrap())
+        .unwrap();
+    // Tile 2: 300 short solid covers along its left edge, facing left.
+    let b: Vec<TileSegment> = (0..300)
+        .map(|k| {
+            let y = k as f32 / 300.0;
+            TileSegment::new(
+                v(0.0, y),
+                v(0.0, y + 0.5 / 300.0),
+                v(-1.0, 0.0),
+                SegmentFlags::SOLID,
+            )
+        })
+        .collect();
+    set.insert(TileId(2), TileShape::from_segments(b).unwrap())
+        .unwrap();
+    let mut map = TileMap::new(Arc::new(set), 2, 1, Vec2::ZERO).unwrap();
+    map.set_tile(Cell::new(0, 0), Some(TileId(1))).unwrap();
+    let down = Ray::between(v(0.5, 0.1), v(0.5, 0.9));
+    let before = map.cast_ray(down, &RayFilter::default());
+    assert!(
+        before.is_some_and(|h| (h.point.y - 0.5).abs() < 1e-6),
+        "{before:?}"
+    );
+    // Each of the 300 edge segments would be cut into 301 pieces: more than a cell holds.
+    assert_eq!(
+        map.set_tile(Cell::new(1, 0), Some(TileId(2))),
+        Err(MapError::TooManySegments)
+    );
+    assert_eq!(map.tile(Cell::new(1, 0)), None);
+    assert_eq!(map.cast_ray(down, &RayFilter::default()), before);
+    assert_eq!(map.active_segment_count(), 301);
+}
+
+#[test]
+fn tile_id_u32_max_is_reserved() {
+    use tileslide::TileSetError;
+    let mut set = TileSet::new(Vec2::ONE).unwrap();
+    let square = TileShape::polygon(&[Vec2::ZERO, Vec2::X, Vec2::ONE, Vec2::Y]).unwrap();
+    assert_eq!(
+        set.insert(TileId(u32::MAX), square),
+        Err(TileSetError::ReservedId)
+    );
+}

@@ -206,19 +206,19 @@ fn nan_temporary_segment_is_refused_with_an_error() {
     bad.segment.a.x = f32::NAN;
     assert_eq!(
         m.add_temporary(bad),
-        Err(MapError::Temporary(TemporaryError::NonFinite(42)))
+        Err(MapError::Temporary(TemporaryError::NonFinite(Owner(42))))
     );
     let mut bad = door(3.0, 42);
     bad.normal = v(f32::NAN, 0.0);
     assert_eq!(
         m.add_temporary(bad),
-        Err(MapError::Temporary(TemporaryError::NonFinite(42)))
+        Err(MapError::Temporary(TemporaryError::NonFinite(Owner(42))))
     );
     let mut bad = door(3.0, 42);
     bad.velocity = v(0.0, f32::INFINITY);
     assert_eq!(
         m.add_temporary(bad),
-        Err(MapError::Temporary(TemporaryError::NonFinite(42)))
+        Err(MapError::Temporary(TemporaryError::NonFinite(Owner(42))))
     );
     assert!(m.temporaries().is_empty(), "nothing refused is kept");
     // The error names the owner.
@@ -233,13 +233,31 @@ fn degenerate_temporary_segments_are_refused() {
     point.segment = Segment::new(v(3.0, 1.0), v(3.0, 1.0));
     assert_eq!(
         m.add_temporary(point),
-        Err(MapError::Temporary(TemporaryError::ZeroLength(5)))
+        Err(MapError::Temporary(TemporaryError::ZeroLength(Owner(5))))
     );
     let mut no_normal = door(3.0, 5);
     no_normal.normal = Vec2::ZERO;
     assert_eq!(
         m.add_temporary(no_normal),
-        Err(MapError::Temporary(TemporaryError::ZeroNormal(5)))
+        Err(MapError::Temporary(TemporaryError::ZeroNormal(Owner(5))))
     );
     assert!(m.temporaries().is_empty());
+}
+
+#[test]
+fn huge_but_finite_normal_is_normalised_not_zeroed() {
+    let mut map = tileslide::io::ascii::parse("...", "huge.txt", 1.0).unwrap();
+    map.add_temporary(TemporarySegment {
+        segment: Segment::new(Vec2::new(1.5, 0.0), Vec2::new(1.5, 1.0)),
+        normal: Vec2::new(-3e38, 3e38),
+        flags: SegmentFlags::SOLID,
+        owner: Owner(9),
+        velocity: Vec2::ZERO,
+    })
+    .unwrap();
+    let n = map.temporaries()[0].normal;
+    assert!(
+        (n - Vec2::new(-1.0, 1.0).normalize()).length() < 1e-6,
+        "{n:?}"
+    );
 }

@@ -6,10 +6,12 @@
 
 mod aabb;
 mod circle;
+mod normal;
 pub(crate) mod ray;
 mod segment;
 
 pub use aabb::Aabb;
 pub use circle::Circle;
-pub use ray::{PARALLEL_SINE, Ray, RaySegmentHit, cast_ray_segment};
+pub(crate) use normal::unit_normal;
+pub use ray::{PARALLEL_TOLERANCE, Ray, RaySegmentHit, cast_ray_segment};
 pub use segment::Segment;

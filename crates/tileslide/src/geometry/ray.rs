@@ -63,8 +63,9 @@ pub struct RaySegmentHit {
 ///   of it, hits (`t = 1`, or `s` = 0 or 1);
 /// - a ray parallel to the segment never hits it, **including a collinear ray running along
 ///   it**: a surface is only ever met through its face. A ray running along a floor into a
-///   wall still hits the wall, whose end point it meets at an angle. "Parallel" means within
-///   a sine of [`PARALLEL_SINE`] (1e-5), where the intersection is lost to rounding;
+///   wall still hits the wall, whose end point it meets at an angle. "Parallel" means moving
+///   across the segment's line by less than [`PARALLEL_TOLERANCE`] segment lengths over
+///   the ray's whole length, where the intersection is lost to rounding;
 /// - a zero-length ray or a zero-length segment never hits (the denominator is zero).
 ///
 /// ```
@@ -95,13 +96,16 @@ pub(crate) fn solve(origin: Vec2, delta: Vec2, a: Vec2, e: Vec2) -> Option<(f32,
     }
 }
 
-/// Below this sine of the angle between ray and segment, the two count as parallel.
+/// A ray counts as parallel to a segment when, over its whole length, it moves less than
+/// this many segment lengths across the segment's line.
 ///
-/// At such grazing angles Cramer's rule is ill-conditioned: coordinates rounded to `f32`
-/// (a map origin of 0.1, say) turn a ray that runs exactly along a slope into one crossing
-/// it at a tiny angle, and `t` then comes out anywhere. Treating the two as parallel keeps
-/// the rule "a ray running along a surface does not hit it" true in floating point.
-pub const PARALLEL_SINE: f32 = 1e-5;
+/// In exact arithmetic "parallel" means not crossing the line at all. Coordinates rounded
+/// to `f32` (a map origin of 0.1, say) turn a ray that runs exactly along a slope into one
+/// that crosses it by a hair, and Cramer's rule then puts `t` anywhere. Measuring how far
+/// the ray moves across the line, rather than the angle, keeps long shallow rays honest: a
+/// ray that really crosses a floor, however long and flat, moves across it by far more
+/// than this and hits it.
+pub const PARALLEL_TOLERANCE: f32 = 1e-5;
 
 /// Cramer's rule without branches: returns whether the ray hits and the numerators of `t`
 /// and `s` over a positive denominator (`t = tn / den`). Branch-free because which way the
@@ -114,10 +118,11 @@ pub(crate) fn solve_parts(origin: Vec2, delta: Vec2, a: Vec2, e: Vec2) -> (bool,
     // Make the denominator positive; negating is exact, so t and s are unchanged.
     let sign = 1.0f32.copysign(den);
     let (den, tn, sn) = (den * sign, w.perp_dot(e) * sign, w.perp_dot(delta) * sign);
-    // `den = |delta| |e| sin θ`: parallel within `PARALLEL_SINE`, or degenerate (zero
-    // length), is no hit; NaN fails every comparison.
-    let crossing =
-        den * den > PARALLEL_SINE * PARALLEL_SINE * delta.length_squared() * e.length_squared();
+    // `den / |e| = |delta| sin θ` is how far the ray moves across the segment's line:
+    // within `PARALLEL_TOLERANCE` segment lengths it is parallel, and a zero-length ray or
+    // segment gives 0: no hit. NaN fails every comparison. (No squares of `den`: a ray of
+    // length 1e20 must not overflow to infinity.)
+    let crossing = den > PARALLEL_TOLERANCE * e.length_squared();
     let inside = crossing & (tn >= 0.0) & (tn <= den) & (sn >= 0.0) & (sn <= den);
     (inside, tn, sn, den)
 }
@@ -189,6 +194,27 @@ mod tests {
             delta: v(-12.0, 12.0),
         };
         assert!(cast_ray_segment(&ray, &slope).is_none());
+    }
+
+    #[test]
+    fn long_shallow_ray_still_hits_the_floor_it_crosses() {
+        // 4000 cells long, crossing y = 1 by 0.02 over that length: sin θ = 5e-6.
+        let floor = Segment::new(v(2000.0, 1.0), v(2001.0, 1.0));
+        let hit = cast_ray_segment(&Ray::between(v(0.5, 0.99), v(4000.5, 1.01)), &floor).unwrap();
+        assert!((hit.t - 0.5).abs() < 1e-3, "{hit:?}");
+    }
+
+    #[test]
+    fn very_long_ray_still_hits() {
+        let wall = Segment::new(v(4.0, 0.0), v(4.0, 3.0));
+        for length in [1e19f32, 1e20, 1e30, f32::MAX / 4.0] {
+            let ray = Ray {
+                origin: v(1.5, 1.5),
+                delta: v(length, 0.0),
+            };
+            let hit = cast_ray_segment(&ray, &wall);
+            assert!(hit.is_some(), "length {length}");
+        }
     }
 
     #[test]

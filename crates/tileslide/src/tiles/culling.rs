@@ -115,6 +115,13 @@ pub(crate) fn active_segments<'s>(
             }
         }
         let push = |a: Vec2, b: Vec2, out: &mut Vec<HotSegment>| {
+            // Active segments run with their normal on the right of a → b, whatever the
+            // authored direction (see `ActiveSegment`).
+            let (a, b) = if (b - a).perp_dot(s.normal) > 0.0 {
+                (b, a)
+            } else {
+                (a, b)
+            };
             let (wa, wb) = (base + a, base + b);
             out.push(HotSegment {
                 a: wa,
@@ -136,7 +143,8 @@ pub(crate) fn active_segments<'s>(
     }
 }
 
-/// The parts of `s` (on `side`'s line) that no interval of `covers` hides, oriented like `s`.
+/// The parts of `s` (on `side`'s line) that no interval of `covers` hides, in `s`'s
+/// direction (`active_segments` then orients them by the normal).
 fn uncovered_pieces(
     s: &TileSegment,
     side: Side,

@@ -73,6 +73,11 @@ pub enum MapError {
 }
 
 /// An active segment of a map: what queries test, after seam culling, in world coordinates.
+///
+/// Every active segment runs with its normal on the right of `a → b`
+/// (`(b − a).perp_dot(normal) <= 0`), whatever direction its tile shape gave it: with y up,
+/// solids are walked counter-clockwise. A resolver telling convex from concave corners can
+/// rely on that.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ActiveSegment {
     /// The segment in world coordinates. A piece of a partly hidden tile segment is shorter
@@ -121,11 +126,11 @@ pub struct TileMap {
     /// Tile id per cell, row-major; `EMPTY` for none.
     tiles: Vec<u32>,
     placed: usize,
-    /// Most active segments one cell can get (see `new`).
-    max_cell_segments: usize,
     pub(crate) store: SegmentStore,
     pub(crate) temporaries: Vec<TemporarySegment>,
-    scratch: Vec<HotSegment>,
+    /// Reused buffers for the active segments of the cells an edit recomputes (the cell
+    /// and its four neighbours), so an edit does not allocate once warmed up.
+    scratch: [Vec<HotSegment>; 5],
 }
 
 const EMPTY: u32 = u32::MAX;
@@ -146,13 +151,6 @@ impl TileMap {
         if cells > MAX_CELLS {
             return Err(MapError::TooLarge { width, height });
         }
-        // A cell holds at most five times the largest shape's segments: its own, each split
-        // by the covers of its four neighbours.
-        let largest = tile_set
-            .iter()
-            .map(|(_, s)| s.segments().len())
-            .max()
-            .unwrap_or(0);
         if !origin.is_finite() {
             return Err(MapError::NonFiniteOrigin {
                 x: origin.x,
@@ -168,11 +166,10 @@ impl TileMap {
             cell_size,
             inv_cell_size: cell_size.recip(),
             tiles: vec![EMPTY; cells as usize],
-            max_cell_segments: 5 * largest,
             placed: 0,
             store: SegmentStore::new(cells as usize),
             temporaries: Vec::new(),
-            scratch: Vec::new(),
+            scratch: Default::default(),
         })
     }
 
@@ -205,12 +202,18 @@ impl TileMap {
 
     /// Recomputes every cell's active segments and links from the tiles.
     fn rebuild(&mut self) -> Result<(), MapError> {
+        let mut out = std::mem::take(&mut self.scratch[0]);
         for row in 0..self.height {
             for col in 0..self.width {
-                self.check_room(1)?;
-                self.update_cell(col, row);
+                let kind = self.compute_cell(col, row, &mut out);
+                if !self.store.has_room_for(&[&out]) {
+                    return Err(MapError::TooManySegments);
+                }
+                self.store
+                    .set_cell((row * self.width + col) as usize, &out, kind);
             }
         }
+        self.scratch[0] = out;
         for row in 0..self.height {
             for col in 0..self.width {
                 link_cell(
@@ -231,15 +234,6 @@ impl TileMap {
         Ok(())
     }
 
-    /// Refuses an update of `cells` cells that could outgrow the pool's u32 indices
-    /// (checked before anything changes, so a refused edit leaves the map as it was).
-    fn check_room(&self, cells: usize) -> Result<(), MapError> {
-        if self.store.room() < cells * SegmentStore::capacity_for(self.max_cell_segments) {
-            return Err(MapError::TooManySegments);
-        }
-        Ok(())
-    }
-
     /// Puts tile `id` (or nothing) in `cell`, updating seam culling for the cell and its four
     /// neighbours and end-point links around them: O(1), whatever the map's size.
     pub fn set_tile(&mut self, cell: Cell, id: Option<TileId>) -> Result<(), MapError> {
@@ -255,16 +249,38 @@ impl TileMap {
         if old == raw {
             return Ok(());
         }
-        self.check_room(5)?;
-        let count = |map: &Self, t: u32| map.shape_of_raw(t).map_or(0, |s| s.segments().len());
-        self.placed = self.placed - count(self, old) + count(self, raw);
         self.tiles[index] = raw;
+        // Recompute the cell and its four neighbours into the scratch buffers first, and
+        // apply them only if the store can take them all: a refused edit changes nothing.
         let (col, row) = (cell.col as i64, cell.row as i64);
-        for (dc, dr) in [(0, 0), (-1, 0), (1, 0), (0, -1), (0, 1)] {
+        let mut scratch = std::mem::take(&mut self.scratch);
+        let mut changed = [None; 5];
+        for (k, (dc, dr)) in [(0, 0), (-1, 0), (1, 0), (0, -1), (0, 1)]
+            .into_iter()
+            .enumerate()
+        {
             if let Some((c, r)) = self.in_bounds(col + dc, row + dr) {
-                self.update_cell(c, r);
+                let kind = self.compute_cell(c, r, &mut scratch[k]);
+                changed[k] = Some(((r * self.width + c) as usize, kind));
             }
         }
+        let outs: Vec<&Vec<HotSegment>> = (0..5)
+            .filter(|&k| changed[k].is_some())
+            .map(|k| &scratch[k])
+            .collect();
+        if !self.store.has_room_for(&outs) {
+            self.tiles[index] = old;
+            self.scratch = scratch;
+            return Err(MapError::TooManySegments);
+        }
+        for (k, update) in changed.into_iter().enumerate() {
+            if let Some((i, kind)) = update {
+                self.store.set_cell(i, &scratch[k], kind);
+            }
+        }
+        self.scratch = scratch;
+        let count = |map: &Self, t: u32| map.shape_of_raw(t).map_or(0, |s| s.segments().len());
+        self.placed = self.placed - count(self, old) + count(self, raw);
         // Links read the active segments of the 3×3 block around a cell, and active segments
         // changed in the plus-shaped block above: relink everything within two cells.
         for dr in -2..=2 {
@@ -289,10 +305,11 @@ impl TileMap {
         self.set_tile(cell, None)
     }
 
-    fn update_cell(&mut self, col: u32, row: u32) {
-        let index = (row * self.width + col) as usize;
-        let mut out = std::mem::take(&mut self.scratch);
+    /// The active segments of cell (`col`, `row`) from its tile and its neighbours', into
+    /// `out`, in the store's form; returns the cell's kind.
+    fn compute_cell(&self, col: u32, row: u32, out: &mut Vec<HotSegment>) -> u8 {
         out.clear();
+        let index = (row * self.width + col) as usize;
         let base = self.cell_corner(Cell::new(col, row));
         if let Some(shape) = self.shape_of_raw(self.tiles[index]) {
             let neighbour = |side: Side| -> Option<&TileShape> {
@@ -300,12 +317,11 @@ impl TileMap {
                 let (c, r) = self.in_bounds(col as i64 + dc, row as i64 + dr)?;
                 self.shape_of_raw(self.tiles[(r * self.width + c) as usize])
             };
-            active_segments(shape, self.cell_size, base, neighbour, &mut out);
+            active_segments(shape, self.cell_size, base, neighbour, out);
         }
-        let kind = kind_of(&out, base, self.cell_size);
-        canonical_faces(&mut out, kind, base, self.cell_size);
-        self.store.set_cell(index, &out, kind);
-        self.scratch = out;
+        let kind = kind_of(out, base, self.cell_size);
+        canonical_faces(out, kind, base, self.cell_size);
+        kind
     }
 
     fn shape_of_raw(&self, raw: u32) -> Option<&TileShape> {

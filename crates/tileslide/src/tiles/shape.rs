@@ -2,7 +2,7 @@ use glam::Vec2;
 use thiserror::Error;
 
 use super::SegmentFlags;
-use crate::geometry::{Ray, Segment, cast_ray_segment};
+use crate::geometry::{Ray, Segment, cast_ray_segment, unit_normal};
 
 /// One segment of a tile shape, in tile-local coordinates.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -165,13 +165,8 @@ impl TileShape {
             if s.a == s.b {
                 return Err(ShapeError::ZeroLength { segment: i });
             }
-            let len = s.normal.length();
-            if len <= f32::MIN_POSITIVE || !len.is_finite() {
-                return Err(ShapeError::ZeroNormal { segment: i });
-            }
-            // `+ 0.0` turns a `-0` component into `0`: the same face then has the same bits
-            // whichever way it was built (see `face_normal`).
-            s.normal = s.normal / len + Vec2::ZERO;
+            // (Finite here, so `None` means the zero vector.)
+            s.normal = unit_normal(s.normal).ok_or(ShapeError::ZeroNormal { segment: i })?;
             if !out.contains(&s) {
                 if out.len() == MAX_SHAPE_SEGMENTS {
                     return Err(ShapeError::TooManySegments {

@@ -43,16 +43,17 @@ pub(crate) fn face_normal(face: u8) -> Vec2 {
 }
 
 /// The stored form of a whole-edge face of the cell with corner `base` and size `size`:
-/// start point and `e = b − a`, running towards increasing coordinates. The store keeps
-/// face cells' segments exactly so (see `canonical_faces`) and the ray walk recomputes them
-/// from the cell alone, with the same operations, so both agree bit for bit.
+/// start point and `e = b − a`, running with the normal on the right like every active
+/// segment. The store keeps face cells' segments exactly so (see `canonical_faces`) and the
+/// ray walk recomputes them from the cell alone, with the same operations, so both agree
+/// bit for bit.
 #[inline(always)]
 pub(crate) fn face_segment(base: Vec2, size: Vec2, face: u8) -> (Vec2, Vec2) {
     let (la, lb) = match face {
-        FACE_MIN_X => (Vec2::ZERO, Vec2::new(0.0, size.y)),
+        FACE_MIN_X => (Vec2::new(0.0, size.y), Vec2::ZERO),
         FACE_MAX_X => (Vec2::new(size.x, 0.0), size),
         FACE_MIN_Y => (Vec2::ZERO, Vec2::new(size.x, 0.0)),
-        _ => (Vec2::new(0.0, size.y), size),
+        _ => (size, Vec2::new(0.0, size.y)),
     };
     let (a, b) = (base + la, base + lb);
     (a, b - a)
@@ -131,9 +132,7 @@ pub(crate) fn kind_of(segments: &[HotSegment], base: Vec2, size: Vec2) -> u8 {
     kind
 }
 
-/// Most active segments one cell can hold (a tile's own segments, at most
-/// [`MAX_SHAPE_SEGMENTS`](super::shape::MAX_SHAPE_SEGMENTS), each split at most by the
-/// covers of four neighbours).
+/// Most active segments one cell can hold (a segment's `count` is a `u16`).
 const MAX_CELL_SEGMENTS: usize = u16::MAX as usize;
 
 /// An active segment in world coordinates, laid out for the ray walk: `e = b − a` is
@@ -248,14 +247,13 @@ impl SegmentStore {
         &mut self.links[range]
     }
 
-    /// How many more pool entries fit before indices would reach [`NO_SEGMENTS`].
-    pub fn room(&self) -> usize {
-        (NO_SEGMENTS as usize).saturating_sub(self.hot.len())
-    }
-
-    /// Pool entries a block of `len` segments takes.
-    pub fn capacity_for(len: usize) -> usize {
-        capacity_of(len.max(1))
+    /// True when cells with these segments fit: none has more than `MAX_CELL_SEGMENTS`,
+    /// and new blocks for all of them keep pool indices below [`NO_SEGMENTS`] (checked
+    /// before anything changes, so a refused edit leaves the map as it was).
+    pub fn has_room_for(&self, cells: &[&Vec<HotSegment>]) -> bool {
+        let room = (NO_SEGMENTS as usize).saturating_sub(self.hot.len());
+        let needed: usize = cells.iter().map(|s| capacity_of(s.len())).sum();
+        cells.iter().all(|s| s.len() <= MAX_CELL_SEGMENTS) && needed <= room
     }
 
     /// Total number of active segments.
@@ -264,10 +262,9 @@ impl SegmentStore {
     }
 
     /// Replaces the active segments of cell `index` (their `count` is set here) and its
-    /// summary `kind` (see [`kind_of`]); their links are cleared. At most
-    /// `MAX_CELL_SEGMENTS` are kept (the map's limits make more impossible).
+    /// summary `kind` (see [`kind_of`]); their links are cleared. The caller has checked
+    /// [`has_room_for`](Self::has_room_for).
     pub fn set_cell(&mut self, index: usize, segments: &[HotSegment], kind: u8) {
-        let segments = &segments[..segments.len().min(MAX_CELL_SEGMENTS)];
         self.kinds[index] = kind;
         let old = self.range(index);
         if !old.is_empty() {

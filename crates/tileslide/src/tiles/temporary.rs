@@ -2,7 +2,7 @@ use glam::Vec2;
 use thiserror::Error;
 
 use super::SegmentFlags;
-use crate::geometry::Segment;
+use crate::geometry::{Segment, unit_normal};
 
 /// Who submitted a temporary segment: any number the game uses for its objects.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -29,31 +29,28 @@ pub struct TemporarySegment {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Error)]
 pub enum TemporaryError {
     /// A coordinate, normal or velocity component is NaN or infinite.
-    #[error("temporary segment of owner {0} has a non-finite coordinate, normal or velocity")]
-    NonFinite(u64),
+    #[error("temporary segment of owner {} has a non-finite coordinate, normal or velocity", .0.0)]
+    NonFinite(Owner),
     /// Start and end point are the same.
-    #[error("temporary segment of owner {0} has zero length")]
-    ZeroLength(u64),
+    #[error("temporary segment of owner {} has zero length", .0.0)]
+    ZeroLength(Owner),
     /// The normal is the zero vector.
-    #[error("temporary segment of owner {0} has a zero normal")]
-    ZeroNormal(u64),
+    #[error("temporary segment of owner {} has a zero normal", .0.0)]
+    ZeroNormal(Owner),
 }
 
 impl TemporarySegment {
     /// Checks the segment and normalises its normal.
     pub(crate) fn validated(mut self) -> Result<Self, TemporaryError> {
-        let id = self.owner.0;
+        let id = self.owner;
         if !(self.segment.is_finite() && self.normal.is_finite() && self.velocity.is_finite()) {
             return Err(TemporaryError::NonFinite(id));
         }
         if self.segment.a == self.segment.b {
             return Err(TemporaryError::ZeroLength(id));
         }
-        let len = self.normal.length();
-        if len <= f32::MIN_POSITIVE {
-            return Err(TemporaryError::ZeroNormal(id));
-        }
-        self.normal = self.normal / len + Vec2::ZERO;
+        // (Finite here, so `None` means the zero vector.)
+        self.normal = unit_normal(self.normal).ok_or(TemporaryError::ZeroNormal(id))?;
         Ok(self)
     }
 }

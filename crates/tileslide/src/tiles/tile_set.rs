@@ -16,6 +16,9 @@ pub enum TileSetError {
         /// Height given.
         h: f32,
     },
+    /// Tile id `u32::MAX` is reserved (the map uses it for empty cells).
+    #[error("tile id {} is reserved", u32::MAX)]
+    ReservedId,
     /// The shape of tile `id` is invalid.
     #[error("tile {id}: {source}")]
     InvalidTile {
@@ -64,8 +67,12 @@ impl TileSet {
         self.tile_size
     }
 
-    /// Adds (or replaces) tile `id`. Refused if a segment leaves the tile's rectangle.
+    /// Adds (or replaces) tile `id`. Refused if a segment leaves the tile's rectangle, or for
+    /// the reserved id `u32::MAX`.
     pub fn insert(&mut self, id: TileId, shape: TileShape) -> Result<(), TileSetError> {
+        if id.0 == u32::MAX {
+            return Err(TileSetError::ReservedId);
+        }
         shape
             .check_inside_tile(self.tile_size)
             .map_err(|source| TileSetError::InvalidTile { id, source })?;
