@@ -16,9 +16,9 @@ pub struct MapArgs {
     /// The tile set for maps that need one (Replica Island: `collision.bin`).
     #[arg(long, value_name = "FILE")]
     pub tileset: Option<PathBuf>,
-    /// Cell size of an ASCII map.
-    #[arg(long, value_name = "SIZE", default_value_t = 1.0)]
-    pub cell: f32,
+    /// Cell size of an ASCII map (default 1).
+    #[arg(long, value_name = "SIZE")]
+    pub cell: Option<f32>,
 }
 
 /// The kind of map file, from its extension.
@@ -64,9 +64,15 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
                     args.map.display()
                 );
             }
-            ascii::load(&args.map, args.cell)?
+            ascii::load(&args.map, args.cell.unwrap_or(1.0))?
         }
         MapFormat::ReplicaIsland => {
+            if args.cell.is_some() {
+                bail!(
+                    "{}: --cell applies to ASCII maps; a Replica Island level's cells are its tiles' 32 pixels",
+                    args.map.display()
+                );
+            }
             let Some(tileset) = &args.tileset else {
                 bail!(
                     "{}: a Replica Island level needs its tile set: add --tileset collision.bin",

@@ -213,6 +213,16 @@ fn replica_level_needs_its_tile_set_and_casts_in_pixels() {
     assert!(!o.status.success());
     assert!(stderr(&o).contains("--tileset"), "{}", stderr(&o));
     let o = tileslide(&[
+        "info",
+        level.to_str().unwrap(),
+        "--tileset",
+        set.to_str().unwrap(),
+        "--cell",
+        "2",
+    ]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("--cell"), "{}", stderr(&o));
+    let o = tileslide(&[
         "raycast",
         level.to_str().unwrap(),
         "--tileset",

@@ -108,3 +108,19 @@ fn tile_id_u32_max_is_reserved() {
         Err(TileSetError::ReservedId)
     );
 }
+
+#[test]
+fn cell_at_agrees_with_cell_corner_for_awkward_cell_sizes() {
+    for size in [0.1f32, 0.3, 0.7, 1.1, 3.3, 32.0] {
+        let set = Arc::new(TileSet::new(Vec2::splat(size)).unwrap());
+        let map = TileMap::new(set, 40, 3, Vec2::new(0.1, 0.1)).unwrap();
+        for col in 0..40 {
+            let cell = Cell::new(col, 1);
+            assert_eq!(
+                map.cell_at(map.cell_corner(cell)),
+                Some(cell),
+                "size {size}, col {col}"
+            );
+        }
+    }
+}

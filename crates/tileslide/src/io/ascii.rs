@@ -145,12 +145,13 @@ pub fn parse(text: &str, path: impl AsRef<Path>, cell: f32) -> Result<TileMap, L
     if height == 0 || width == 0 {
         return Err(err(Location::File, LoadErrorKind::NoRows));
     }
-    if width as u64 * height as u64 > MAX_CELLS {
+    let cells = width as u64 * height as u64;
+    if cells > MAX_CELLS {
         return Err(err(
             Location::File,
             LoadErrorKind::BadSize {
                 field: "width × height",
-                value: (width * height) as i64,
+                value: cells as i64,
                 reason: format!("more than {MAX_CELLS} cells"),
             },
         ));

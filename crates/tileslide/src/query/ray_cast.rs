@@ -113,7 +113,8 @@ impl TileMap {
         best.map(|found| self.make_hit(found, best_t, p0, delta))
     }
 
-    /// Every segment the ray hits, sorted by `t` (ties in walk order).
+    /// Every segment the ray hits, sorted by `t` (ties: temporary segments first, then by
+    /// cell row, column and index), each once.
     /// Same rules as [`cast_ray`](Self::cast_ray).
     #[must_use]
     pub fn cast_ray_all(&self, ray: Ray, filter: &RayFilter) -> Vec<RayHit> {
@@ -135,28 +136,29 @@ impl TileMap {
         let test = SegmentTest::new(p0, delta, filter);
         let starts = self.store.starts();
         let hot = self.store.hot();
-        let temporaries = out.len();
         walk(&self.grid_ray(p0, delta), 1.0, |index, _| {
             for (i, s) in cell_segments(starts, hot, index).iter().enumerate() {
-                let Some(t) = test.hit(s) else { continue };
-                let cell = self.cell_of(index);
-                let segment = SegmentRef {
-                    cell,
-                    index: i as u32,
-                };
-                // A cell can be visited twice (a start cell that is also a corner's side
-                // cell); each segment is reported once.
-                let seen = out[temporaries..].iter().any(
-                    |h| matches!(h.source, SegmentSource::Tile { segment: s, .. } if s == segment),
-                );
-                if !seen {
-                    out.push(self.make_hit(Found::Tile(cell, index, i as u32), t, p0, delta));
+                if let Some(t) = test.hit(s) {
+                    let found = Found::Tile(self.cell_of(index), index, i as u32);
+                    out.push(self.make_hit(found, t, p0, delta));
                 }
             }
             false
         });
-        // Stable: ties keep walk order (temporary segments first).
-        out.sort_by(|a, b| a.t.total_cmp(&b.t));
+        // By `t`, then temporary segments first, then by cell and index. A cell can be
+        // visited twice (a start cell that is also a corner's side cell): its hits are then
+        // identical and adjacent after the sort, and are reported once.
+        let key = |h: &RayHit| match h.source {
+            SegmentSource::Temporary { index, .. } => (0, index, 0, 0),
+            SegmentSource::Tile { segment, .. } => (
+                1,
+                segment.cell.row as usize,
+                segment.cell.col,
+                segment.index,
+            ),
+        };
+        out.sort_by(|a, b| a.t.total_cmp(&b.t).then_with(|| key(a).cmp(&key(b))));
+        out.dedup_by(|a, b| a.t == b.t && key(a) == key(b));
     }
 
     /// The closest-hit walk for the rays the fast walk declines (kept out of line so the

@@ -419,19 +419,33 @@ impl TileMap {
     }
 
     /// The cell that contains world point `p` (cells are half-open), or `None` outside the
-    /// map or for a non-finite point.
+    /// map or for a non-finite point. Consistent with [`cell_corner`](Self::cell_corner):
+    /// a point exactly on a cell's corner is in that cell, whatever the rounding of the
+    /// cell size.
     #[must_use]
     pub fn cell_at(&self, p: Vec2) -> Option<Cell> {
         let g = ((p - self.origin) * self.inv_cell_size).floor();
-        if !g.is_finite()
-            || g.x < 0.0
-            || g.y < 0.0
-            || g.x >= self.width as f32
-            || g.y >= self.height as f32
-        {
+        if !g.is_finite() {
             return None;
         }
-        Some(Cell::new(g.x as u32, g.y as u32))
+        // `floor` of the scaled point can land one cell off next to a boundary: correct it
+        // against the corners `cell_corner` computes, which is what the cells are.
+        let corner = |c: f32, r: f32| self.origin + Vec2::new(c, r) * self.cell_size;
+        let fix = |g: f32, at: &dyn Fn(f32) -> f32, p: f32| {
+            if p < at(g) {
+                g - 1.0
+            } else if p >= at(g + 1.0) {
+                g + 1.0
+            } else {
+                g
+            }
+        };
+        let col = fix(g.x, &|c| corner(c, 0.0).x, p.x);
+        let row = fix(g.y, &|r| corner(0.0, r).y, p.y);
+        if col < 0.0 || row < 0.0 || col >= self.width as f32 || row >= self.height as f32 {
+            return None;
+        }
+        Some(Cell::new(col as u32, row as u32))
     }
 
     /// Sum of the tile segments of every placed tile, before seam culling.
@@ -477,7 +491,9 @@ impl TileMap {
         })
     }
 
-    /// The active segment `r` names, if it still exists.
+    /// The active segment `r` names, or `None` if its cell is outside the map or has fewer
+    /// segments. A reference is only meaningful until its cell or a neighbour is edited:
+    /// after an edit the same index may name another segment of the cell.
     #[must_use]
     pub fn active_segment(&self, r: SegmentRef) -> Option<ActiveSegment> {
         self.active_segments(r.cell).nth(r.index as usize)
