@@ -16,9 +16,8 @@ use glam::Vec2;
 
 use super::segment_test::{SegmentTest, cell_segments};
 use super::traversal::{GridRay, TOUCH_TOLERANCE};
-use crate::tiles::store::{
-    FACE_MAX_X, FACE_MAX_Y, FACE_MIN_X, FACE_MIN_Y, HotSegment, KIND_GENERAL,
-};
+use crate::tiles::face_kind::{FACE_MAX_X, FACE_MAX_Y, FACE_MIN_X, FACE_MIN_Y, KIND_GENERAL};
+use crate::tiles::store::HotSegment;
 
 /// How the fast walk ended. Small, so it comes back in a register.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -6,7 +6,8 @@ use super::traversal::{GridRay, walk};
 use super::{RayFilter, RayHit, SegmentSource};
 use crate::geometry::Ray;
 use crate::geometry::ray::solve;
-use crate::tiles::store::{SegmentRef, face_index, face_normal, face_segment};
+use crate::tiles::SegmentRef;
+use crate::tiles::face_kind::{face_index, face_normal, face_segment};
 use crate::tiles::{Cell, SegmentFlags, TileId, TileMap};
 
 impl TileMap {

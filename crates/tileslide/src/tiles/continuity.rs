@@ -8,7 +8,8 @@
 use glam::Vec2;
 
 use super::Cell;
-use super::store::{SegmentRef, SegmentStore};
+use super::SegmentRef;
+use super::store::SegmentStore;
 
 /// Two ends closer than this (in cells) are the same point.
 const JOIN_TOLERANCE: f32 = 1e-4;

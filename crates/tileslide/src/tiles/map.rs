@@ -4,9 +4,11 @@ use std::sync::Arc;
 use glam::Vec2;
 use thiserror::Error;
 
+use super::SegmentRef;
 use super::continuity::link_cell;
 use super::culling::{Side, active_segments};
-use super::store::{HotSegment, SegmentRef, SegmentStore, canonical_faces, kind_of};
+use super::face_kind::{canonical_faces, kind_of};
+use super::store::{HotSegment, SegmentStore};
 use super::{Cell, SegmentFlags, TemporaryError, TemporarySegment, TileId, TileSet, TileShape};
 use crate::geometry::{Aabb, Segment};
 
