@@ -77,9 +77,10 @@ pub struct RaysReport {
 }
 
 /// Why the benchmark could not run.
-#[derive(Debug)]
+#[derive(Debug, thiserror::Error)]
 pub enum RaysError {
     /// The generated map does not match the fingerprint BENCHMARKS.md publishes.
+    #[error("scene {scene}: map fingerprint {found} differs from the published {expected}")]
     FingerprintMismatch {
         /// Scene name.
         scene: &'static str,
@@ -89,29 +90,12 @@ pub enum RaysError {
         found: String,
     },
     /// The map could not be built.
+    #[error("cannot build the map: {0}")]
     Map(TileMapError),
     /// Zero rays or zero passes.
+    #[error("the benchmark needs at least one ray and one pass")]
     Empty,
 }
-
-impl std::fmt::Display for RaysError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            RaysError::FingerprintMismatch {
-                scene,
-                expected,
-                found,
-            } => write!(
-                f,
-                "scene {scene}: map fingerprint {found} differs from the published {expected}"
-            ),
-            RaysError::Map(e) => write!(f, "cannot build the map: {e}"),
-            RaysError::Empty => write!(f, "the benchmark needs at least one ray and one pass"),
-        }
-    }
-}
-
-impl std::error::Error for RaysError {}
 
 /// Runs the benchmark; `progress(done, total)` is called after each timed pass.
 pub fn run_rays(

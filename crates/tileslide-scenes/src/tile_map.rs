@@ -1,29 +1,27 @@
-use std::fmt;
-
+use thiserror::Error;
 use tileslide::io::ascii;
 use tileslide::{MapError, TileMap, TileSetError, Vec2};
 
 use crate::SolidGrid;
 
 /// Why a grid could not become a tile map.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Error)]
 pub enum TileMapError {
     /// The built-in tile set was refused.
+    #[error(transparent)]
     TileSet(TileSetError),
     /// The map was refused (an empty or oversized grid).
+    #[error(transparent)]
     Map(MapError),
+    /// A side longer than a map can be.
+    #[error("a {width}×{height} grid is larger than a map can be")]
+    TooLarge {
+        /// Grid width.
+        width: usize,
+        /// Grid height.
+        height: usize,
+    },
 }
-
-impl fmt::Display for TileMapError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            TileMapError::TileSet(e) => write!(f, "{e}"),
-            TileMapError::Map(e) => write!(f, "{e}"),
-        }
-    }
-}
-
-impl std::error::Error for TileMapError {}
 
 impl SolidGrid {
     /// The grid as a tileslide map: each solid cell holds the ASCII tile set's solid square
@@ -37,10 +35,10 @@ impl SolidGrid {
             .collect();
         let (w, h) = (u32::try_from(self.width), u32::try_from(self.height));
         let (Ok(w), Ok(h)) = (w, h) else {
-            return Err(TileMapError::Map(MapError::TooLarge {
-                width: u32::MAX,
-                height: u32::MAX,
-            }));
+            return Err(TileMapError::TooLarge {
+                width: self.width,
+                height: self.height,
+            });
         };
         TileMap::from_tiles(std::sync::Arc::new(set), w, h, Vec2::ZERO, &tiles)
             .map_err(TileMapError::Map)
