@@ -39,7 +39,7 @@
 //! # Ok::<(), tileslide::io::LoadError>(())
 //! ```
 
-pub mod geometry;
+mod geometry;
 pub mod io;
 mod query;
 mod tiles;
