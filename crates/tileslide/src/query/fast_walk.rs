@@ -187,48 +187,53 @@ pub(crate) fn fast_walk(
     };
     // The start cell is not entered through any face.
     let mut entered: u8 = 0;
+    // Four steps to a turn of the outer loop: measured about 6 % faster on the rays scene
+    // (each step's branches get their own address in the predictor, and the loop's own
+    // branch runs a quarter as often).
     loop {
-        // Not `f32::min`: its NaN handling costs instructions, and no NaN gets here.
-        let t_exit = if tx < ty { tx } else { ty };
-        let kind = kinds[index];
-        if kind != 0 {
-            if kind & entered & face_mask != 0 {
-                // The cell from the grid lines ahead of it: no division of `index`.
-                let col = line_x as i32 - (step_x > 0) as i32;
-                let row = line_y as i32 - (step_y > 0) as i32;
-                return FastWalk::Face {
-                    index: index as u32,
-                    col: col as u32,
-                    row: row as u32,
-                    face: entered,
-                    kind,
-                };
+        for _ in 0..4 {
+            // Not `f32::min`: its NaN handling costs instructions, and no NaN gets here.
+            let t_exit = if tx < ty { tx } else { ty };
+            let kind = kinds[index];
+            if kind != 0 {
+                if kind & entered & face_mask != 0 {
+                    // The cell from the grid lines ahead of it: no division of `index`.
+                    let col = line_x as i32 - (step_x > 0) as i32;
+                    let row = line_y as i32 - (step_y > 0) as i32;
+                    return FastWalk::Face {
+                        index: index as u32,
+                        col: col as u32,
+                        row: row as u32,
+                        face: entered,
+                        kind,
+                    };
+                }
+                if kind & general_mask != 0
+                    && test_cell(data, test, index, t_exit - tol_t, best_t, best)
+                {
+                    return FastWalk::Done;
+                }
             }
-            if kind & general_mask != 0
-                && test_cell(data, test, index, t_exit - tol_t, best_t, best)
-            {
+            // Within the tolerance of a corner, both side cells must be visited, which only
+            // the general walk does. Checked before the end of the walk: a ray leaving the map
+            // through a corner touches the side cell still inside it.
+            if (tx - ty).abs() <= tol_t {
+                return FastWalk::Fallback;
+            }
+            if t_exit > t_stop {
                 return FastWalk::Done;
             }
-        }
-        // Within the tolerance of a corner, both side cells must be visited, which only
-        // the general walk does. Checked before the end of the walk: a ray leaving the map
-        // through a corner touches the side cell still inside it.
-        if (tx - ty).abs() <= tol_t {
-            return FastWalk::Fallback;
-        }
-        if t_exit > t_stop {
-            return FastWalk::Done;
-        }
-        if tx < ty {
-            index = index.wrapping_add_signed(index_step_x);
-            line_x += line_step_x;
-            tx = (line_x - o.x) * inv.x;
-            entered = enter_x;
-        } else {
-            index = index.wrapping_add_signed(index_step_y);
-            line_y += line_step_y;
-            ty = (line_y - o.y) * inv.y;
-            entered = enter_y;
+            if tx < ty {
+                index = index.wrapping_add_signed(index_step_x);
+                line_x += line_step_x;
+                tx = (line_x - o.x) * inv.x;
+                entered = enter_x;
+            } else {
+                index = index.wrapping_add_signed(index_step_y);
+                line_y += line_step_y;
+                ty = (line_y - o.y) * inv.y;
+                entered = enter_y;
+            }
         }
     }
 }
