@@ -337,6 +337,8 @@ proptest! {
                     prop_assert_eq!(s.normal, t.normal);
                     prop_assert_eq!(s.flags, t.flags);
                     prop_assert_eq!(s.tile, id);
+                    // Every active segment runs with its normal on the right of a → b.
+                    prop_assert!(s.segment.delta().perp_dot(s.normal) < 0.0, "{:?}", s);
                 }
             }
         }
