@@ -213,13 +213,18 @@ fn tile_set_nan_coordinate_names_the_tile_id() {
     assert_eq!(e.location, Location::Byte(tile_at as u64));
     assert_eq!(
         e.kind,
-        LoadErrorKind::TileSet(TileSetError::InvalidTile {
-            id: TileId(9),
-            source: ShapeError::NonFinite { segment: 1 },
-        })
+        invalid_tile(9, ShapeError::NonFinite { segment: 1 })
     );
     assert_names_file(&e, "tiles/collision.bin");
     assert!(e.to_string().contains("tile 9"), "{e}");
+}
+
+/// The error kind for tile `id` refused with `source`.
+fn invalid_tile(id: u32, source: ShapeError) -> LoadErrorKind {
+    LoadErrorKind::TileSet(TileSetError::InvalidTile {
+        id: TileId(id),
+        source,
+    })
 }
 
 #[test]
@@ -230,10 +235,7 @@ fn tile_set_infinite_normal_is_refused_as_non_finite() {
     assert_eq!(e.location, Location::Byte(2));
     assert_eq!(
         e.kind,
-        LoadErrorKind::TileSet(TileSetError::InvalidTile {
-            id: TileId(4),
-            source: ShapeError::NonFinite { segment: 0 },
-        })
+        invalid_tile(4, ShapeError::NonFinite { segment: 0 })
     );
 }
 
@@ -244,10 +246,7 @@ fn tile_set_zero_length_segment_names_tile_and_segment() {
     assert_eq!(e.location, Location::Byte(2));
     assert_eq!(
         e.kind,
-        LoadErrorKind::TileSet(TileSetError::InvalidTile {
-            id: TileId(12),
-            source: ShapeError::ZeroLength { segment: 2 },
-        })
+        invalid_tile(12, ShapeError::ZeroLength { segment: 2 })
     );
     assert_names_file(&e, "tiles/collision.bin");
     assert!(e.to_string().contains("tile 12"), "{e}");
@@ -259,10 +258,7 @@ fn tile_set_zero_normal_is_refused() {
     let e = set_err(&tile_set_bytes(&[(5, &[flat])]));
     assert_eq!(
         e.kind,
-        LoadErrorKind::TileSet(TileSetError::InvalidTile {
-            id: TileId(5),
-            source: ShapeError::ZeroNormal { segment: 0 },
-        })
+        invalid_tile(5, ShapeError::ZeroNormal { segment: 0 })
     );
 }
 
