@@ -1,4 +1,5 @@
 //! Whole-scene benchmarks of tileslide against its peers, measured in the same run.
 
+pub mod crowd;
 pub mod peers;
 pub mod rays;

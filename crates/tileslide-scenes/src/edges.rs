@@ -173,18 +173,8 @@ fn for_each_run(
 mod tests {
     use super::*;
 
-    /// Builds a grid from ASCII rows, top row first is row 0 (`#` = solid).
     fn grid(rows: &[&str]) -> SolidGrid {
-        let width = rows.first().map_or(0, |r| r.len());
-        let solid = rows
-            .iter()
-            .flat_map(|r| r.bytes().map(|c| c == b'#'))
-            .collect();
-        SolidGrid {
-            width,
-            height: rows.len(),
-            solid,
-        }
+        SolidGrid::from_rows(rows)
     }
 
     #[test]

@@ -31,6 +31,32 @@ pub struct SolidGrid {
 }
 
 impl SolidGrid {
+    /// A grid drawn as text, one string per row, row 0 first: `#` is solid, anything else
+    /// empty. The width is the first row's length; shorter rows are padded with empty
+    /// cells, longer ones cut.
+    ///
+    /// ```
+    /// # use tileslide_scenes::SolidGrid;
+    /// let grid = SolidGrid::from_rows(&["###", "#.#", "###"]);
+    /// assert_eq!((grid.width, grid.height, grid.solid_count()), (3, 3, 8));
+    /// ```
+    #[must_use]
+    pub fn from_rows(rows: &[&str]) -> Self {
+        let width = rows.first().map_or(0, |r| r.len());
+        let solid = rows
+            .iter()
+            .flat_map(|r| {
+                let bytes = r.as_bytes();
+                (0..width).map(move |x| bytes.get(x) == Some(&b'#'))
+            })
+            .collect();
+        Self {
+            width,
+            height: rows.len(),
+            solid,
+        }
+    }
+
     /// Whether cell `(x, y)` is solid; cells outside the grid are empty (`false`).
     #[must_use]
     pub fn is_solid(&self, x: i64, y: i64) -> bool {

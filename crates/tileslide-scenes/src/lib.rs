@@ -6,7 +6,10 @@
 //! - the maps [`dungeon256`] and [`open256`] (also by name through [`Scene`]),
 //!   as a plain [`SolidGrid`] of solid/empty cells;
 //! - the "rays" scene, [`scene_rays`], with [`reference_hit_distance`] as the
-//!   plain grid walk that defines what counts as a hit.
+//!   plain grid walk that defines what counts as a hit;
+//! - the "crowd" scene, [`scene_crowd`] (circles of [`CROWD_RADIUS`] on the
+//!   free spots of [`crowd_candidates`], each with a constant velocity), with
+//!   [`audit_crowd`] as the end-of-run check for overlaps and wall penetrations.
 //!
 //! Conventions: cell `(x, y)` covers `[x, x+1] × [y, y+1]`, cells are stored
 //! row-major (`y * width + x`), and cells outside a grid are empty.
@@ -24,6 +27,8 @@
 //! assert!(hits > 900);
 //! ```
 
+mod audit;
+mod crowd;
 mod dungeon;
 mod edges;
 mod grid;
@@ -34,6 +39,8 @@ mod scene;
 mod tile_map;
 pub use tile_map::TileMapError;
 
+pub use audit::{AUDIT_TOLERANCE, CrowdAudit, audit_crowd};
+pub use crowd::{CROWD_RADIUS, CrowdBody, crowd_candidates, scene_crowd};
 pub use dungeon::{dungeon256, open256};
 pub use edges::ExposedEdge;
 pub use grid::SolidGrid;

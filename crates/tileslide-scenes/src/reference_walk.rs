@@ -77,18 +77,8 @@ mod tests {
 
     use super::*;
 
-    /// Builds a grid from ASCII rows, row 0 first (`#` = solid).
     fn grid(rows: &[&str]) -> SolidGrid {
-        let width = rows.first().map_or(0, |r| r.len());
-        let solid = rows
-            .iter()
-            .flat_map(|r| r.bytes().map(|c| c == b'#'))
-            .collect();
-        SolidGrid {
-            width,
-            height: rows.len(),
-            solid,
-        }
+        SolidGrid::from_rows(rows)
     }
 
     fn ray(origin: (f32, f32), dir: (f32, f32), length: f32) -> SceneRay {

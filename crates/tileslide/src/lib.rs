@@ -39,16 +39,22 @@
 //! # Ok::<(), tileslide::io::LoadError>(())
 //! ```
 
+mod bodies;
 mod geometry;
 pub mod io;
 mod query;
 mod tiles;
 
+pub use bodies::{
+    Bodies, Body, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Broadphase,
+    ResolveConfig, ResolveReport, SlideMode, TimeOfImpact,
+};
 pub use geometry::{
-    Aabb, Circle, PARALLEL_TOLERANCE, Ray, RaySegmentHit, Segment, cast_ray_segment,
+    Aabb, Circle, PARALLEL_TOLERANCE, Ray, RaySegmentHit, Segment, SweepHit, cast_ray_segment,
+    sweep_circle_circle, sweep_circle_segment,
 };
 pub use glam::Vec2;
-pub use query::{Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
+pub use query::{CircleHit, Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{
     ActiveSegment, Cell, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError, Owner, SegmentFlags, SegmentRef,
     ShapeError, TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet,

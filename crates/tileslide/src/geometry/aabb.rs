@@ -45,6 +45,21 @@ impl Aabb {
         Self::from_corners(center - half, center + half)
     }
 
+    /// The box grown by `margin` on every side.
+    ///
+    /// ```
+    /// # use tileslide::{Aabb, Vec2};
+    /// let b = Aabb::from_corners(Vec2::ZERO, Vec2::ONE).expand(0.5);
+    /// assert_eq!((b.min, b.max), (Vec2::splat(-0.5), Vec2::splat(1.5)));
+    /// ```
+    #[must_use]
+    pub fn expand(&self, margin: f32) -> Self {
+        Self {
+            min: self.min - Vec2::splat(margin),
+            max: self.max + Vec2::splat(margin),
+        }
+    }
+
     /// Width and height.
     #[must_use]
     pub fn size(&self) -> Vec2 {

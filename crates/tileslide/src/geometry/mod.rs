@@ -9,9 +9,12 @@ mod circle;
 mod normal;
 pub(crate) mod ray;
 mod segment;
+mod sweep;
 
 pub use aabb::Aabb;
 pub use circle::Circle;
 pub(crate) use normal::unit_normal;
 pub use ray::{PARALLEL_TOLERANCE, Ray, RaySegmentHit, cast_ray_segment};
 pub use segment::Segment;
+pub(crate) use sweep::bisect;
+pub use sweep::{SweepHit, sweep_circle_circle, sweep_circle_segment};

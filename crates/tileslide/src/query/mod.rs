@@ -1,6 +1,7 @@
 //! Queries against a [`TileMap`](crate::TileMap) and its temporary segments: ray casts by
-//! exact grid traversal, and overlap and point queries.
+//! exact grid traversal, circle casts, and overlap and point queries.
 
+mod circle_cast;
 mod fast_walk;
 mod filter;
 mod hit;
@@ -9,6 +10,8 @@ mod ray_cast;
 mod segment_test;
 mod traversal;
 
+pub use circle_cast::CircleHit;
+pub(crate) use circle_cast::Wall;
 pub use filter::{Faces, RayFilter};
 pub use hit::{RayHit, SegmentSource};
 pub use overlap::SegmentOverlap;

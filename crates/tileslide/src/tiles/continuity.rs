@@ -4,15 +4,25 @@
 //! A resolver sliding a circle along a floor asks this at every seam: if the floor continues
 //! into a collinear (or concave) neighbour, the end point is not a corner and must not push
 //! the circle back. This is the information Box2D's chain shapes carry as "ghost vertices".
+//! The same pass records which ends need a rounded cap for a swept circle: an end with no
+//! continuation, one where the surface turns away (a convex corner), and any end of a
+//! one-way platform or where the flags change (there the neighbour does not stop every
+//! circle this segment stops).
 
 use glam::Vec2;
 
 use super::Cell;
+use super::SegmentFlags;
 use super::SegmentRef;
-use super::store::SegmentStore;
+use super::store::{CAP_A, CAP_B, HotSegment, SegmentStore};
 
 /// Two ends closer than this (in cells) are the same point.
 const JOIN_TOLERANCE: f32 = 1e-4;
+
+/// A neighbour turns away (a convex corner) when its normal leans along this segment's
+/// outward direction at the shared end by more than this cosine; below it the surface is
+/// flat or concave there and the end needs no cap.
+const CONVEX_COSINE: f32 = 1e-4;
 
 /// Recomputes the links of every active segment in cell `(col, row)` from the active
 /// segments of that cell and its eight neighbours.
@@ -34,8 +44,10 @@ pub(crate) fn link_cell(
     for i in 0..count {
         let seg = store.cell(index)[i];
         let mut ends = [None; 2];
+        let mut caps = CAP_A | CAP_B;
+        let along = seg.e.normalize_or_zero();
         for (k, end) in [seg.a, seg.b()].into_iter().enumerate() {
-            let mut best: Option<(f32, SegmentRef)> = None;
+            let mut best: Option<(f32, SegmentRef, HotSegment)> = None;
             for dr in -1i64..=1 {
                 for dc in -1i64..=1 {
                     let (c, r) = (col as i64 + dc, row as i64 + dr);
@@ -54,21 +66,32 @@ pub(crate) fn link_cell(
                         if !touches || score < -0.999 {
                             continue;
                         }
-                        if best.is_none_or(|(s, _)| score > s) {
+                        if best.is_none_or(|(s, _, _)| score > s) {
                             let cell = Cell::new(c as u32, r as u32);
-                            best = Some((
-                                score,
-                                SegmentRef {
-                                    cell,
-                                    index: j as u32,
-                                },
-                            ));
+                            let link = SegmentRef {
+                                cell,
+                                index: j as u32,
+                            };
+                            best = Some((score, link, *other));
                         }
                     }
                 }
             }
-            ends[k] = best.map(|(_, r)| r);
+            ends[k] = best.map(|(_, r, _)| r);
+            // The end's outward direction: back along the segment at `a`, forward at `b`.
+            let outward = if k == 0 { -along } else { along };
+            // The neighbour's flat side covers this end only for circles in front of it,
+            // and only for bodies it stops too: so only a neighbour with the same flags,
+            // and not a one-way platform (whose back side a circle can come from).
+            if let Some((_, _, other)) = best
+                && other.normal.dot(outward) <= CONVEX_COSINE
+                && other.flags == seg.flags
+                && !seg.flags.contains(SegmentFlags::ONE_WAY)
+            {
+                caps &= !(if k == 0 { CAP_A } else { CAP_B });
+            }
         }
         store.links_mut(index)[i] = ends;
+        store.caps_mut(index)[i] = caps;
     }
 }

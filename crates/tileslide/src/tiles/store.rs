@@ -12,6 +12,12 @@ use glam::Vec2;
 
 use super::{SegmentFlags, SegmentRef};
 
+/// Cap bit of a segment's `a` end: the surface does not continue from there into a collinear
+/// or concave neighbour, so a swept circle must round it (see `continuity`).
+pub(crate) const CAP_A: u8 = 1;
+/// Cap bit of a segment's `b` end.
+pub(crate) const CAP_B: u8 = 2;
+
 /// `starts` entry of a cell with no active segments.
 pub(crate) const NO_SEGMENTS: u32 = u32::MAX;
 
@@ -50,6 +56,9 @@ pub(crate) struct SegmentStore {
     kinds: Vec<u8>,
     hot: Vec<HotSegment>,
     links: Vec<Links>,
+    /// Per active segment, which ends need a rounded cap for a swept circle (see
+    /// [`CAP_A`]): set with the links.
+    caps: Vec<u8>,
     /// Starts of unused blocks, by size class (see `class_of`).
     free: Vec<Vec<u32>>,
     active: usize,
@@ -120,6 +129,16 @@ impl SegmentStore {
         &mut self.links[range]
     }
 
+    /// The cap bits of the cell's active segments, in order.
+    pub fn caps(&self, index: usize) -> &[u8] {
+        &self.caps[self.range(index)]
+    }
+
+    pub fn caps_mut(&mut self, index: usize) -> &mut [u8] {
+        let range = self.range(index);
+        &mut self.caps[range]
+    }
+
     /// True when cells with these segments fit: none has more than `MAX_CELL_SEGMENTS`,
     /// and new blocks for all of them keep pool indices below [`NO_SEGMENTS`] (checked
     /// before anything changes, so a refused edit leaves the map as it was).
@@ -135,7 +154,7 @@ impl SegmentStore {
     }
 
     /// Replaces the active segments of cell `index` (their `count` is set here) and its
-    /// summary `kind` (see [`kind_of`]); their links are cleared. The caller has checked
+    /// summary `kind` (see [`kind_of`]); their links are cleared and both ends capped. The caller has checked
     /// [`has_room_for`](Self::has_room_for).
     pub fn set_cell(&mut self, index: usize, segments: &[HotSegment], kind: u8) {
         self.kinds[index] = kind;
@@ -159,6 +178,7 @@ impl SegmentStore {
                 let start = self.hot.len();
                 self.hot.resize(start + capacity, segments[0]);
                 self.links.resize(start + capacity, [None; 2]);
+                self.caps.resize(start + capacity, CAP_A | CAP_B);
                 start
             }
         };
@@ -170,6 +190,7 @@ impl SegmentStore {
             *slot = HotSegment { count, ..*s };
         }
         self.links[start..start + segments.len()].fill([None; 2]);
+        self.caps[start..start + segments.len()].fill(CAP_A | CAP_B);
         self.starts[index] = start as u32;
     }
 }

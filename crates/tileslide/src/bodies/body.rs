@@ -1,0 +1,173 @@
+//! What a body is: its shape (one circle or several at fixed offsets), its collision filter
+//! and the caller's data.
+
+use glam::Vec2;
+
+use super::BodyError;
+use crate::geometry::Circle;
+use crate::tiles::SegmentFlags;
+
+/// A body's shape: circles at fixed offsets from the body's position (a compound body, for
+/// an object a single circle fits badly). Bodies do not rotate.
+///
+/// ```
+/// # use tileslide::{BodyShape, Circle, Vec2};
+/// let knight = BodyShape::circle(0.3)?;
+/// assert_eq!(knight.bounding_radius(), 0.3);
+/// // A cart: two wheels.
+/// let cart = BodyShape::compound([
+///     Circle::new(Vec2::new(-0.4, 0.0), 0.25),
+///     Circle::new(Vec2::new(0.4, 0.0), 0.25),
+/// ])?;
+/// assert_eq!(cart.circles().len(), 2);
+/// assert!((cart.bounding_radius() - 0.65).abs() < 1e-6);
+/// assert!(BodyShape::circle(0.0).is_err());
+/// # Ok::<(), tileslide::BodyError>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct BodyShape {
+    circles: Vec<Circle>,
+}
+
+impl BodyShape {
+    /// One circle of `radius`, centred on the body's position.
+    ///
+    /// # Errors
+    /// [`BodyError::InvalidRadius`] unless the radius is positive and finite.
+    pub fn circle(radius: f32) -> Result<Self, BodyError> {
+        Self::compound([Circle::new(Vec2::ZERO, radius)])
+    }
+
+    /// Circles whose centres are offsets from the body's position.
+    ///
+    /// # Errors
+    /// [`BodyError::EmptyShape`] without circles, [`BodyError::InvalidRadius`] for a radius
+    /// that is not positive and finite, [`BodyError::InvalidOffset`] for a non-finite offset
+    /// (each naming the circle's index).
+    pub fn compound(circles: impl IntoIterator<Item = Circle>) -> Result<Self, BodyError> {
+        let circles: Vec<Circle> = circles.into_iter().collect();
+        if circles.is_empty() {
+            return Err(BodyError::EmptyShape);
+        }
+        for (index, c) in circles.iter().enumerate() {
+            if !(c.radius > 0.0 && c.radius.is_finite()) {
+                return Err(BodyError::InvalidRadius {
+                    index,
+                    radius: c.radius,
+                });
+            }
+            if !c.center.is_finite() {
+                return Err(BodyError::InvalidOffset {
+                    index,
+                    offset: c.center,
+                });
+            }
+        }
+        Ok(Self { circles })
+    }
+
+    /// The circles, centres relative to the body's position.
+    #[must_use]
+    pub fn circles(&self) -> &[Circle] {
+        &self.circles
+    }
+
+    /// The radius of the smallest circle around the body's position that holds the shape.
+    #[must_use]
+    pub fn bounding_radius(&self) -> f32 {
+        self.circles
+            .iter()
+            .map(|c| c.center.length() + c.radius)
+            .fold(0.0, f32::max)
+    }
+}
+
+/// Which bodies a body collides with, and which wall segments stop it.
+///
+/// Two bodies collide when each one's `groups` meets the other's `collides_with`.
+///
+/// ```
+/// # use tileslide::{BodyFilter, SegmentFlags};
+/// const HEROES: u32 = 1 << 0;
+/// const GHOSTS: u32 = 1 << 1;
+/// let hero = BodyFilter { groups: HEROES, ..BodyFilter::default() };
+/// // Ghosts pass through heroes and walls, but not through each other.
+/// let ghost = BodyFilter { groups: GHOSTS, collides_with: GHOSTS, walls: SegmentFlags::NONE };
+/// assert!(!hero.collides(&ghost));
+/// assert!(ghost.collides(&ghost));
+/// assert!(hero.collides(&hero));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BodyFilter {
+    /// The groups the body belongs to (bits).
+    pub groups: u32,
+    /// The groups it collides with.
+    pub collides_with: u32,
+    /// A wall segment stops the body when it has one of these flags.
+    pub walls: SegmentFlags,
+}
+
+impl Default for BodyFilter {
+    /// Group 1, collides with every group and every wall segment.
+    fn default() -> Self {
+        Self {
+            groups: 1,
+            collides_with: u32::MAX,
+            walls: SegmentFlags::ALL,
+        }
+    }
+}
+
+impl BodyFilter {
+    /// True when bodies with these two filters collide.
+    #[must_use]
+    pub fn collides(&self, other: &BodyFilter) -> bool {
+        self.groups & other.collides_with != 0 && other.groups & self.collides_with != 0
+    }
+}
+
+/// Everything needed to add a body.
+///
+/// ```
+/// # use tileslide::{BodyDesc, BodyFilter, BodyShape, Vec2};
+/// let desc = BodyDesc::new(Vec2::new(3.5, 2.5), BodyShape::circle(0.3)?).with_user_data(42);
+/// assert_eq!(desc.user_data, 42);
+/// assert_eq!(desc.filter, BodyFilter::default());
+/// # Ok::<(), tileslide::BodyError>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct BodyDesc {
+    /// Where the body is.
+    pub position: Vec2,
+    /// Its shape.
+    pub shape: BodyShape,
+    /// What it collides with.
+    pub filter: BodyFilter,
+    /// The caller's data (an entity id, say); tileslide never reads it.
+    pub user_data: u64,
+}
+
+impl BodyDesc {
+    /// A body at `position` with `shape`, the default filter and user data 0.
+    #[must_use]
+    pub fn new(position: Vec2, shape: BodyShape) -> Self {
+        Self {
+            position,
+            shape,
+            filter: BodyFilter::default(),
+            user_data: 0,
+        }
+    }
+
+    /// The same, with `filter`.
+    #[must_use]
+    pub fn with_filter(self, filter: BodyFilter) -> Self {
+        Self { filter, ..self }
+    }
+
+    /// The same, with `user_data`.
+    #[must_use]
+    pub fn with_user_data(self, user_data: u64) -> Self {
+        Self { user_data, ..self }
+    }
+}

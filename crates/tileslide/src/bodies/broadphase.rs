@@ -1,0 +1,224 @@
+//! Broadphase: the pairs of boxes that overlap, each once, found with a uniform grid or by
+//! sweep and prune. Both are checked against the all-pairs reference by a model test.
+//!
+//! Boxes are the regions a circle can reach during a step (its circle grown by its move),
+//! so a pair that can meet is never missed.
+
+use glam::Vec2;
+
+use super::config::Broadphase;
+use crate::geometry::Aabb;
+
+/// Most grid cells the uniform grid allocates; beyond it, its cells grow.
+const MAX_GRID_CELLS: usize = 1 << 22;
+
+/// Reusable buffers.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct PairFinder {
+    /// Uniform grid: per cell, the start of its run in `entries` (prefix sums).
+    starts: Vec<u32>,
+    entries: Vec<u32>,
+    /// Sweep and prune: box indices by `min.x`, kept between calls (nearly sorted when the
+    /// boxes move little, so insertion sort is close to linear).
+    order: Vec<u32>,
+}
+
+impl PairFinder {
+    /// Appends to `pairs` every `(i, j)`, `i < j`, whose closed boxes share a point, each
+    /// once. The order is deterministic for given boxes.
+    pub fn find(&mut self, kind: Broadphase, boxes: &[Aabb], pairs: &mut Vec<(u32, u32)>) {
+        match kind {
+            Broadphase::UniformGrid => self.grid(boxes, pairs),
+            Broadphase::SweepAndPrune => self.sweep_and_prune(boxes, pairs),
+        }
+    }
+
+    fn grid(&mut self, boxes: &[Aabb], pairs: &mut Vec<(u32, u32)>) {
+        let Some((lo, hi, largest)) = extent(boxes) else {
+            return;
+        };
+        // Cells at least as large as the largest box: a box overlaps at most 2 × 2 cells.
+        let span = hi - lo;
+        let mut size = largest
+            .max(span.max_element() / 4096.0)
+            .max(f32::MIN_POSITIVE);
+        let dims = |size: f32| ((span.x / size) as usize + 1, (span.y / size) as usize + 1);
+        while dims(size).0.saturating_mul(dims(size).1) > MAX_GRID_CELLS {
+            size *= 2.0;
+        }
+        let (w, h) = dims(size);
+        let inv = 1.0 / size;
+        let cell_of = |p: Vec2| {
+            let c = ((p - lo) * inv).min(Vec2::new((w - 1) as f32, (h - 1) as f32));
+            (c.x as usize, c.y as usize)
+        };
+        // Counting sort of (cell, box) entries.
+        self.starts.clear();
+        self.starts.resize(w * h + 1, 0);
+        for b in boxes {
+            let ((c0, r0), (c1, r1)) = (cell_of(b.min), cell_of(b.max));
+            for r in r0..=r1 {
+                for c in c0..=c1 {
+                    self.starts[r * w + c + 1] += 1;
+                }
+            }
+        }
+        for i in 1..self.starts.len() {
+            self.starts[i] += self.starts[i - 1];
+        }
+        self.entries.clear();
+        self.entries.resize(self.starts[w * h] as usize, 0);
+        let mut fill = self.starts.clone();
+        for (i, b) in boxes.iter().enumerate() {
+            let ((c0, r0), (c1, r1)) = (cell_of(b.min), cell_of(b.max));
+            for r in r0..=r1 {
+                for c in c0..=c1 {
+                    let slot = &mut fill[r * w + c];
+                    self.entries[*slot as usize] = i as u32;
+                    *slot += 1;
+                }
+            }
+        }
+        // A pair shares up to four cells; it is reported only from the cell that holds the
+        // corner `max(min_i, min_j)`, which both boxes contain.
+        for cell in 0..w * h {
+            let run = &self.entries[self.starts[cell] as usize..self.starts[cell + 1] as usize];
+            for (k, &i) in run.iter().enumerate() {
+                for &j in &run[k + 1..] {
+                    let (a, b) = (&boxes[i as usize], &boxes[j as usize]);
+                    if !a.overlaps(b) {
+                        continue;
+                    }
+                    let (c, r) = cell_of(a.min.max(b.min));
+                    if r * w + c == cell {
+                        pairs.push((i.min(j), i.max(j)));
+                    }
+                }
+            }
+        }
+    }
+
+    fn sweep_and_prune(&mut self, boxes: &[Aabb], pairs: &mut Vec<(u32, u32)>) {
+        if self.order.len() != boxes.len() {
+            self.order = (0..boxes.len() as u32).collect();
+        }
+        // Insertion sort by (min.x, index): stable across calls and deterministic.
+        let key = |i: u32| (boxes[i as usize].min.x, i);
+        for k in 1..self.order.len() {
+            let item = self.order[k];
+            let mut j = k;
+            while j > 0 && lt(key(item), key(self.order[j - 1])) {
+                self.order[j] = self.order[j - 1];
+                j -= 1;
+            }
+            self.order[j] = item;
+        }
+        for (k, &i) in self.order.iter().enumerate() {
+            let a = &boxes[i as usize];
+            for &j in &self.order[k + 1..] {
+                let b = &boxes[j as usize];
+                if b.min.x > a.max.x {
+                    break;
+                }
+                if a.overlaps(b) {
+                    pairs.push((i.min(j), i.max(j)));
+                }
+            }
+        }
+    }
+}
+
+/// `(x, i) < (y, j)` with `total_cmp` on the floats (no NaN reaches here, but a sort must
+/// not depend on that).
+fn lt(a: (f32, u32), b: (f32, u32)) -> bool {
+    a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).is_lt()
+}
+
+/// The boxes' common bounds and the largest side of any box, or `None` without boxes.
+fn extent(boxes: &[Aabb]) -> Option<(Vec2, Vec2, f32)> {
+    let first = boxes.first()?;
+    let mut lo = first.min;
+    let mut hi = first.max;
+    let mut largest = 0.0f32;
+    for b in boxes {
+        lo = lo.min(b.min);
+        hi = hi.max(b.max);
+        largest = largest.max(b.size().max_element());
+    }
+    Some((lo, hi, largest))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn brute(boxes: &[Aabb]) -> Vec<(u32, u32)> {
+        let mut out = Vec::new();
+        for i in 0..boxes.len() {
+            for j in i + 1..boxes.len() {
+                if boxes[i].overlaps(&boxes[j]) {
+                    out.push((i as u32, j as u32));
+                }
+            }
+        }
+        out
+    }
+
+    fn sorted(mut v: Vec<(u32, u32)>) -> Vec<(u32, u32)> {
+        v.sort_unstable();
+        v
+    }
+
+    fn boxes_strategy() -> impl Strategy<Value = Vec<Aabb>> {
+        // Mostly small boxes, some large ones, some touching exactly (integer corners).
+        prop::collection::vec(
+            (
+                0u32..40,
+                0u32..40,
+                0u32..4,
+                0u32..4,
+                any::<bool>(),
+                0u32..20,
+            )
+                .prop_map(|(x, y, w, h, big, k)| {
+                    let scale = if big && k == 0 { 8.0 } else { 1.0 };
+                    let min = Vec2::new(x as f32 * 0.5, y as f32 * 0.5);
+                    Aabb::from_corners(min, min + Vec2::new(w as f32, h as f32) * 0.5 * scale)
+                }),
+            0..120,
+        )
+    }
+
+    proptest! {
+        #[test]
+        fn grid_and_sweep_and_prune_match_all_pairs(boxes in boxes_strategy()) {
+            let expected = brute(&boxes);
+            for kind in [Broadphase::UniformGrid, Broadphase::SweepAndPrune] {
+                let mut finder = PairFinder::default();
+                let mut pairs = Vec::new();
+                finder.find(kind, &boxes, &mut pairs);
+                prop_assert_eq!(pairs.len(), expected.len(), "{:?} reported a pair twice or missed one", kind);
+                prop_assert_eq!(sorted(pairs), expected.clone());
+            }
+        }
+    }
+
+    #[test]
+    fn sweep_and_prune_reuses_its_order_when_boxes_move() {
+        let mut finder = PairFinder::default();
+        let mut boxes: Vec<Aabb> = (0..50)
+            .map(|i| Aabb::from_center(Vec2::new(i as f32 * 0.7, 0.0), Vec2::splat(0.4)))
+            .collect();
+        let mut pairs = Vec::new();
+        finder.find(Broadphase::SweepAndPrune, &boxes, &mut pairs);
+        assert_eq!(sorted(pairs.clone()), brute(&boxes));
+        // Reverse the row: the kept order is now fully wrong, and must still give the truth.
+        for (i, b) in boxes.iter_mut().enumerate() {
+            *b = Aabb::from_center(Vec2::new(50.0 - i as f32 * 0.7, 0.0), Vec2::splat(0.4));
+        }
+        pairs.clear();
+        finder.find(Broadphase::SweepAndPrune, &boxes, &mut pairs);
+        assert_eq!(sorted(pairs), brute(&boxes));
+    }
+}

@@ -1,0 +1,300 @@
+//! Circle casts: the first segment a circle moving along a straight line touches.
+//!
+//! Every segment is tested as a capsule ([`sweep_circle_segment`]): its flat front side plus
+//! rounded caps only at the ends where the surface does not continue flat or concave into a
+//! neighbour (recorded with the end links, see `tiles::continuity`). So a circle sliding
+//! along a floor of many tiles sees one flat surface, and rounds convex corners.
+
+use glam::Vec2;
+
+use super::{Faces, RayFilter, SegmentSource};
+use crate::geometry::{Aabb, Segment, SweepHit, sweep_circle_segment};
+use crate::tiles::store::{CAP_A, CAP_B};
+use crate::tiles::{Cell, SegmentFlags, SegmentRef, TileId, TileMap};
+
+/// A circle cast's first contact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CircleHit {
+    /// Fraction of the motion, in `[0, 1]`, at which the circle touches the segment.
+    pub t: f32,
+    /// The circle's centre at that moment.
+    pub center: Vec2,
+    /// Unit contact normal, from the segment towards the centre (the segment's normal on
+    /// its flat side, radial at a rounded end).
+    pub normal: Vec2,
+    /// The point of contact, on the segment.
+    pub point: Vec2,
+    /// The segment's flags.
+    pub flags: SegmentFlags,
+    /// Where the segment comes from.
+    pub source: SegmentSource,
+}
+
+/// A segment as a moving circle sees it: its capsule, front side only.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Wall {
+    pub segment: Segment,
+    pub normal: Vec2,
+    /// Rounded cap at `[a, b]`.
+    pub caps: [bool; 2],
+    pub flags: SegmentFlags,
+    pub source: SegmentSource,
+}
+
+impl Wall {
+    /// The time of impact of a circle of `radius` at `center` moving by `motion`.
+    #[inline]
+    pub fn sweep(&self, center: Vec2, radius: f32, motion: Vec2) -> Option<SweepHit> {
+        sweep_circle_segment(
+            center,
+            radius,
+            motion,
+            &self.segment,
+            self.normal,
+            self.caps,
+        )
+    }
+
+    /// The same segment seen from behind: reversed, so its normal flips and the caps swap.
+    fn back(&self) -> Self {
+        Self {
+            segment: Segment::new(self.segment.b, self.segment.a),
+            normal: -self.normal,
+            caps: [self.caps[1], self.caps[0]],
+            ..*self
+        }
+    }
+}
+
+impl TileMap {
+    /// The first segment a circle of `radius` at `center` touches when it moves by
+    /// `motion`, or `None`.
+    ///
+    /// The whole motion is checked exactly (swept capsules), so a fast circle cannot pass
+    /// through a thin wall. With the default filter a segment blocks only a circle whose
+    /// centre is in front of it and that moves towards it: a circle inside a solid or below
+    /// a one-way platform moves out freely, and one sliding along a surface is not stopped by
+    /// it. [`Faces::Both`] makes segments block from both sides;
+    /// [`Faces::Against`]`(dir)` keeps only segments whose normal opposes `dir`. On equal
+    /// `t`, temporary segments win, then cells row by row. A non-finite input or a radius
+    /// that is not positive hits nothing.
+    ///
+    /// ```
+    /// # use tileslide::{io::ascii, RayFilter, Vec2};
+    /// let map = ascii::parse("\
+    /// #####
+    /// #...#
+    /// #...#
+    /// #####", "doc.txt", 1.0)?;
+    /// // A circle of radius 0.25 moving right from (1.5, 1.5) touches the wall at x = 4.
+    /// let hit = map.cast_circle(Vec2::new(1.5, 1.5), 0.25, Vec2::new(10.0, 0.0), &RayFilter::default()).unwrap();
+    /// assert_eq!(hit.center, Vec2::new(3.75, 1.5));
+    /// assert_eq!(hit.normal, Vec2::new(-1.0, 0.0));
+    /// assert_eq!(hit.point, Vec2::new(4.0, 1.5));
+    /// # Ok::<(), tileslide::io::LoadError>(())
+    /// ```
+    #[must_use]
+    pub fn cast_circle(
+        &self,
+        center: Vec2,
+        radius: f32,
+        motion: Vec2,
+        filter: &RayFilter,
+    ) -> Option<CircleHit> {
+        if !(center.is_finite() && motion.is_finite() && radius > 0.0 && radius.is_finite()) {
+            return None;
+        }
+        let swept = Aabb::from_corners(center, center + motion).expand(radius);
+        let mut walls = Vec::new();
+        self.walls_in(&swept, filter, &mut walls);
+        let mut best: Option<(SweepHit, Wall)> = None;
+        for wall in &walls {
+            let facing = match filter.faces {
+                Faces::Both => [Some(*wall), Some(wall.back())],
+                _ => [Some(*wall), None],
+            };
+            for w in facing.into_iter().flatten() {
+                if let Some(hit) = w.sweep(center, radius, motion)
+                    && best.is_none_or(|(b, _)| hit.t < b.t)
+                {
+                    best = Some((hit, w));
+                }
+            }
+        }
+        best.map(|(hit, wall)| {
+            let at = center + motion * hit.t;
+            CircleHit {
+                t: hit.t,
+                center: at,
+                normal: hit.normal,
+                point: at - hit.normal * radius,
+                flags: wall.flags,
+                source: wall.source,
+            }
+        })
+    }
+
+    /// Appends the temporary segments, then the active segments of the cells (row by row)
+    /// that share a point with `region`, that `filter` lets block a moving circle (flag mask,
+    /// excluded owner, and for [`Faces::Against`] the direction).
+    pub(crate) fn walls_in(&self, region: &Aabb, filter: &RayFilter, out: &mut Vec<Wall>) {
+        let keeps = |normal: Vec2, flags: SegmentFlags| {
+            flags.intersects(filter.mask)
+                && match filter.faces {
+                    Faces::Against(dir) => normal.dot(dir) < 0.0,
+                    _ => true,
+                }
+        };
+        for (index, tmp) in self.temporaries().iter().enumerate() {
+            if filter.exclude_owner == Some(tmp.owner)
+                || !keeps(tmp.normal, tmp.flags)
+                || !region.overlaps_segment(&tmp.segment)
+            {
+                continue;
+            }
+            out.push(Wall {
+                segment: tmp.segment,
+                normal: tmp.normal,
+                caps: [true; 2],
+                flags: tmp.flags,
+                source: SegmentSource::Temporary {
+                    owner: tmp.owner,
+                    index,
+                    velocity: tmp.velocity,
+                },
+            });
+        }
+        for cell in self.cells_overlapping(region) {
+            let index = (cell.row * self.width() + cell.col) as usize;
+            let caps = self.store.caps(index);
+            let tile = self.tile_at_index(index).unwrap_or(TileId(u32::MAX));
+            for (i, (s, &cap)) in self.store.cell(index).iter().zip(caps).enumerate() {
+                if !keeps(s.normal, s.flags) {
+                    continue;
+                }
+                out.push(Wall {
+                    segment: Segment::new(s.a, s.b()),
+                    normal: s.normal,
+                    caps: [cap & CAP_A != 0, cap & CAP_B != 0],
+                    flags: s.flags,
+                    source: SegmentSource::Tile {
+                        segment: SegmentRef {
+                            cell: Cell::new(cell.col, cell.row),
+                            index: i as u32,
+                        },
+                        tile,
+                    },
+                });
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::ascii;
+
+    fn map(text: &str) -> TileMap {
+        ascii::parse(text, "test.txt", 1.0).unwrap()
+    }
+
+    fn v(x: f32, y: f32) -> Vec2 {
+        Vec2::new(x, y)
+    }
+
+    const ROOM: &str = "\
+########
+#......#
+#......#
+#......#
+########";
+
+    #[test]
+    fn a_circle_sliding_along_a_floor_of_many_tiles_is_never_stopped() {
+        let m = map(ROOM);
+        // Resting on the floor (y = 4, y down) at exactly its radius, moving along it over
+        // five seams.
+        let hit = m.cast_circle(v(1.5, 3.75), 0.25, v(6.0, 0.0), &RayFilter::default());
+        // Only the far wall stops it, not a seam.
+        let hit = hit.unwrap();
+        assert_eq!(hit.point.x, 7.0);
+        assert_eq!(hit.normal, v(-1.0, 0.0));
+    }
+
+    #[test]
+    fn convex_corners_are_rounded_and_concave_ones_are_not() {
+        let m = map("\
+......
+......
+..##..
+......");
+        // Moving diagonally past the block's top-left corner (2, 2): touches the rounded end.
+        let hit = m
+            .cast_circle(v(0.5, 0.5), 0.25, v(3.0, 3.0), &RayFilter::default())
+            .unwrap();
+        assert!((hit.point - v(2.0, 2.0)).length() < 1e-5, "{hit:?}");
+        assert!(hit.normal.x < 0.0 && hit.normal.y < 0.0);
+        // The seam between the block's two tiles on its top face has no cap: a circle
+        // moving along the top at its radius is not stopped there.
+        assert!(
+            m.cast_circle(v(2.25, 1.75), 0.25, v(1.5, 0.0), &RayFilter::default())
+                .is_none()
+        );
+    }
+
+    #[test]
+    fn fast_circles_do_not_tunnel_and_back_faces_let_circles_out() {
+        let m = map("\
+..........
+.....#....
+..........");
+        // 1000 cells in one move, straight through the one-cell wall.
+        let hit = m
+            .cast_circle(v(0.5, 1.5), 0.4, v(1000.0, 0.0), &RayFilter::default())
+            .unwrap();
+        assert!((hit.center.x - 4.6).abs() < 1e-3, "{hit:?}");
+        // A circle whose centre is inside the solid cell moves out freely.
+        assert!(
+            m.cast_circle(v(5.5, 1.5), 0.4, v(3.0, 0.0), &RayFilter::default())
+                .is_none()
+        );
+        // Unless both faces count.
+        assert!(
+            m.cast_circle(v(5.5, 1.5), 0.4, v(3.0, 0.0), &RayFilter::both_sides())
+                .is_some()
+        );
+    }
+
+    #[test]
+    fn one_way_platforms_hold_from_above_only() {
+        let m = map("\
+....
+.==.
+....");
+        let down = m.cast_circle(v(1.5, 0.2), 0.1, v(0.0, 2.0), &RayFilter::default());
+        assert!((down.unwrap().center.y - 0.9).abs() < 1e-5);
+        assert!(
+            m.cast_circle(v(1.5, 2.5), 0.1, v(0.0, -2.0), &RayFilter::default())
+                .is_none()
+        );
+    }
+
+    #[test]
+    fn flag_masks_and_bad_input() {
+        let m = map(ROOM);
+        let none = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
+        assert!(
+            m.cast_circle(v(2.0, 2.0), 0.25, v(9.0, 0.0), &none)
+                .is_none()
+        );
+        for (c, r, mv) in [
+            (v(f32::NAN, 2.0), 0.25, v(9.0, 0.0)),
+            (v(2.0, 2.0), 0.0, v(9.0, 0.0)),
+            (v(2.0, 2.0), -1.0, v(9.0, 0.0)),
+            (v(2.0, 2.0), 0.25, v(f32::INFINITY, 0.0)),
+        ] {
+            assert!(m.cast_circle(c, r, mv, &RayFilter::default()).is_none());
+        }
+    }
+}
