@@ -4,8 +4,12 @@ use anyhow::{Result, anyhow};
 use clap::Subcommand;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
+use tileslide_bench::crowd::{
+    CrowdContender, CrowdResult, ParrySegmentsCrowd, ParryVoxelsCrowd, RapierCrowd, TileslideCrowd,
+    run_crowd,
+};
 use tileslide_bench::rays::{RaysConfig, RaysReport, run_rays};
-use tileslide_scenes::Scene;
+use tileslide_scenes::{CROWD_RADIUS, CrowdBody, Scene, SolidGrid, dungeon256, scene_crowd};
 
 #[derive(Subcommand, Debug)]
 pub enum BenchCommand {
@@ -24,6 +28,19 @@ pub enum BenchCommand {
         #[arg(long)]
         json: bool,
     },
+    /// The "crowd" scene: N circles sliding through dungeon256, tileslide vs parry2d shape
+    /// casts (walls as voxels and as segments) vs rapier2d's character controller.
+    Crowd {
+        /// Number of circles (BENCHMARKS.md: 1000, 10000, 50000).
+        #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(1..=74_276))]
+        n: u64,
+        /// Steps (default: 100, or 30 from 50,000 circles as in BENCHMARKS.md).
+        #[arg(long, value_parser = clap::value_parser!(u64).range(1..=100_000))]
+        steps: Option<u64>,
+        /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 fn parse_scene(name: &str) -> Result<Scene, String> {
@@ -32,18 +49,19 @@ fn parse_scene(name: &str) -> Result<Scene, String> {
 }
 
 pub fn run(which: BenchCommand) -> Result<()> {
+    if cfg!(debug_assertions) {
+        eprintln!(
+            "warning: this is a debug build; benchmark figures are only meaningful with --release"
+        );
+    }
     match which {
+        BenchCommand::Crowd { n, steps, json } => crowd(n as usize, steps, json),
         BenchCommand::Rays {
             scene,
             n,
             passes,
             json,
         } => {
-            if cfg!(debug_assertions) {
-                eprintln!(
-                    "warning: this is a debug build; benchmark figures are only meaningful with --release"
-                );
-            }
             let config = RaysConfig {
                 scene,
                 rays: n as usize,
@@ -69,6 +87,77 @@ pub fn run(which: BenchCommand) -> Result<()> {
             Ok(())
         }
     }
+}
+
+/// Builds one crowd contender.
+type MakeContender = fn(&SolidGrid, &[CrowdBody], f32) -> Result<Box<dyn CrowdContender>>;
+
+fn crowd(n: usize, steps: Option<u64>, json: bool) -> Result<()> {
+    let steps = steps.map_or(if n >= 50_000 { 30 } else { 100 }, |s| s as usize);
+    let grid = dungeon256();
+    let bodies = scene_crowd(&grid, n);
+    let contenders: [MakeContender; 4] = [
+        |g, b, r| Ok(Box::new(TileslideCrowd::new(g, b, r)?)),
+        |g, b, r| Ok(Box::new(ParryVoxelsCrowd::new(g, b, r))),
+        |g, b, r| Ok(Box::new(ParrySegmentsCrowd::new(g, b, r))),
+        |g, b, r| Ok(Box::new(RapierCrowd::new(g, b, r))),
+    ];
+    let bar = ProgressBar::new(contenders.len() as u64);
+    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:30}] {pos}/{len} contenders") {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    let mut results: Vec<CrowdResult> = Vec::new();
+    for make in contenders {
+        let mut contender = make(&grid, &bodies, CROWD_RADIUS)?;
+        bar.set_message(format!("bench crowd N = {n}: {}", contender.name()));
+        results.push(run_crowd(contender.as_mut(), &grid, steps, CROWD_RADIUS));
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    if json {
+        let list: Vec<_> = results
+            .iter()
+            .map(|r| {
+                json!({
+                    "name": r.name,
+                    "ms_per_step": r.ms_per_step,
+                    "audit": {
+                        "overlapping_pairs": r.audit.overlapping_pairs,
+                        "wall_penetrations": r.audit.wall_penetrations,
+                        "max_overlap": r.audit.max_overlap,
+                        "max_penetration": r.audit.max_penetration,
+                    },
+                    "mean_travel": r.mean_travel,
+                })
+            })
+            .collect();
+        println!(
+            "{}",
+            json!({"scene": "crowd", "map": "dungeon256", "n": bodies.len(), "steps": steps, "results": list})
+        );
+        return Ok(());
+    }
+    println!(
+        "crowd on dungeon256: {} circles of radius {CROWD_RADIUS}, {steps} steps, median step time",
+        bodies.len()
+    );
+    println!(
+        "{:<18} {:>9} {:>21} {:>9} {:>9} {:>12}",
+        "engine", "ms/step", "(fastest–slowest)", "overlaps", "in walls", "mean travel"
+    );
+    for r in &results {
+        println!(
+            "{:<18} {:>9.3} {:>21} {:>9} {:>9} {:>12.3}",
+            r.name,
+            r.ms_per_step,
+            format!("({:.3}–{:.3})", r.spread_ms.0, r.spread_ms.1),
+            r.audit.overlapping_pairs,
+            r.audit.wall_penetrations,
+            r.mean_travel
+        );
+    }
+    print_ratio(&results, |r| 1.0 / r.ms_per_step, |r| r.name);
+    Ok(())
 }
 
 fn rays_json(report: &RaysReport) -> serde_json::Value {
@@ -118,15 +207,19 @@ fn print_rays_table(report: &RaysReport) {
             r.disagreements
         );
     }
-    if let Some((ours, peers)) = report.results.split_first()
-        && let Some(best) = peers
-            .iter()
-            .max_by(|a, b| a.mrays_per_s.total_cmp(&b.mrays_per_s))
+    print_ratio(&report.results, |r| r.mrays_per_s, |r| r.name);
+}
+
+/// Prints how many times faster tileslide (the first result) is than the fastest peer (the
+/// others), by `speed` (larger is faster).
+fn print_ratio<T>(results: &[T], speed: impl Fn(&T) -> f64, name: impl Fn(&T) -> &str) {
+    if let Some((ours, peers)) = results.split_first()
+        && let Some(best) = peers.iter().max_by(|a, b| speed(a).total_cmp(&speed(b)))
     {
         println!(
-            "tileslide: {:.1}× the best peer ({}) in this run",
-            ours.mrays_per_s / best.mrays_per_s,
-            best.name
+            "tileslide: {:.1}× the fastest peer ({}) in this run",
+            speed(ours) / speed(best),
+            name(best)
         );
     }
 }

@@ -1,4 +1,5 @@
-//! The `tileslide` command-line tool: inspect maps, cast rays, run the standard benchmarks.
+//! The `tileslide` command-line tool: inspect maps, cast rays, simulate crowds, run the
+//! standard benchmarks.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -10,6 +11,7 @@ mod info;
 mod json;
 mod map_file;
 mod raycast;
+mod simulate;
 
 /// Collision detection for tile-based 2D games: inspect maps, cast rays, benchmark.
 #[derive(Parser, Debug)]
@@ -60,6 +62,19 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Step circles with constant proposed moves through a map; print where they end and
+    /// an audit of overlaps and wall penetrations.
+    Simulate {
+        /// The scene: `{"map": "file.txt"}` or `{"ascii": "..."}`, optional `"cell"` and
+        /// `"steps"`, and `"bodies": [{"x": X, "y": Y, "r": R, "vx": VX, "vy": VY}]`.
+        scene: PathBuf,
+        /// Steps to run (overrides the scene's `"steps"`; default 100).
+        #[arg(long)]
+        steps: Option<u64>,
+        /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
     /// Run a standard benchmark scene of BENCHMARKS.md against the peers in the same run.
     Bench {
         #[command(subcommand)]
@@ -79,6 +94,7 @@ fn main() -> ExitCode {
             both_sides,
             json,
         } => raycast::run(&map, from.zip(to), rays, both_sides, json),
+        Command::Simulate { scene, steps, json } => simulate::run(&scene, steps, json),
         Command::Bench { which } => bench::run(which),
     };
     match result {

@@ -264,3 +264,111 @@ fn bench_rays_json_has_every_engine_and_the_fingerprint() {
     assert_eq!(v["results"][0]["disagreements"], 0);
     assert_eq!(v["results"][1]["disagreements"], 0);
 }
+
+#[test]
+fn simulate_json_reports_positions_and_a_clean_audit() {
+    let map = scratch("sim_room.txt", ROOM);
+    let scene = scratch(
+        "sim.json",
+        r#"{"map": "sim_room.txt", "steps": 40, "bodies": [
+            {"x": 1.5, "y": 1.5, "r": 0.3, "vx": 0.25, "vy": 0.0},
+            {"x": 6.5, "y": 1.5, "r": 0.3, "vx": -0.25, "vy": 0.0},
+            {"x": 4.0, "y": 1.5, "r": 0.3}
+        ]}"#,
+    );
+    assert!(map.exists());
+    let o = tileslide(&["simulate", scene.to_str().unwrap(), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["steps"], 40);
+    let bodies = v["bodies"].as_array().unwrap();
+    assert_eq!(bodies.len(), 3);
+    // The body without a move stays; the others went round it or stopped against it.
+    assert_eq!(bodies[2]["x"].as_f64(), Some(4.0));
+    assert_eq!(bodies[2]["y"].as_f64(), Some(1.5));
+    assert_eq!(v["audit"]["overlapping_pairs"], 0);
+    assert_eq!(v["audit"]["wall_penetrations"], 0);
+    assert!(v["ms_per_step"].as_f64().unwrap() >= 0.0);
+    // --steps overrides the scene.
+    let o = tileslide(&[
+        "simulate",
+        scene.to_str().unwrap(),
+        "--json",
+        "--steps",
+        "0",
+    ]);
+    let v: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["steps"], 0);
+    assert_eq!(v["bodies"][0]["x"].as_f64(), Some(1.5));
+}
+
+#[test]
+fn simulate_errors_name_the_field() {
+    let cases = [
+        (
+            r####"{"ascii": "###\n#.#\n###", "bodies": [{"x": 1.5, "y": 1.5, "r": 0}]}"####,
+            "bodies[0].r",
+        ),
+        (
+            r####"{"ascii": "###\n#.#\n###", "bodies": [{"x": 1.5, "y": "a", "r": 1}]}"####,
+            "line 1 column",
+        ),
+        (
+            r####"{"ascii": "###\n#.#\n###", "bodys": []}"####,
+            "unknown field `bodys`",
+        ),
+        (r####"{"bodies": []}"####, "missing the map"),
+        (
+            r####"{"ascii": "#?#", "bodies": []}"####,
+            "(field \"ascii\"):1:2",
+        ),
+        (
+            r####"{"ascii": "###", "cell": -1, "bodies": []}"####,
+            "cell",
+        ),
+        (
+            r####"{"ascii": "###", "steps": 99999999999, "bodies": []}"####,
+            "steps",
+        ),
+    ];
+    for (i, (text, expected)) in cases.iter().enumerate() {
+        let scene = scratch(&format!("bad_scene_{i}.json"), text);
+        let o = tileslide(&["simulate", scene.to_str().unwrap()]);
+        assert!(!o.status.success(), "case {i} should fail");
+        let err = stderr(&o);
+        assert!(err.contains(expected), "case {i}: {err}");
+        assert!(
+            err.contains(&format!("bad_scene_{i}.json")),
+            "case {i}: {err}"
+        );
+    }
+}
+
+#[test]
+fn bench_crowd_json_lists_every_contender_with_its_audit() {
+    let o = tileslide(&["bench", "crowd", "--n", "100", "--steps", "3", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["n"], 100);
+    assert_eq!(v["steps"], 3);
+    let names: Vec<_> = v["results"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["name"].as_str().unwrap().to_string())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "tileslide",
+            "parry2d-voxels",
+            "parry2d-segments",
+            "rapier2d-kcc"
+        ]
+    );
+    let ours = &v["results"][0];
+    assert_eq!(ours["audit"]["overlapping_pairs"], 0);
+    assert_eq!(ours["audit"]["wall_penetrations"], 0);
+    assert!(ours["mean_travel"].as_f64().unwrap() > 0.0);
+    assert!(ours["ms_per_step"].as_f64().unwrap() > 0.0);
+}

@@ -18,6 +18,9 @@ pub(crate) struct PairFinder {
     /// Uniform grid: per cell, the start of its run in `entries` (prefix sums).
     starts: Vec<u32>,
     entries: Vec<u32>,
+    /// Per box, its cell; and the fill cursors of the counting sort.
+    cells: Vec<u32>,
+    fill: Vec<u32>,
     /// Sweep and prune: box indices by `min.x`, kept between calls (nearly sorted when the
     /// boxes move little, so insertion sort is close to linear).
     order: Vec<u32>,
@@ -37,9 +40,12 @@ impl PairFinder {
         let Some((lo, hi, largest)) = extent(boxes) else {
             return;
         };
-        // Cells at least as large as the largest box: a box overlaps at most 2 × 2 cells.
+        // Cells at least as large as the largest box, and about as many cells as boxes:
+        // few cells to clear and sum, a box or two in each.
         let span = hi - lo;
+        let per_box = (span.x.max(largest) * span.y.max(largest) / boxes.len() as f32).sqrt();
         let mut size = largest
+            .max(per_box)
             .max(span.max_element() / 4096.0)
             .max(f32::MIN_POSITIVE);
         let dims = |size: f32| ((span.x / size) as usize + 1, (span.y / size) as usize + 1);
@@ -48,50 +54,61 @@ impl PairFinder {
         }
         let (w, h) = dims(size);
         let inv = 1.0 / size;
+        // Each box goes into the one cell that holds its `min` corner. Since no box is
+        // larger than a cell, a box that overlaps it has its `min` corner in the same cell
+        // or one of the eight around.
         let cell_of = |p: Vec2| {
             let c = ((p - lo) * inv).min(Vec2::new((w - 1) as f32, (h - 1) as f32));
             (c.x as usize, c.y as usize)
         };
-        // Counting sort of (cell, box) entries.
+        // Counting sort by cell: count into `starts[cell + 1]`, running sums, then place
+        // (boxes in index order, so each cell's run is sorted by index).
         self.starts.clear();
         self.starts.resize(w * h + 1, 0);
+        self.cells.clear();
         for b in boxes {
-            let ((c0, r0), (c1, r1)) = (cell_of(b.min), cell_of(b.max));
-            for r in r0..=r1 {
-                for c in c0..=c1 {
-                    self.starts[r * w + c + 1] += 1;
-                }
-            }
+            let (c, r) = cell_of(b.min);
+            let cell = r * w + c;
+            self.cells.push(cell as u32);
+            self.starts[cell + 1] += 1;
         }
         for i in 1..self.starts.len() {
             self.starts[i] += self.starts[i - 1];
         }
         self.entries.clear();
-        self.entries.resize(self.starts[w * h] as usize, 0);
-        let mut fill = self.starts.clone();
-        for (i, b) in boxes.iter().enumerate() {
-            let ((c0, r0), (c1, r1)) = (cell_of(b.min), cell_of(b.max));
-            for r in r0..=r1 {
-                for c in c0..=c1 {
-                    let slot = &mut fill[r * w + c];
-                    self.entries[*slot as usize] = i as u32;
-                    *slot += 1;
+        self.entries.resize(boxes.len(), 0);
+        let mut fill = std::mem::take(&mut self.fill);
+        fill.clear();
+        fill.extend_from_slice(&self.starts[..w * h]);
+        for (i, &cell) in self.cells.iter().enumerate() {
+            let slot = &mut fill[cell as usize];
+            self.entries[*slot as usize] = i as u32;
+            *slot += 1;
+        }
+        self.fill = fill;
+        // Each pair once: within a cell the later box of the pair, and across cells only
+        // the four "forward" neighbours (right, and the three below) of a box's cell.
+        for (i, a) in boxes.iter().enumerate() {
+            let cell = self.cells[i] as usize;
+            let (c, r) = (cell % w, cell / w);
+            let run = &self.entries[self.starts[cell] as usize..self.starts[cell + 1] as usize];
+            for &j in run {
+                if j as usize > i && a.overlaps(&boxes[j as usize]) {
+                    pairs.push((i as u32, j));
                 }
             }
-        }
-        // A pair shares up to four cells; it is reported only from the cell that holds the
-        // corner `max(min_i, min_j)`, which both boxes contain.
-        for cell in 0..w * h {
-            let run = &self.entries[self.starts[cell] as usize..self.starts[cell + 1] as usize];
-            for (k, &i) in run.iter().enumerate() {
-                for &j in &run[k + 1..] {
-                    let (a, b) = (&boxes[i as usize], &boxes[j as usize]);
-                    if !a.overlaps(b) {
-                        continue;
-                    }
-                    let (c, r) = cell_of(a.min.max(b.min));
-                    if r * w + c == cell {
-                        pairs.push((i.min(j), i.max(j)));
+            let forward = [
+                (c + 1 < w).then(|| cell + 1),
+                (r + 1 < h && c > 0).then(|| cell + w - 1),
+                (r + 1 < h).then(|| cell + w),
+                (r + 1 < h && c + 1 < w).then(|| cell + w + 1),
+            ];
+            for other in forward.into_iter().flatten() {
+                let run =
+                    &self.entries[self.starts[other] as usize..self.starts[other + 1] as usize];
+                for &j in run {
+                    if a.overlaps(&boxes[j as usize]) {
+                        pairs.push((i.min(j as usize) as u32, i.max(j as usize) as u32));
                     }
                 }
             }

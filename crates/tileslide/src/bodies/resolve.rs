@@ -27,7 +27,7 @@ use super::broadphase::PairFinder;
 use super::config::{ResolveConfig, SlideMode, TimeOfImpact};
 use super::set::Body;
 use crate::geometry::{Aabb, SweepHit, bisect, sweep_circle_circle};
-use crate::query::{Faces, RayFilter, Wall};
+use crate::query::Capsule;
 use crate::tiles::TileMap;
 
 /// Relative size below which the remainder's projection on the tangent counts as zero (the
@@ -81,7 +81,7 @@ pub(crate) struct Scratch {
     /// Per circle, the circles it may meet (compressed rows: `first_neighbour`, `neighbours`).
     first_neighbour: Vec<u32>,
     neighbours: Vec<u32>,
-    walls: Vec<Wall>,
+    walls: Vec<Capsule>,
     /// `walls` ranges per circle of the body being resolved.
     wall_ranges: Vec<(u32, u32)>,
 }
@@ -159,34 +159,41 @@ impl Scratch {
                 && (motion[a] != Vec2::ZERO || motion[b] != Vec2::ZERO)
                 && filter[a].collides(&filter[b])
         });
-        // Neighbours in a fixed order (by circle index) whatever the broadphase: the
-        // result must not depend on it.
-        self.pairs.sort_unstable();
+        // Compressed rows by counting sort: count each circle's pairs, running sums give each
+        // row's end, and filling every row backwards leaves `first_neighbour[c]` at its start.
+        let n = self.circles.len();
         self.first_neighbour.clear();
-        self.first_neighbour.resize(self.circles.len() + 1, 0);
+        self.first_neighbour.resize(n + 1, 0);
         for &(i, j) in &self.pairs {
-            self.first_neighbour[i as usize + 1] += 1;
-            self.first_neighbour[j as usize + 1] += 1;
+            self.first_neighbour[i as usize] += 1;
+            self.first_neighbour[j as usize] += 1;
         }
-        for k in 1..self.first_neighbour.len() {
+        for k in 1..n {
             self.first_neighbour[k] += self.first_neighbour[k - 1];
         }
+        let total = if n == 0 {
+            0
+        } else {
+            self.first_neighbour[n - 1]
+        };
+        self.first_neighbour[n] = total;
         self.neighbours.clear();
-        self.neighbours
-            .resize(self.first_neighbour[self.circles.len()] as usize, 0);
-        let mut fill = self.first_neighbour.clone();
+        self.neighbours.resize(total as usize, 0);
         for &(i, j) in &self.pairs {
-            self.neighbours[fill[i as usize] as usize] = j;
-            fill[i as usize] += 1;
-            self.neighbours[fill[j as usize] as usize] = i;
-            fill[j as usize] += 1;
+            for (a, b) in [(i, j), (j, i)] {
+                let slot = &mut self.first_neighbour[a as usize];
+                *slot -= 1;
+                self.neighbours[*slot as usize] = b;
+            }
         }
+        // Each circle's neighbours in a fixed order (by index), whatever order the
+        // broadphase found the pairs in: the result must not depend on it.
         for c in 0..self.circles.len() {
             let (s, e) = (
                 self.first_neighbour[c] as usize,
                 self.first_neighbour[c + 1] as usize,
             );
-            self.neighbours[s..e].sort_unstable();
+            insertion_sort(&mut self.neighbours[s..e]);
         }
     }
 
@@ -205,15 +212,11 @@ impl Scratch {
         // can take this step (slides never lengthen the remainder).
         self.walls.clear();
         self.wall_ranges.clear();
-        let filter = RayFilter {
-            faces: Faces::Front,
-            mask: self.filter[bi].walls,
-            exclude_owner: None,
-        };
+        let mask = self.filter[bi].walls;
         for c in circles.clone() {
             let start = self.walls.len() as u32;
-            if !self.filter[bi].walls.is_empty() {
-                map.walls_in(&self.boxes[c], &filter, &mut self.walls);
+            if !mask.is_empty() {
+                map.capsules_in(&self.boxes[c], mask, &mut self.walls);
             }
             self.wall_ranges.push((start, self.walls.len() as u32));
         }
@@ -254,6 +257,9 @@ impl Scratch {
     ) -> Option<(SweepHit, Obstacle)> {
         let bi = b as usize;
         let origin = self.position[bi];
+        // Obstacles farther than the move's length plus the contact radius are out of reach:
+        // the cheap test that lets a free body skip almost every sweep.
+        let reach = motion.length();
         let mut best: Option<(SweepHit, Obstacle)> = None;
         let mut keep = |hit: SweepHit, obstacle: Obstacle| {
             if best.is_none_or(|(b, _)| hit.t < b.t) {
@@ -268,8 +274,11 @@ impl Scratch {
             let center = origin + c.offset;
             let (ws, we) = self.wall_ranges[k];
             for wall in &self.walls[ws as usize..we as usize] {
-                let distance = wall.segment.distance_squared_to(center).sqrt();
-                let radius = band(distance, c.radius, gap);
+                let distance2 = wall.segment.distance_squared_to(center);
+                let radius = band(distance2, c.radius, gap);
+                if distance2 > (radius + reach) * (radius + reach) {
+                    continue;
+                }
                 if let Some(hit) = sweep_wall(wall, center, radius, motion, toi) {
                     keep(hit, Obstacle::Wall);
                 }
@@ -280,7 +289,11 @@ impl Scratch {
             for &n in neighbours {
                 let other = &self.circles[n as usize];
                 let at = self.position[other.body as usize] + other.offset;
-                let radius = band(center.distance(at), c.radius + other.radius, gap);
+                let distance2 = center.distance_squared(at);
+                let radius = band(distance2, c.radius + other.radius, gap);
+                if distance2 > (radius + reach) * (radius + reach) {
+                    continue;
+                }
                 if let Some(hit) = sweep_circle(center, motion, at, radius, toi) {
                     keep(hit, Obstacle::Body(other.body));
                 }
@@ -290,11 +303,24 @@ impl Scratch {
     }
 }
 
-/// The contact radius for a circle whose centre is `distance` from an obstacle it touches
-/// at `radius`: `radius + gap` from outside that band, `radius + gap / 2` from inside it
-/// (so a body in the band may still close in a little: no snag on rounding).
-fn band(distance: f32, radius: f32, gap: f32) -> f32 {
-    if distance > radius + gap {
+/// Sorts a short list (a circle's few neighbours) in place.
+fn insertion_sort(list: &mut [u32]) {
+    for k in 1..list.len() {
+        let item = list[k];
+        let mut j = k;
+        while j > 0 && list[j - 1] > item {
+            list[j] = list[j - 1];
+            j -= 1;
+        }
+        list[j] = item;
+    }
+}
+
+/// The contact radius for a circle whose centre is at squared distance `distance2` from an
+/// obstacle it touches at `radius`: `radius + gap` from outside that band, `radius + gap / 2`
+/// from inside it (so a body in the band may still close in a little: no snag on rounding).
+fn band(distance2: f32, radius: f32, gap: f32) -> f32 {
+    if distance2 > (radius + gap) * (radius + gap) {
         radius + gap
     } else {
         radius + 0.5 * gap
@@ -302,7 +328,7 @@ fn band(distance: f32, radius: f32, gap: f32) -> f32 {
 }
 
 fn sweep_wall(
-    wall: &Wall,
+    wall: &Capsule,
     center: Vec2,
     radius: f32,
     motion: Vec2,
@@ -439,7 +465,7 @@ mod tests {
     #[test]
     fn the_contact_band_lets_bodies_close_in_but_never_touch() {
         assert_eq!(band(1.0, 0.5, 0.01), 0.51);
-        assert_eq!(band(0.505, 0.5, 0.01), 0.505);
-        assert!(band(0.3, 0.5, 0.01) > 0.5);
+        assert_eq!(band(0.505 * 0.505, 0.5, 0.01), 0.505);
+        assert!(band(0.09, 0.5, 0.01) > 0.5);
     }
 }

@@ -9,8 +9,8 @@ use glam::Vec2;
 
 use super::{Faces, RayFilter, SegmentSource};
 use crate::geometry::{Aabb, Segment, SweepHit, sweep_circle_segment};
-use crate::tiles::store::{CAP_A, CAP_B};
-use crate::tiles::{Cell, SegmentFlags, SegmentRef, TileId, TileMap};
+use crate::tiles::store::{CAP_A, CAP_B, HotSegment};
+use crate::tiles::{SegmentFlags, SegmentRef, TileId, TileMap};
 
 /// A circle cast's first contact.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,16 +32,14 @@ pub struct CircleHit {
 
 /// A segment as a moving circle sees it: its capsule, front side only.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Wall {
+pub(crate) struct Capsule {
     pub segment: Segment,
     pub normal: Vec2,
     /// Rounded cap at `[a, b]`.
     pub caps: [bool; 2],
-    pub flags: SegmentFlags,
-    pub source: SegmentSource,
 }
 
-impl Wall {
+impl Capsule {
     /// The time of impact of a circle of `radius` at `center` moving by `motion`.
     #[inline]
     pub fn sweep(&self, center: Vec2, radius: f32, motion: Vec2) -> Option<SweepHit> {
@@ -61,9 +59,16 @@ impl Wall {
             segment: Segment::new(self.segment.b, self.segment.a),
             normal: -self.normal,
             caps: [self.caps[1], self.caps[0]],
-            ..*self
         }
     }
+}
+
+/// A capsule with what a query reports about its segment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Wall {
+    capsule: Capsule,
+    flags: SegmentFlags,
+    source: SegmentSource,
 }
 
 impl TileMap {
@@ -110,14 +115,14 @@ impl TileMap {
         let mut best: Option<(SweepHit, Wall)> = None;
         for wall in &walls {
             let facing = match filter.faces {
-                Faces::Both => [Some(*wall), Some(wall.back())],
-                _ => [Some(*wall), None],
+                Faces::Both => [Some(wall.capsule), Some(wall.capsule.back())],
+                _ => [Some(wall.capsule), None],
             };
-            for w in facing.into_iter().flatten() {
-                if let Some(hit) = w.sweep(center, radius, motion)
+            for capsule in facing.into_iter().flatten() {
+                if let Some(hit) = capsule.sweep(center, radius, motion)
                     && best.is_none_or(|(b, _)| hit.t < b.t)
                 {
-                    best = Some((hit, w));
+                    best = Some((hit, *wall));
                 }
             }
         }
@@ -137,7 +142,7 @@ impl TileMap {
     /// Appends the temporary segments, then the active segments of the cells (row by row)
     /// that share a point with `region`, that `filter` lets block a moving circle (flag mask,
     /// excluded owner, and for [`Faces::Against`] the direction).
-    pub(crate) fn walls_in(&self, region: &Aabb, filter: &RayFilter, out: &mut Vec<Wall>) {
+    fn walls_in(&self, region: &Aabb, filter: &RayFilter, out: &mut Vec<Wall>) {
         let keeps = |normal: Vec2, flags: SegmentFlags| {
             flags.intersects(filter.mask)
                 && match filter.faces {
@@ -153,9 +158,11 @@ impl TileMap {
                 continue;
             }
             out.push(Wall {
-                segment: tmp.segment,
-                normal: tmp.normal,
-                caps: [true; 2],
+                capsule: Capsule {
+                    segment: tmp.segment,
+                    normal: tmp.normal,
+                    caps: [true; 2],
+                },
                 flags: tmp.flags,
                 source: SegmentSource::Temporary {
                     owner: tmp.owner,
@@ -164,27 +171,66 @@ impl TileMap {
                 },
             });
         }
-        for cell in self.cells_overlapping(region) {
-            let index = (cell.row * self.width() + cell.col) as usize;
-            let caps = self.store.caps(index);
-            let tile = self.tile_at_index(index).unwrap_or(TileId(u32::MAX));
-            for (i, (s, &cap)) in self.store.cell(index).iter().zip(caps).enumerate() {
-                if !keeps(s.normal, s.flags) {
-                    continue;
-                }
+        self.for_each_segment_in(region, |index, i, s, capsule| {
+            if keeps(s.normal, s.flags) {
                 out.push(Wall {
-                    segment: Segment::new(s.a, s.b()),
-                    normal: s.normal,
-                    caps: [cap & CAP_A != 0, cap & CAP_B != 0],
+                    capsule,
                     flags: s.flags,
                     source: SegmentSource::Tile {
                         segment: SegmentRef {
-                            cell: Cell::new(cell.col, cell.row),
-                            index: i as u32,
+                            cell: self.cell_of(index),
+                            index: i,
                         },
-                        tile,
+                        tile: self.tile_at_index(index).unwrap_or(TileId(u32::MAX)),
                     },
                 });
+            }
+        });
+    }
+
+    /// Appends the capsules of the temporary and active segments near `region` with one of
+    /// `mask`'s flags, front faces only: what the resolver sweeps bodies against.
+    pub(crate) fn capsules_in(&self, region: &Aabb, mask: SegmentFlags, out: &mut Vec<Capsule>) {
+        for tmp in self.temporaries() {
+            if tmp.flags.intersects(mask) && region.overlaps_segment(&tmp.segment) {
+                out.push(Capsule {
+                    segment: tmp.segment,
+                    normal: tmp.normal,
+                    caps: [true; 2],
+                });
+            }
+        }
+        self.for_each_segment_in(region, |_, _, s, capsule| {
+            if s.flags.intersects(mask) {
+                out.push(capsule);
+            }
+        });
+    }
+
+    /// Calls `f(cell index, segment index, segment, capsule)` for the active segments of
+    /// the cells (row by row) that share a point with `region`.
+    #[inline]
+    fn for_each_segment_in(
+        &self,
+        region: &Aabb,
+        mut f: impl FnMut(usize, u32, &HotSegment, Capsule),
+    ) {
+        let Some((c0, r0, c1, r1)) = self.cell_range(region) else {
+            return;
+        };
+        let width = self.width() as usize;
+        for row in r0 as usize..=r1 as usize {
+            for col in c0 as usize..=c1 as usize {
+                let index = row * width + col;
+                let caps = self.store.caps(index);
+                for (i, (s, &cap)) in self.store.cell(index).iter().zip(caps).enumerate() {
+                    let capsule = Capsule {
+                        segment: Segment::new(s.a, s.b()),
+                        normal: s.normal,
+                        caps: [cap & CAP_A != 0, cap & CAP_B != 0],
+                    };
+                    f(index, i as u32, s, capsule);
+                }
             }
         }
     }

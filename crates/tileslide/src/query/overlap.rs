@@ -21,6 +21,13 @@ impl TileMap {
     /// The cells whose closed rectangles share a point with the closed box, row by row.
     /// Empty for a box outside the map or with a non-finite coordinate.
     pub fn cells_overlapping(&self, aabb: &Aabb) -> impl Iterator<Item = Cell> + use<> {
+        let (c0, r0, c1, r1) = self.cell_range(aabb).unwrap_or((1, 1, 0, 0));
+        (r0..=r1).flat_map(move |r| (c0..=c1).map(move |c| Cell::new(c, r)))
+    }
+
+    /// The first and last column and row of the cells whose closed rectangles share a
+    /// point with the closed box, or `None`.
+    pub(crate) fn cell_range(&self, aabb: &Aabb) -> Option<(u32, u32, u32, u32)> {
         let inv = self.inv_cell_size();
         let lo = (aabb.min - self.origin()) * inv;
         let hi = (aabb.max - self.origin()) * inv;
@@ -33,17 +40,14 @@ impl TileMap {
             && lo.x <= w
             && lo.y <= h;
         // Cell c's closed rectangle [c, c+1] touches [lo, hi] when c ≥ lo − 1 and c ≤ hi.
-        let (c0, r0, c1, r1) = if valid {
+        valid.then(|| {
             (
                 (lo.x.ceil() - 1.0).max(0.0) as u32,
                 (lo.y.ceil() - 1.0).max(0.0) as u32,
                 hi.x.floor().min(w - 1.0) as u32,
                 hi.y.floor().min(h - 1.0) as u32,
             )
-        } else {
-            (1, 1, 0, 0)
-        };
-        (r0..=r1).flat_map(move |r| (c0..=c1).map(move |c| Cell::new(c, r)))
+        })
     }
 
     /// Active and temporary segments that share a point with the closed box. A box with a

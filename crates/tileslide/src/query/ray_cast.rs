@@ -196,7 +196,7 @@ impl TileMap {
     }
 
     #[inline(always)]
-    fn cell_of(&self, index: usize) -> Cell {
+    pub(crate) fn cell_of(&self, index: usize) -> Cell {
         // 32-bit division: a 64-bit one costs several times more on x86-64.
         let (index, width) = (index as u32, self.width());
         Cell::new(index % width, index / width)

@@ -1,0 +1,215 @@
+//! `tileslide simulate SCENE.json`: circles with constant proposed moves, stepped with the
+//! resolver, audited at the end.
+
+use std::path::Path;
+use std::time::Instant;
+
+use anyhow::{Context, Result, bail};
+use serde::Deserialize;
+use serde_json::json;
+use tileslide::io::ascii;
+use tileslide::{Bodies, BodyDesc, BodyHandle, BodyShape, Circle, SegmentFlags, TileMap, Vec2};
+
+use crate::json::number;
+
+/// Most steps a scene may ask for (a typo of a few zeros should not run for days).
+const MAX_STEPS: u64 = 10_000_000;
+
+/// The scene file.
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    /// An ASCII map file, relative to the scene file.
+    map: Option<String>,
+    /// Or the ASCII map itself.
+    ascii: Option<String>,
+    /// Cell size (default 1).
+    cell: Option<f32>,
+    /// Steps to run, unless `--steps` says otherwise.
+    steps: Option<u64>,
+    bodies: Vec<BodyEntry>,
+}
+
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
+struct BodyEntry {
+    x: f32,
+    y: f32,
+    r: f32,
+    #[serde(default)]
+    vx: f32,
+    #[serde(default)]
+    vy: f32,
+}
+
+/// What the end of a simulation looks like.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Audit {
+    pub overlapping_pairs: usize,
+    pub max_overlap: f32,
+    pub wall_penetrations: usize,
+    pub max_penetration: f32,
+}
+
+pub fn run(scene_path: &Path, steps: Option<u64>, json_out: bool) -> Result<()> {
+    let text = std::fs::read_to_string(scene_path)
+        .with_context(|| format!("{}: cannot read the scene", scene_path.display()))?;
+    let scene: SceneFile = serde_json::from_str(&text)
+        .with_context(|| format!("{}: not a valid scene", scene_path.display()))?;
+    let map = load_map(scene_path, &scene)?;
+    let steps = steps.or(scene.steps).unwrap_or(100);
+    if steps > MAX_STEPS {
+        bail!(
+            "{}: steps: {steps} is more than the {MAX_STEPS} allowed",
+            scene_path.display()
+        );
+    }
+    let mut bodies = Bodies::new();
+    let mut crowd: Vec<(BodyHandle, Vec2)> = Vec::with_capacity(scene.bodies.len());
+    for (i, b) in scene.bodies.iter().enumerate() {
+        let at = |field: &str| format!("{}: bodies[{i}].{field}", scene_path.display());
+        let shape = BodyShape::circle(b.r).with_context(|| at("r"))?;
+        let handle = bodies
+            .add(BodyDesc::new(Vec2::new(b.x, b.y), shape))
+            .with_context(|| at("x/y"))?;
+        let velocity = Vec2::new(b.vx, b.vy);
+        if !velocity.is_finite() {
+            bail!(
+                "{}: the move ({}, {}) is not finite",
+                at("vx/vy"),
+                b.vx,
+                b.vy
+            );
+        }
+        crowd.push((handle, velocity));
+    }
+    let mut elapsed = 0.0f64;
+    for _ in 0..steps {
+        for &(h, v) in &crowd {
+            bodies.propose(h, v)?;
+        }
+        let start = Instant::now();
+        bodies.step(&map);
+        elapsed += start.elapsed().as_secs_f64();
+    }
+    let circles: Vec<Circle> = crowd
+        .iter()
+        .map(|&(h, _)| {
+            let body = bodies.get(h)?;
+            Ok(Circle::new(body.position(), body.shape().bounding_radius()))
+        })
+        .collect::<Result<_>>()?;
+    let skin = 1e-4 * map.cell_size().min_element();
+    let audit = audit(&map, &circles, skin);
+    let ms_per_step = if steps == 0 {
+        0.0
+    } else {
+        elapsed * 1e3 / steps as f64
+    };
+    if json_out {
+        let bodies: Vec<_> = circles
+            .iter()
+            .map(|c| json!({"x": number(c.center.x), "y": number(c.center.y)}))
+            .collect();
+        let out = json!({
+            "steps": steps,
+            "bodies": bodies,
+            "audit": {
+                "overlapping_pairs": audit.overlapping_pairs,
+                "max_overlap": number(audit.max_overlap),
+                "wall_penetrations": audit.wall_penetrations,
+                "max_penetration": number(audit.max_penetration),
+            },
+            "ms_per_step": ms_per_step,
+        });
+        println!("{out}");
+    } else {
+        println!(
+            "{} bodies, {steps} steps, {ms_per_step:.3} ms/step",
+            circles.len()
+        );
+        for (i, c) in circles.iter().enumerate() {
+            println!("  body {i}: ({}, {})", c.center.x, c.center.y);
+        }
+        println!(
+            "audit (skin {skin}): {} overlapping pairs (max overlap {}), {} wall penetrations (max {})",
+            audit.overlapping_pairs,
+            audit.max_overlap,
+            audit.wall_penetrations,
+            audit.max_penetration
+        );
+    }
+    Ok(())
+}
+
+fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<TileMap> {
+    let cell = scene.cell.unwrap_or(1.0);
+    if !(cell > 0.0 && cell.is_finite()) {
+        bail!(
+            "{}: cell: {cell} must be a positive number",
+            scene_path.display()
+        );
+    }
+    match (&scene.map, &scene.ascii) {
+        (Some(_), Some(_)) => bail!(
+            "{}: give either \"map\" (a file) or \"ascii\" (the map itself), not both",
+            scene_path.display()
+        ),
+        (None, None) => bail!(
+            "{}: missing the map: add \"map\": \"file.txt\" or \"ascii\": \"...\"",
+            scene_path.display()
+        ),
+        (Some(file), None) => {
+            let path = scene_path.parent().unwrap_or(Path::new(".")).join(file);
+            Ok(ascii::load(&path, cell)?)
+        }
+        (None, Some(text)) => {
+            let name = format!("{} (field \"ascii\")", scene_path.display());
+            Ok(ascii::parse(text, &name, cell)?)
+        }
+    }
+}
+
+/// Pairs overlapping by more than `skin`, and circles whose centre is in front of a solid
+/// (not one-way) segment and closer to it than the radius by more than `skin`.
+pub fn audit(map: &TileMap, circles: &[Circle], skin: f32) -> Audit {
+    let mut audit = Audit::default();
+    // Pairs: sweep along x.
+    let mut order: Vec<usize> = (0..circles.len()).collect();
+    order.sort_by(|&a, &b| circles[a].center.x.total_cmp(&circles[b].center.x));
+    let largest = circles.iter().map(|c| c.radius).fold(0.0, f32::max);
+    for (k, &i) in order.iter().enumerate() {
+        let a = circles[i];
+        for &j in &order[k + 1..] {
+            let b = circles[j];
+            if b.center.x - a.center.x > a.radius + largest {
+                break;
+            }
+            let overlap = a.radius + b.radius - a.center.distance(b.center);
+            audit.max_overlap = audit.max_overlap.max(overlap);
+            if overlap > skin {
+                audit.overlapping_pairs += 1;
+            }
+        }
+    }
+    for c in circles {
+        let mut worst = 0.0f32;
+        for s in map.segments_overlapping_circle(c) {
+            if s.flags.contains(SegmentFlags::ONE_WAY)
+                || (c.center - s.segment.a).dot(s.normal) < 0.0
+            {
+                continue;
+            }
+            let depth = c.radius - s.segment.distance_squared_to(c.center).sqrt();
+            worst = worst.max(depth);
+        }
+        if map.is_point_solid(c.center) {
+            worst = worst.max(c.radius);
+        }
+        audit.max_penetration = audit.max_penetration.max(worst);
+        if worst > skin {
+            audit.wall_penetrations += 1;
+        }
+    }
+    audit
+}

@@ -1,0 +1,239 @@
+//! The resolver's behaviour in the situations the write-up and the issue name: sliding over
+//! seams, stopping in concave corners, rounding convex ones, bodies meeting head-on,
+//! obstacles, compound bodies, the bisection option, and handles.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use tileslide::io::ascii;
+use tileslide::{
+    Bodies, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Circle, ResolveConfig,
+    SegmentFlags, SlideMode, TileMap, TimeOfImpact, Vec2,
+};
+
+fn v(x: f32, y: f32) -> Vec2 {
+    Vec2::new(x, y)
+}
+
+fn map(text: &str) -> TileMap {
+    ascii::parse(text, "test.txt", 1.0).unwrap()
+}
+
+fn circle(bodies: &mut Bodies, at: Vec2, r: f32) -> BodyHandle {
+    bodies
+        .add(BodyDesc::new(at, BodyShape::circle(r).unwrap()))
+        .unwrap()
+}
+
+/// Steps `steps` times with `h` proposing `motion` every step.
+fn push(bodies: &mut Bodies, map: &TileMap, h: BodyHandle, motion: Vec2, steps: usize) -> Vec2 {
+    for _ in 0..steps {
+        bodies.propose(h, motion).unwrap();
+        bodies.step(map);
+    }
+    bodies.get(h).unwrap().position()
+}
+
+const HALL: &str = "\
+####################
+#..................#
+#..................#
+####################";
+
+#[test]
+fn sliding_along_a_floor_of_many_tiles_never_stops_at_a_seam() {
+    let m = map(HALL);
+    let mut bodies = Bodies::new();
+    // Pressed into the floor (y down: +y) while moving right, over 16 tile seams.
+    let h = circle(&mut bodies, v(1.5, 2.5), 0.4);
+    let end = push(&mut bodies, &m, h, v(0.25, 0.1), 80);
+    assert!(end.x > 18.5, "stopped at x = {}", end.x);
+    assert!((end.y - 2.6).abs() < 2e-3, "{end}");
+}
+
+#[test]
+fn a_body_pushed_into_a_concave_corner_stops_in_it() {
+    let m = map(HALL);
+    let mut bodies = Bodies::new();
+    let h = circle(&mut bodies, v(15.5, 1.5), 0.4);
+    let end = push(&mut bodies, &m, h, v(0.3, 0.2), 40);
+    // The corner of the right wall (x = 19) and the floor (y = 3).
+    assert!((end - v(18.6, 2.6)).length() < 2e-3, "{end}");
+    // And it stays there.
+    let again = push(&mut bodies, &m, h, v(0.3, 0.2), 5);
+    assert_eq!(again, end);
+}
+
+#[test]
+fn a_body_rounds_a_convex_corner() {
+    let m = map("\
+##########
+#........#
+#........#
+#...##...#
+#...##...#
+#........#
+##########");
+    let mut bodies = Bodies::new();
+    // Sliding down the left face of the block (x = 4) while pushing right: past the
+    // block's bottom-left corner (4, 5) it swings round it instead of catching on it.
+    let h = circle(&mut bodies, v(3.59, 3.5), 0.4);
+    let mut closest = f32::INFINITY;
+    for _ in 0..40 {
+        bodies.propose(h, v(0.05, 0.1)).unwrap();
+        bodies.step(&m);
+        let p = bodies.get(h).unwrap().position();
+        closest = closest.min(p.distance(v(4.0, 5.0)));
+    }
+    let end = bodies.get(h).unwrap().position();
+    assert!(end.y > 5.2 && end.x > 4.0, "caught on the corner at {end}");
+    assert!(closest >= 0.4, "cut into the corner: {closest}");
+}
+
+#[test]
+fn two_bodies_meeting_head_on_turn_opposite_ways_and_pass() {
+    let m = map("\
+############
+#..........#
+#..........#
+#..........#
+############");
+    let mut bodies = Bodies::new();
+    let a = circle(&mut bodies, v(2.0, 2.5), 0.4);
+    let b = circle(&mut bodies, v(10.0, 2.5), 0.4);
+    for _ in 0..60 {
+        bodies.propose(a, v(0.2, 0.0)).unwrap();
+        bodies.propose(b, v(-0.2, 0.0)).unwrap();
+        bodies.step(&m);
+    }
+    let (pa, pb) = (
+        bodies.get(a).unwrap().position(),
+        bodies.get(b).unwrap().position(),
+    );
+    // They swapped sides, one above and one below the line they met on.
+    assert!(pa.x > pb.x, "{pa} {pb}");
+    assert!((pa.y - 2.5) * (pb.y - 2.5) < 0.0, "{pa} {pb}");
+}
+
+#[test]
+fn bodies_without_a_move_are_obstacles_that_others_slide_around() {
+    let m = map("\
+####################
+#..................#
+#..................#
+#..................#
+#..................#
+####################");
+    let mut bodies = Bodies::new();
+    let rock = circle(&mut bodies, v(8.0, 3.0), 0.5);
+    let walker = circle(&mut bodies, v(2.0, 2.9), 0.3);
+    let end = push(&mut bodies, &m, walker, v(0.2, 0.0), 60);
+    assert_eq!(bodies.get(rock).unwrap().position(), v(8.0, 3.0));
+    assert!(end.x > 9.0, "did not get round the rock: {end}");
+}
+
+#[test]
+fn compound_bodies_collide_with_every_circle() {
+    let m = map(HALL);
+    let mut bodies = Bodies::new();
+    let cart = BodyShape::compound([
+        Circle::new(v(-0.5, 0.0), 0.3),
+        Circle::new(v(0.5, 0.0), 0.3),
+    ])
+    .unwrap();
+    let h = bodies.add(BodyDesc::new(v(3.0, 2.0), cart)).unwrap();
+    let end = push(&mut bodies, &m, h, v(0.5, 0.0), 60);
+    // Its front wheel stops at the right wall: centre at 19 − 0.3 − 0.5.
+    assert!((end.x - 18.2).abs() < 2e-3, "{end}");
+}
+
+#[test]
+fn filters_choose_what_collides() {
+    let m = map(HALL);
+    let mut bodies = Bodies::new();
+    let ghost_filter = BodyFilter {
+        groups: 2,
+        collides_with: 2,
+        walls: SegmentFlags::NONE,
+    };
+    let ghost = bodies
+        .add(BodyDesc::new(v(2.0, 2.0), BodyShape::circle(0.4).unwrap()).with_filter(ghost_filter))
+        .unwrap();
+    let _wall_of_people = circle(&mut bodies, v(5.0, 2.0), 0.9);
+    // Through the body and out through the wall.
+    let end = push(&mut bodies, &m, ghost, v(1.0, 0.0), 25);
+    assert!(end.x > 20.0, "{end}");
+}
+
+#[test]
+fn exact_time_of_impact_never_tunnels_where_bisection_does() {
+    let m = map("\
+##########
+#...#....#
+##########");
+    // A move that ends beyond the one-cell wall: the write-up's bisection checks only
+    // sampled positions, starting with the end, and passes through.
+    let run = |toi| {
+        let mut bodies = Bodies::with_config(ResolveConfig {
+            toi,
+            ..ResolveConfig::default()
+        });
+        let h = circle(&mut bodies, v(2.0, 1.5), 0.3);
+        push(&mut bodies, &m, h, v(4.0, 0.0), 1)
+    };
+    let exact = run(TimeOfImpact::Exact);
+    let bisection = run(TimeOfImpact::Bisection { halvings: 4 });
+    assert!(exact.x < 4.0 - 0.3 + 1e-6, "{exact}");
+    assert!(bisection.x > 5.0, "{bisection}");
+    // Where bisection does stop, it stops short of where the exact sweep stops.
+    let near = |toi| {
+        let mut bodies = Bodies::with_config(ResolveConfig {
+            toi,
+            slide: SlideMode::Stop,
+            ..ResolveConfig::default()
+        });
+        let h = circle(&mut bodies, v(2.0, 1.5), 0.3);
+        push(&mut bodies, &m, h, v(1.8, 0.0), 1)
+    };
+    let (e, b) = (
+        near(TimeOfImpact::Exact),
+        near(TimeOfImpact::Bisection { halvings: 4 }),
+    );
+    assert!(
+        b.x <= e.x && e.x - b.x <= 1.8 / 16.0 + 1e-3,
+        "exact {e}, bisection {b}"
+    );
+}
+
+#[test]
+fn stale_handles_and_bad_numbers_are_errors() {
+    let mut bodies = Bodies::new();
+    let h = circle(&mut bodies, v(1.0, 1.0), 0.3);
+    bodies.remove(h).unwrap();
+    let reused = circle(&mut bodies, v(2.0, 2.0), 0.3);
+    assert_eq!(reused.index(), h.index());
+    assert_eq!(
+        bodies.propose(h, v(1.0, 0.0)),
+        Err(BodyError::StaleHandle(h))
+    );
+    assert!(matches!(bodies.get(h), Err(BodyError::StaleHandle(_))));
+    assert!(matches!(bodies.remove(h), Err(BodyError::StaleHandle(_))));
+    assert!(matches!(
+        bodies.propose(reused, v(f32::NAN, 0.0)),
+        Err(BodyError::NonFinite { what: "move", .. })
+    ));
+    assert!(matches!(
+        bodies.add(BodyDesc::new(
+            v(f32::INFINITY, 0.0),
+            BodyShape::circle(1.0).unwrap()
+        )),
+        Err(BodyError::NonFinite {
+            what: "position",
+            ..
+        })
+    ));
+    assert!(matches!(
+        BodyShape::compound([Circle::new(v(0.0, f32::NAN), 1.0)]),
+        Err(BodyError::InvalidOffset { index: 0, .. })
+    ));
+    assert_eq!(BodyShape::compound([]), Err(BodyError::EmptyShape));
+    assert_eq!(bodies.len(), 1);
+}
