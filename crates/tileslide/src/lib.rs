@@ -3,6 +3,10 @@
 //! Collision detection for tile-based 2D games: tiles hold line segments with outward
 //! normals (slopes, bumps, one-way platforms), the map hides the seams between neighbouring
 //! tiles, and ray casts walk the grid exactly and return the globally nearest hit.
+//! [`Bodies`] moves circles (and compounds of circles) through the map: each tick every body
+//! proposes a move, [`Bodies::resolve`] checks the moves against each other and the walls at
+//! the exact time of impact and slides the blocked remainder along the contact tangent, so
+//! crowds flow around each other and along walls without ever overlapping.
 //!
 //! ## Conventions
 //!
