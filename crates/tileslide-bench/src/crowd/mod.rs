@@ -34,6 +34,11 @@ pub use parry_slide::{ParryCrowd, ParrySegmentsCrowd, ParryVoxelsCrowd};
 pub use rapier_kcc::RapierCrowd;
 pub use tileslide_crowd::{TileslideCrowd, TileslideCrowdError};
 
+use std::time::Instant;
+
+use glam::Vec2;
+use tileslide_scenes::{CrowdAudit, SolidGrid, audit_crowd};
+
 /// An 8×8 room for the contenders' tests: solid border ring, open inside ([1, 7] × [1, 7]).
 #[cfg(test)]
 pub(crate) fn test_room() -> SolidGrid {
@@ -42,11 +47,6 @@ pub(crate) fn test_room() -> SolidGrid {
         "########",
     ])
 }
-
-use std::time::Instant;
-
-use glam::Vec2;
-use tileslide_scenes::{CrowdAudit, SolidGrid, audit_crowd};
 
 /// Something that moves a crowd of circles through a map: tileslide or one of its peers.
 ///

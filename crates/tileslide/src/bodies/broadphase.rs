@@ -119,17 +119,9 @@ impl PairFinder {
         if self.order.len() != boxes.len() {
             self.order = (0..boxes.len() as u32).collect();
         }
-        // Insertion sort by (min.x, index): stable across calls and deterministic.
+        // By (min.x, index): deterministic, and nearly sorted from the last call.
         let key = |i: u32| (boxes[i as usize].min.x, i);
-        for k in 1..self.order.len() {
-            let item = self.order[k];
-            let mut j = k;
-            while j > 0 && lt(key(item), key(self.order[j - 1])) {
-                self.order[j] = self.order[j - 1];
-                j -= 1;
-            }
-            self.order[j] = item;
-        }
+        insertion_sort_by(&mut self.order, |a, b| lt(key(a), key(b)));
         for (k, &i) in self.order.iter().enumerate() {
             let a = &boxes[i as usize];
             for &j in &self.order[k + 1..] {
@@ -142,6 +134,20 @@ impl PairFinder {
                 }
             }
         }
+    }
+}
+
+/// Sorts in place with insertion sort: close to linear on nearly sorted lists (the sweep
+/// order between calls) and on short ones (a circle's few neighbours).
+pub(crate) fn insertion_sort_by<T: Copy>(list: &mut [T], less: impl Fn(T, T) -> bool) {
+    for k in 1..list.len() {
+        let item = list[k];
+        let mut j = k;
+        while j > 0 && less(item, list[j - 1]) {
+            list[j] = list[j - 1];
+            j -= 1;
+        }
+        list[j] = item;
     }
 }
 

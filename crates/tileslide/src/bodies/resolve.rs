@@ -23,7 +23,7 @@
 use glam::Vec2;
 
 use super::body::BodyFilter;
-use super::broadphase::PairFinder;
+use super::broadphase::{PairFinder, insertion_sort_by};
 use super::config::{ResolveConfig, SlideMode, TimeOfImpact};
 use super::set::Body;
 use crate::geometry::{Aabb, SweepHit, bisect, sweep_circle_circle};
@@ -193,7 +193,7 @@ impl Scratch {
                 self.first_neighbour[c] as usize,
                 self.first_neighbour[c + 1] as usize,
             );
-            insertion_sort(&mut self.neighbours[s..e]);
+            insertion_sort_by(&mut self.neighbours[s..e], |a, b| a < b);
         }
     }
 
@@ -300,19 +300,6 @@ impl Scratch {
             }
         }
         best
-    }
-}
-
-/// Sorts a short list (a circle's few neighbours) in place.
-fn insertion_sort(list: &mut [u32]) {
-    for k in 1..list.len() {
-        let item = list[k];
-        let mut j = k;
-        while j > 0 && list[j - 1] > item {
-            list[j] = list[j - 1];
-            j -= 1;
-        }
-        list[j] = item;
     }
 }
 
