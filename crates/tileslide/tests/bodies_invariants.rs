@@ -9,7 +9,9 @@
 //!   room (4-connected empty region) it started in, whatever its speed;
 //! - bodies without a move did not move.
 //!
-//! And two runs of the same scene give bit-identical positions.
+//! And two runs of the same scene give bit-identical positions, and a resolver that
+//! remembers its last step (to skip bodies blocked in place again) moves every body exactly
+//! as one without memory, whatever happens between steps.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -18,8 +20,8 @@ use std::sync::Arc;
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Bodies, BodyDesc, BodyHandle, BodyShape, Broadphase, Circle, ResolveConfig, SegmentFlags,
-    SlideMode, TileMap, Vec2,
+    Bodies, BodyDesc, BodyFilter, BodyHandle, BodyShape, Broadphase, Cell, Circle, ResolveConfig,
+    SegmentFlags, SlideMode, TileMap, Vec2,
 };
 
 /// Largest overlap allowed after a step, in cells (the skin).
@@ -309,6 +311,49 @@ fn regions(w: u32, h: u32, chars: &[char]) -> Vec<Option<u32>> {
 
 const STEPS: usize = 6;
 
+/// Steps of the memory model test: long enough for crowds to jam against walls.
+const JAM_STEPS: usize = 16;
+
+/// Something that happens between two steps of the memory model test (fractions pick the
+/// body, the cell or the place).
+#[derive(Clone, Debug)]
+enum Event {
+    Nothing,
+    /// A body jumps somewhere else.
+    Teleport(f32, f32, f32),
+    /// A cell of the map becomes solid or empty.
+    Edit(f32, f32, bool),
+    Remove(f32),
+    /// A body proposes no move this step.
+    Pause(f32),
+    /// A body stops colliding with the others.
+    Ghost(f32),
+    /// Resolve without integrating: the next resolve starts from the same positions.
+    NoIntegrate,
+    /// Fewer passes.
+    Config,
+}
+
+fn events() -> impl Strategy<Value = Vec<Event>> {
+    let unit = || 0.0f32..1.0;
+    let one = prop_oneof![
+        12 => Just(Event::Nothing),
+        1 => (unit(), unit(), unit()).prop_map(|(k, x, y)| Event::Teleport(k, x, y)),
+        1 => (unit(), unit(), any::<bool>()).prop_map(|(x, y, s)| Event::Edit(x, y, s)),
+        1 => unit().prop_map(Event::Remove),
+        1 => unit().prop_map(Event::Pause),
+        1 => unit().prop_map(Event::Ghost),
+        1 => Just(Event::NoIntegrate),
+        1 => Just(Event::Config),
+    ];
+    prop::collection::vec(one, JAM_STEPS)
+}
+
+/// Index `k` (a fraction) of a list of `len` > 0.
+fn pick(k: f32, len: usize) -> usize {
+    ((k * len as f32) as usize).min(len - 1)
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
 
@@ -375,5 +420,80 @@ proptest! {
         let bits = |v: &[Vec2]| v.iter().map(|p| (p.x.to_bits(), p.y.to_bits())).collect::<Vec<_>>();
         prop_assert_eq!(bits(&a), bits(&b));
         prop_assert_eq!(bits(&a), bits(&c));
+    }
+
+    /// Bodies with constant moves jam against walls and each other, so the resolver skips
+    /// those blocked in place again; between steps, bodies jump, pause, vanish or turn into
+    /// ghosts, the map is edited and settings change. Every step, each resolved move and
+    /// the report are bit-identical to those of a fresh resolver without memory.
+    #[test]
+    fn settled_bodies_move_exactly_as_without_memory(
+        (w, h, chars) in map_strategy(true),
+        proposals in proposals(1, 0.7),
+        events in events(),
+        sap in any::<bool>(),
+    ) {
+        let mut map = build_map(w, h, &chars);
+        let (mut bodies, placed) = place(&map, &proposals);
+        let mut config = ResolveConfig {
+            broadphase: if sap { Broadphase::SweepAndPrune } else { Broadphase::UniformGrid },
+            ..ResolveConfig::default()
+        };
+        bodies.set_config(config);
+        let mut live: Vec<(BodyHandle, Vec2)> =
+            placed.iter().map(|(h, p)| (*h, p.moves[0])).collect();
+        let moves = |b: &Bodies| {
+            b.iter()
+                .map(|(_, b)| (b.resolved_move().x.to_bits(), b.resolved_move().y.to_bits()))
+                .collect::<Vec<_>>()
+        };
+        for (step, event) in events.iter().enumerate() {
+            let mut paused = None;
+            let mut integrate = true;
+            match *event {
+                Event::Nothing => {}
+                Event::Teleport(k, x, y) if !live.is_empty() => {
+                    let to = Vec2::new(x * w as f32, y * h as f32);
+                    bodies.set_position(live[pick(k, live.len())].0, to).unwrap();
+                }
+                Event::Edit(x, y, solid) => {
+                    let cell = Cell::new(pick(x, w as usize) as u32, pick(y, h as usize) as u32);
+                    let id = ascii::tile_for_char(if solid { '#' } else { '.' }).unwrap();
+                    map.set_tile(cell, id).unwrap();
+                }
+                Event::Remove(k) if !live.is_empty() => {
+                    let (handle, _) = live.remove(pick(k, live.len()));
+                    bodies.remove(handle).unwrap();
+                }
+                Event::Pause(k) if !live.is_empty() => paused = Some(pick(k, live.len())),
+                Event::Ghost(k) if !live.is_empty() => {
+                    let ghost = BodyFilter { groups: 2, collides_with: 2, ..BodyFilter::default() };
+                    bodies.set_filter(live[pick(k, live.len())].0, ghost).unwrap();
+                }
+                Event::NoIntegrate => integrate = false,
+                Event::Config => {
+                    config.passes = config.passes.saturating_sub(1).max(1);
+                    bodies.set_config(config);
+                }
+                _ => {}
+            }
+            for (i, (handle, motion)) in live.iter().enumerate() {
+                let motion = if paused == Some(i) { Vec2::ZERO } else { *motion };
+                bodies.propose(*handle, motion).unwrap();
+            }
+            let mut fresh = Bodies::with_config(config);
+            for (_, b) in bodies.iter() {
+                let desc = BodyDesc::new(b.position(), b.shape().clone()).with_filter(b.filter());
+                let handle = fresh.add(desc).unwrap();
+                fresh.propose(handle, b.proposed_move()).unwrap();
+            }
+            let expected = fresh.resolve(&map);
+            let got = bodies.resolve(&map);
+            prop_assert_eq!(got, expected, "step {}: report", step);
+            prop_assert_eq!(moves(&bodies), moves(&fresh), "step {}: resolved moves", step);
+            if integrate {
+                bodies.integrate();
+            }
+        }
     }
 }

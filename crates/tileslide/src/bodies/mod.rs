@@ -13,6 +13,7 @@ mod broadphase;
 mod config;
 mod resolve;
 mod set;
+mod settled;
 
 pub use body::{BodyDesc, BodyFilter, BodyShape};
 pub use config::{Broadphase, ResolveConfig, SlideMode, TimeOfImpact};

@@ -26,6 +26,7 @@ use super::body::BodyFilter;
 use super::broadphase::{PairFinder, insertion_sort_by};
 use super::config::{ResolveConfig, SlideMode, TimeOfImpact};
 use super::set::Body;
+use super::settled::Settled;
 use crate::geometry::{Aabb, SweepHit, bisect, sweep_circle_circle};
 use crate::query::Capsule;
 use crate::tiles::TileMap;
@@ -84,6 +85,8 @@ pub(crate) struct Scratch {
     walls: Vec<Capsule>,
     /// `walls` ranges per circle of the body being resolved.
     wall_ranges: Vec<(u32, u32)>,
+    /// The last resolve, to skip bodies blocked in place again.
+    pub(super) settled: Settled,
 }
 
 impl Scratch {
@@ -98,17 +101,49 @@ impl Scratch {
         let gap = config.gap.max(0.0) * map.cell_size().min_element();
         self.load(bodies, gap);
         self.find_neighbours(config);
+        self.settled.begin(&self.position, map.revision(), config);
         let mut report = ResolveReport::default();
         for (b, body) in bodies.iter_mut().enumerate() {
-            if self.motion[b] == Vec2::ZERO {
+            let (start, motion) = (self.position[b], self.motion[b]);
+            if motion == Vec2::ZERO {
+                self.settled.remember_still(b, start);
                 continue;
             }
-            report.moving += 1;
-            let start = self.position[b];
+            if self.settled.stays(b, start, motion, &mut report) {
+                body.resolved = Vec2::ZERO;
+                continue;
+            }
+            let before = report;
             self.collide_and_slide(b as u32, config, gap, map, &mut report);
-            body.resolved = self.position[b] - start;
+            let end = self.position[b];
+            body.resolved = end - start;
+            report.moving += 1;
+            let contacts = report.contacts - before.contacts;
+            let cut_short = report.cut_short > before.cut_short;
+            self.settled
+                .remember(b, start, motion, end, contacts, cut_short);
+            if end != start {
+                self.disturb_neighbours(b);
+            }
         }
         report
+    }
+
+    /// Forgets the last resolve: the bodies changed in a way their positions do not show.
+    pub fn forget(&mut self) {
+        self.settled.forget();
+    }
+
+    /// Body `b` moved: flags the bodies whose boxes touch its own as disturbed.
+    fn disturb_neighbours(&mut self, b: usize) {
+        let circles = self.first_circle[b] as usize..self.first_circle[b + 1] as usize;
+        for c in circles {
+            let row = self.first_neighbour[c] as usize..self.first_neighbour[c + 1] as usize;
+            for &n in &self.neighbours[row] {
+                let other = self.circles[n as usize].body as usize;
+                self.settled.disturb(b, other);
+            }
+        }
     }
 
     /// Copies the bodies into flat arrays.

@@ -214,6 +214,7 @@ impl Bodies {
         let slot = &mut self.slots[index as usize];
         slot.body = Some(body);
         self.len += 1;
+        self.scratch.forget();
         Ok(BodyHandle {
             index,
             generation: slot.generation,
@@ -235,6 +236,7 @@ impl Bodies {
             self.free.push(handle.index);
         }
         self.len -= 1;
+        self.scratch.forget();
         Ok(body)
     }
 
@@ -324,6 +326,7 @@ impl Bodies {
     /// [`BodyError::StaleHandle`].
     pub fn set_filter(&mut self, handle: BodyHandle, filter: BodyFilter) -> Result<(), BodyError> {
         self.get_mut(handle)?.filter = filter;
+        self.scratch.forget();
         Ok(())
     }
 

@@ -42,6 +42,15 @@ pub const RAMP_DOWN_RIGHT: TileId = TileId(3);
 /// `=`: a one-way platform along the top edge.
 pub const ONE_WAY: TileId = TileId(4);
 
+/// A room of 6 × 3 empty cells walled in, for the crate's tests.
+#[cfg(test)]
+pub(crate) const TEST_ROOM: &str = "\
+########
+#......#
+#......#
+#......#
+########";
+
 /// The tile id for an ASCII character: `Ok(None)` for empty, `Err(())` for an unknown one.
 #[allow(clippy::result_unit_err)]
 pub fn tile_for_char(c: char) -> Result<Option<TileId>, ()> {

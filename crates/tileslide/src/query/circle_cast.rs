@@ -239,7 +239,7 @@ impl TileMap {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::ascii;
+    use crate::io::ascii::{self, TEST_ROOM};
 
     fn map(text: &str) -> TileMap {
         ascii::parse(text, "test.txt", 1.0).unwrap()
@@ -249,16 +249,9 @@ mod tests {
         Vec2::new(x, y)
     }
 
-    const ROOM: &str = "\
-########
-#......#
-#......#
-#......#
-########";
-
     #[test]
     fn a_circle_sliding_along_a_floor_of_many_tiles_is_never_stopped() {
-        let m = map(ROOM);
+        let m = map(TEST_ROOM);
         // Resting on the floor (y = 4, y down) at exactly its radius, moving along it over
         // five seams.
         let hit = m.cast_circle(v(1.5, 3.75), 0.25, v(6.0, 0.0), &RayFilter::default());
@@ -328,7 +321,7 @@ mod tests {
 
     #[test]
     fn flag_masks_and_bad_input() {
-        let m = map(ROOM);
+        let m = map(TEST_ROOM);
         let none = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
         assert!(
             m.cast_circle(v(2.0, 2.0), 0.25, v(9.0, 0.0), &none)

@@ -1,5 +1,6 @@
 use std::collections::BTreeMap;
 use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use glam::Vec2;
 use thiserror::Error;
@@ -130,12 +131,22 @@ pub struct TileMap {
     placed: usize,
     pub(crate) store: SegmentStore,
     pub(crate) temporaries: Vec<TemporarySegment>,
+    /// Changes whenever what the map holds changes (see [`next_revision`]).
+    revision: u64,
     /// Reused buffers for the active segments of the cells an edit recomputes (the cell
     /// and its four neighbours), so an edit does not allocate once warmed up.
     scratch: [Vec<HotSegment>; 5],
 }
 
 const EMPTY: u32 = u32::MAX;
+
+/// A number no map has had yet: every new map and every edit takes one, so two maps with the
+/// same revision hold the same tiles and temporaries (a clone keeps its original's until it
+/// is edited). Memories of a map's contents (the settled bodies of a resolve) compare it.
+fn next_revision() -> u64 {
+    static NEXT: AtomicU64 = AtomicU64::new(0);
+    NEXT.fetch_add(1, Ordering::Relaxed)
+}
 
 impl TileMap {
     /// An empty map of `width × height` cells of the tile set's tile size, cell (0, 0)'s
@@ -171,6 +182,7 @@ impl TileMap {
             placed: 0,
             store: SegmentStore::new(cells as usize),
             temporaries: Vec::new(),
+            revision: next_revision(),
             scratch: Default::default(),
         })
     }
@@ -252,6 +264,7 @@ impl TileMap {
             return Ok(());
         }
         self.tiles[index] = raw;
+        self.revision = next_revision();
         // Recompute the cell and its four neighbours into the scratch buffers first, and
         // apply them only if the store can take them all: a refused edit changes nothing.
         let (col, row) = (cell.col as i64, cell.row as i64);
@@ -505,17 +518,31 @@ impl TileMap {
     /// [`clear_temporaries`](Self::clear_temporaries). Refused if non-finite or degenerate.
     pub fn add_temporary(&mut self, segment: TemporarySegment) -> Result<(), MapError> {
         self.temporaries.push(segment.validated()?);
+        self.revision = next_revision();
         Ok(())
     }
 
     /// Removes every temporary segment (call once per frame before submitting new ones).
     pub fn clear_temporaries(&mut self) {
-        self.temporaries.clear();
+        if !self.temporaries.is_empty() {
+            self.temporaries.clear();
+            self.revision = next_revision();
+        }
     }
 
     /// Removes the temporary segments of one owner.
     pub fn clear_temporaries_of(&mut self, owner: super::Owner) {
+        let before = self.temporaries.len();
         self.temporaries.retain(|t| t.owner != owner);
+        if self.temporaries.len() != before {
+            self.revision = next_revision();
+        }
+    }
+
+    /// Changes with every edit of the tiles or temporaries; equal for two maps only if
+    /// they hold the same (a map and its unedited clones).
+    pub(crate) fn revision(&self) -> u64 {
+        self.revision
     }
 
     /// The temporary segments, in the order they were added.
