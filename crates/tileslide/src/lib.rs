@@ -6,7 +6,9 @@
 //! [`Bodies`] moves circles (and compounds of circles) through the map: each tick every body
 //! proposes a move, [`Bodies::resolve`] checks the moves against each other and the walls at
 //! the exact time of impact and slides the blocked remainder along the contact tangent, so
-//! crowds flow around each other and along walls without ever overlapping.
+//! crowds flow around each other and along walls without ever overlapping. [`HitWorld`]
+//! finds the hits between objects' attack and vulnerability volumes each frame, with hit
+//! types, teams and "hit once per swing", exactly and along fast moves.
 //!
 //! ## Conventions
 //!
@@ -44,15 +46,18 @@
 //! ```
 
 mod bodies;
+mod broadphase;
 mod geometry;
 pub mod io;
 mod query;
 mod tiles;
+mod volumes;
 
 pub use bodies::{
-    Bodies, Body, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Broadphase,
-    ResolveConfig, ResolveReport, SlideMode, TimeOfImpact,
+    Bodies, Body, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, ResolveConfig,
+    ResolveReport, SlideMode, TimeOfImpact,
 };
+pub use broadphase::{Broadphase, PairFinder};
 pub use geometry::{
     Aabb, Circle, PARALLEL_TOLERANCE, Ray, RaySegmentHit, Segment, SweepHit, cast_ray_segment,
     sweep_circle_circle, sweep_circle_segment,
@@ -63,6 +68,10 @@ pub use tiles::{
     ActiveSegment, Cell, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError, Owner, SegmentFlags, SegmentRef,
     ShapeError, TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet,
     TileSetError, TileShape,
+};
+pub use volumes::{
+    Facing, HitEvent, HitObject, HitRule, HitTypes, HitWorld, ObjectId, TeamRule, Volume,
+    VolumeError, VolumeShape,
 };
 
 /// The README's quick start, compiled and run as a doctest.

@@ -1,6 +1,8 @@
 //! How `resolve` works: the time-of-impact method, the slide rule, the number of passes,
 //! the broadphase and the contact gap.
 
+use crate::broadphase::Broadphase;
+
 /// How the time of impact of a move is found.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum TimeOfImpact {
@@ -31,17 +33,6 @@ pub enum SlideMode {
     Tangential,
     /// No slide: the body stops at the contact.
     Stop,
-}
-
-/// Which broadphase finds the pairs of bodies that may meet during a step.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Broadphase {
-    /// A uniform grid sized to the largest body's reach: the right choice when bodies are
-    /// of similar size. The default.
-    #[default]
-    UniformGrid,
-    /// Sweep and prune along x: no size assumption, better when sizes vary widely.
-    SweepAndPrune,
 }
 
 /// Settings of [`Bodies::resolve`](crate::Bodies::resolve).

@@ -9,13 +9,12 @@
 //! guarantees and `docs/resolver.md` for the design.
 
 mod body;
-mod broadphase;
 mod config;
 mod resolve;
 mod set;
 mod settled;
 
 pub use body::{BodyDesc, BodyFilter, BodyShape};
-pub use config::{Broadphase, ResolveConfig, SlideMode, TimeOfImpact};
+pub use config::{ResolveConfig, SlideMode, TimeOfImpact};
 pub use resolve::ResolveReport;
 pub use set::{Bodies, Body, BodyError, BodyHandle};

@@ -23,10 +23,10 @@
 use glam::Vec2;
 
 use super::body::BodyFilter;
-use super::broadphase::{PairFinder, insertion_sort_by};
 use super::config::{ResolveConfig, SlideMode, TimeOfImpact};
 use super::set::Body;
 use super::settled::Settled;
+use crate::broadphase::{PairFinder, insertion_sort_by};
 use crate::geometry::{Aabb, SweepHit, bisect, sweep_circle_circle};
 use crate::query::Capsule;
 use crate::tiles::TileMap;

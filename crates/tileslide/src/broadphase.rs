@@ -1,20 +1,48 @@
-//! Broadphase: the pairs of boxes that overlap, each once, found with a uniform grid or by
-//! sweep and prune. Both are checked against the all-pairs reference by a model test.
+//! Broadphase: the pairs of boxes that overlap (closed boxes: touching counts), each once,
+//! found with a uniform grid or by sweep and prune. Both are checked against the all-pairs
+//! reference by a model test.
 //!
-//! Boxes are the regions a circle can reach during a step (its circle grown by its move),
-//! so a pair that can meet is never missed.
+//! [`Bodies`](crate::Bodies) feeds it the regions its circles can reach during a step, and
+//! the hit volumes their objects' swept bounding circles, so a pair that can meet is never
+//! missed.
+//!
+//! ```
+//! use tileslide::{Aabb, Broadphase, PairFinder, Vec2};
+//! let boxes = [
+//!     Aabb::from_corners(Vec2::new(0.0, 0.0), Vec2::new(1.0, 1.0)),
+//!     Aabb::from_corners(Vec2::new(1.0, 0.5), Vec2::new(2.0, 1.5)), // touches the first
+//!     Aabb::from_corners(Vec2::new(5.0, 5.0), Vec2::new(6.0, 6.0)),
+//! ];
+//! let mut finder = PairFinder::default();
+//! let mut pairs = Vec::new();
+//! finder.find(Broadphase::SweepAndPrune, &boxes, &mut pairs);
+//! assert_eq!(pairs, [(0, 1)]);
+//! ```
 
 use glam::Vec2;
 
-use super::config::Broadphase;
 use crate::geometry::Aabb;
+
+/// Which broadphase finds the pairs of boxes: bodies that may meet during a step, objects
+/// whose hit volumes may touch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Broadphase {
+    /// A uniform grid sized to the largest body's reach: the right choice when bodies are
+    /// of similar size. The default.
+    #[default]
+    UniformGrid,
+    /// Sweep and prune along x: no size assumption, better when sizes vary widely.
+    SweepAndPrune,
+}
 
 /// Most grid cells the uniform grid allocates; beyond it, its cells grow.
 const MAX_GRID_CELLS: usize = 1 << 22;
 
-/// Reusable buffers.
+/// Finds the overlapping pairs of a list of boxes; keeps its buffers (and the sweep order)
+/// between calls, so finding the pairs of boxes that moved a little is cheap and allocates
+/// nothing once warm.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct PairFinder {
+pub struct PairFinder {
     /// Uniform grid: per cell, the start of its run in `entries` (prefix sums).
     starts: Vec<u32>,
     entries: Vec<u32>,
@@ -126,7 +154,13 @@ impl PairFinder {
 
     fn sweep_and_prune(&mut self, boxes: &[Aabb], pairs: &mut Vec<(u32, u32)>) {
         if self.order.len() != boxes.len() {
-            self.order = (0..boxes.len() as u32).collect();
+            // Fewer or more boxes than last time (objects come and go between frames): keep
+            // the order of the ones still there, the new ones at the end, so the insertion
+            // sort still starts from a nearly sorted list.
+            let n = boxes.len() as u32;
+            let old = self.order.len() as u32;
+            self.order.retain(|&i| i < n);
+            self.order.extend(old..n);
         }
         // By (min.x, index): deterministic, and nearly sorted from the last call.
         let key = |i: u32| (boxes[i as usize].min.x, i);

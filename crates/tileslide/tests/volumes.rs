@@ -1,0 +1,447 @@
+//! Attack and vulnerability volumes: Replica Island's scenarios (type matching, "any" on
+//! either side, the first matching attack volume, mirroring, report order, refusal), the
+//! corner case its bounding circle got wrong, swings, swept projectiles, and a model test of
+//! both broadphases against an all-pairs reference written independently of the library.
+
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use proptest::prelude::*;
+use tileslide::{
+    Broadphase, Facing, HitEvent, HitObject, HitTypes, HitWorld, ObjectId, TeamRule, Vec2, Volume,
+    VolumeShape,
+};
+
+fn circle(x: f32, y: f32, r: f32, hit: HitTypes) -> Volume {
+    Volume::circle(Vec2::new(x, y), r, hit).unwrap()
+}
+
+fn rect(x0: f32, y0: f32, x1: f32, y1: f32, hit: HitTypes) -> Volume {
+    Volume::rect(Vec2::new(x0, y0), Vec2::new(x1, y1), hit).unwrap()
+}
+
+fn object(key: u64, x: f32, y: f32) -> HitObject {
+    HitObject {
+        team: key as u32,
+        ..HitObject::new(key, Vec2::new(x, y), Vec2::ONE)
+    }
+}
+
+/// A unit body accepting `accepts`.
+fn body(accepts: HitTypes) -> [Volume; 1] {
+    [rect(0.0, 0.0, 1.0, 1.0, accepts)]
+}
+
+fn hits(world: &mut HitWorld) -> Vec<(u32, u32, HitTypes, bool)> {
+    world
+        .detect(&mut TeamRule)
+        .iter()
+        .map(|e| (e.attacker.0, e.victim.0, e.hit_type, e.accepted))
+        .collect()
+}
+
+#[test]
+fn an_attack_hits_only_a_vulnerability_that_accepts_its_type() {
+    let mut world = HitWorld::new();
+    world.begin_frame();
+    let fist = [circle(1.2, 0.5, 0.3, HitTypes::HIT)];
+    world.register(object(1, 0.0, 0.0), &fist, &[]);
+    world.register(object(2, 1.2, 0.0), &[], &body(HitTypes::COLLECT));
+    assert!(hits(&mut world).is_empty(), "a coin does not take a punch");
+    world.begin_frame();
+    world.register(object(1, 0.0, 0.0), &fist, &[]);
+    world.register(
+        object(2, 1.2, 0.0),
+        &[],
+        &body(HitTypes::HIT | HitTypes::DEATH),
+    );
+    assert_eq!(hits(&mut world), [(0, 1, HitTypes::HIT, true)]);
+}
+
+#[test]
+fn any_matches_on_either_side_and_the_event_names_the_type_dealt() {
+    let mut world = HitWorld::new();
+    world.begin_frame();
+    // A collector touching everything, and a coin.
+    world.register(object(1, 0.0, 0.0), &body(HitTypes::ANY), &[]);
+    world.register(object(2, 0.5, 0.0), &[], &body(HitTypes::COLLECT));
+    // A spike dealing HIT to a body accepting anything.
+    world.register(object(3, 10.0, 0.0), &body(HitTypes::HIT), &[]);
+    world.register(object(4, 10.5, 0.0), &[], &body(HitTypes::ANY));
+    assert_eq!(
+        hits(&mut world),
+        [(0, 1, HitTypes::COLLECT, true), (2, 3, HitTypes::HIT, true)]
+    );
+}
+
+#[test]
+fn the_first_attack_volume_in_list_order_that_matches_gives_the_hit() {
+    let mut world = HitWorld::new();
+    world.begin_frame();
+    let attacks = [
+        circle(5.0, 0.5, 0.2, HitTypes::DEATH),   // out of reach
+        circle(1.1, 0.5, 0.2, HitTypes::COLLECT), // in reach, not accepted
+        circle(1.2, 0.5, 0.3, HitTypes::LAUNCH),  // the first that counts
+        circle(1.2, 0.5, 0.3, HitTypes::HIT),     // would count, but comes later
+    ];
+    world.register(object(1, 0.0, 0.0), &attacks, &[]);
+    world.register(
+        object(2, 1.0, 0.0),
+        &[],
+        &body(HitTypes::HIT | HitTypes::LAUNCH | HitTypes::DEATH),
+    );
+    assert_eq!(hits(&mut world), [(0, 1, HitTypes::LAUNCH, true)]);
+}
+
+#[test]
+fn volumes_are_mirrored_when_the_object_faces_the_other_way() {
+    // A sword reaching right of a 1 × 1 hero; targets on both sides.
+    let sword = [rect(1.0, 0.4, 2.0, 0.6, HitTypes::HIT)];
+    for (flip_x, struck) in [(false, 2u32), (true, 1)] {
+        let mut world = HitWorld::new();
+        world.begin_frame();
+        let hero = HitObject {
+            facing: Facing {
+                flip_x,
+                flip_y: false,
+            },
+            ..object(1, 5.0, 0.0)
+        };
+        world.register(hero, &sword, &[]);
+        world.register(object(2, 3.5, 0.0), &[], &body(HitTypes::HIT)); // left
+        world.register(object(3, 6.5, 0.0), &[], &body(HitTypes::HIT)); // right
+        let got = hits(&mut world);
+        assert_eq!(got.len(), 1, "facing left: {flip_x}: {got:?}");
+        assert_eq!(got[0].1, struck);
+    }
+}
+
+#[test]
+fn events_come_pair_by_pair_in_registration_order_both_directions() {
+    // Three brawlers overlapping, each punching and vulnerable; registered right to left,
+    // so x order and registration order differ.
+    let fist = body(HitTypes::HIT);
+    let mut world = HitWorld::new();
+    world.begin_frame();
+    for (key, x) in [(1, 1.0), (2, 0.5), (3, 0.0)] {
+        world.register(object(key, x, 0.0), &fist, &fist);
+    }
+    let order: Vec<_> = hits(&mut world).iter().map(|h| (h.0, h.1)).collect();
+    assert_eq!(order, [(0, 1), (1, 0), (0, 2), (2, 0), (1, 2), (2, 1)]);
+}
+
+#[test]
+fn the_victim_decides_and_the_attacker_learns_it() {
+    let fist = body(HitTypes::HIT);
+    let mut world = HitWorld::new();
+    world.begin_frame();
+    let a = world.register(object(1, 0.0, 0.0), &fist, &[]);
+    let b = world.register(
+        HitObject {
+            invulnerable: true,
+            ..object(2, 0.5, 0.0)
+        },
+        &[],
+        &fist,
+    );
+    let c = world.register(
+        HitObject {
+            team: 1,
+            ..object(3, 0.5, 0.5)
+        },
+        &[],
+        &fist,
+    );
+    let d = world.register(object(4, 0.0, 0.5), &[], &fist);
+    // Team rule: invulnerable and same-team victims refuse.
+    let got = world.detect(&mut TeamRule).to_vec();
+    let accepted =
+        |v: ObjectId, got: &[HitEvent]| got.iter().find(|e| e.victim == v).unwrap().accepted;
+    assert!(!accepted(b, &got) && !accepted(c, &got) && accepted(d, &got));
+    // A callback: the victim with key 4 refuses, and is asked only about hits it received.
+    let mut asked = Vec::new();
+    let got = world
+        .detect(
+            &mut |attacker: &HitObject, victim: &HitObject, _: HitTypes| {
+                asked.push((attacker.key, victim.key));
+                victim.key != 4
+            },
+        )
+        .to_vec();
+    assert_eq!(asked, [(1, 2), (1, 3), (1, 4)]);
+    assert!(accepted(b, &got) && accepted(c, &got) && !accepted(d, &got));
+    assert!(got.iter().all(|e| e.attacker == a));
+}
+
+#[test]
+fn a_volume_reaching_into_the_corner_is_not_missed() {
+    // Replica Island's bounding circle, radius max(w, h) / 2 about the object's centre,
+    // misses this: a 1 × 1 object whose attack box sits at its top-right corner, beyond
+    // the circle, touching a victim diagonally.
+    let claw = [rect(1.0, 1.0, 1.5, 1.5, HitTypes::HIT)];
+    let mut world = HitWorld::new();
+    world.begin_frame();
+    world.register(object(1, 0.0, 0.0), &claw, &[]);
+    world.register(object(2, 1.4, 1.4), &[], &body(HitTypes::HIT));
+    assert_eq!(hits(&mut world), [(0, 1, HitTypes::HIT, true)]);
+    let bounds = world.bounding_circle(ObjectId(0)).unwrap();
+    for corner in [Vec2::new(1.0, 1.0), Vec2::new(1.5, 1.5)] {
+        assert!(corner.distance(bounds.center) <= bounds.radius);
+    }
+}
+
+#[test]
+fn a_swing_hits_each_victim_once_until_it_ends() {
+    let blade = body(HitTypes::HIT);
+    let frame = |world: &mut HitWorld, swing: Option<u64>| {
+        world.begin_frame();
+        let hero = HitObject {
+            swing,
+            ..object(1, 0.0, 0.0)
+        };
+        world.register(hero, &blade, &[]);
+        world.register(object(2, 0.5, 0.0), &[], &blade);
+        hits(world).len()
+    };
+    let mut world = HitWorld::new();
+    assert_eq!(frame(&mut world, Some(7)), 1);
+    assert_eq!(frame(&mut world, Some(7)), 0, "same swing, same victim");
+    assert_eq!(frame(&mut world, None), 1, "no swing: hits every frame");
+    assert_eq!(frame(&mut world, Some(7)), 1, "swing 7 ended: a new one");
+    assert_eq!(frame(&mut world, Some(8)), 1, "another swing");
+}
+
+#[test]
+fn a_refused_hit_does_not_use_up_the_swing() {
+    let blade = body(HitTypes::HIT);
+    let mut world = HitWorld::new();
+    for (invulnerable, expected) in [(true, false), (false, true), (false, false)] {
+        world.begin_frame();
+        let hero = HitObject {
+            swing: Some(1),
+            ..object(1, 0.0, 0.0)
+        };
+        world.register(hero, &blade, &[]);
+        let victim = HitObject {
+            invulnerable,
+            ..object(2, 0.5, 0.0)
+        };
+        world.register(victim, &[], &blade);
+        let accepted = hits(&mut world).iter().any(|h| h.3);
+        assert_eq!(accepted, expected);
+    }
+}
+
+#[test]
+fn a_bullet_ten_times_its_size_per_frame_cannot_pass_through() {
+    let bullet = [circle(0.0, 0.0, 0.05, HitTypes::HIT)];
+    let mut world = HitWorld::new();
+    world.begin_frame();
+    // From x = -0.6 to x = 0.4 this frame (+1.0), through a target 0.1 thick at x = 0.
+    let shot = HitObject {
+        motion: Vec2::new(1.0, 0.0),
+        ..HitObject::new(1, Vec2::new(0.4, 0.5), Vec2::ZERO)
+    };
+    world.register(shot, &bullet, &[]);
+    let wall = [rect(0.0, 0.0, 0.1, 1.0, HitTypes::HIT)];
+    world.register(HitObject::new(2, Vec2::ZERO, Vec2::ONE), &[], &wall);
+    assert_eq!(hits(&mut world).len(), 1);
+    // The target moving too: they pass each other in the frame, meeting in the middle.
+    world.begin_frame();
+    world.register(shot, &bullet, &[]);
+    let dodging = HitObject {
+        motion: Vec2::new(-1.0, 0.0),
+        ..HitObject::new(2, Vec2::new(-0.9, 0.0), Vec2::ONE)
+    };
+    world.register(dodging, &[], &wall);
+    assert_eq!(hits(&mut world).len(), 1);
+}
+
+// ---- Model test: both broadphases against an independent all-pairs reference. ----
+
+/// A volume placed in the world, for the reference.
+#[derive(Clone, Copy, Debug)]
+enum Shape {
+    Circle(Vec2, f32),
+    Box(Vec2, Vec2),
+}
+
+fn placed(v: &Volume, o: &HitObject) -> Shape {
+    let m = |p: Vec2| {
+        Vec2::new(
+            if o.facing.flip_x { o.size.x - p.x } else { p.x },
+            if o.facing.flip_y { o.size.y - p.y } else { p.y },
+        )
+    };
+    match v.shape {
+        VolumeShape::Circle(c) => Shape::Circle(o.position + m(c.center), c.radius),
+        VolumeShape::Box(b) => {
+            let (a, c) = (m(b.min), m(b.max));
+            Shape::Box(o.position + a.min(c), o.position + a.max(c))
+        }
+    }
+}
+
+fn overlap(a: Shape, b: Shape) -> bool {
+    match (a, b) {
+        (Shape::Circle(p, r), Shape::Circle(q, s)) => p.distance_squared(q) <= (r + s) * (r + s),
+        (Shape::Circle(p, r), Shape::Box(lo, hi)) | (Shape::Box(lo, hi), Shape::Circle(p, r)) => {
+            p.clamp(lo, hi).distance_squared(p) <= r * r
+        }
+        (Shape::Box(a0, a1), Shape::Box(b0, b1)) => a0.cmple(b1).all() && b0.cmple(a1).all(),
+    }
+}
+
+type Registered = (HitObject, Vec<Volume>, Vec<Volume>);
+
+fn reference(objects: &[Registered]) -> Vec<(u32, u32, HitTypes)> {
+    let mut out = Vec::new();
+    let direction = |a: usize, v: usize| {
+        let (oa, attacks, _) = &objects[a];
+        let (ov, _, vulnerable) = &objects[v];
+        attacks.iter().find_map(|x| {
+            vulnerable.iter().find_map(|y| {
+                let dealt = x.hit & y.hit;
+                (!dealt.is_empty() && overlap(placed(x, oa), placed(y, ov))).then_some(dealt)
+            })
+        })
+    };
+    for i in 0..objects.len() {
+        for j in i + 1..objects.len() {
+            for (a, v) in [(i, j), (j, i)] {
+                if let Some(t) = direction(a, v) {
+                    out.push((a as u32, v as u32, t));
+                }
+            }
+        }
+    }
+    out
+}
+
+fn hit_types() -> impl Strategy<Value = HitTypes> {
+    prop_oneof![
+        3 => (0u32..4).prop_map(|b| HitTypes::from_bits(1 << b)),
+        1 => Just(HitTypes::ANY),
+        1 => (1u32..16).prop_map(HitTypes::from_bits),
+    ]
+}
+
+fn volume() -> impl Strategy<Value = Volume> {
+    // Coordinates on a 1/8 lattice, so touching is exact and common.
+    let q = || (-8i32..24).prop_map(|v| v as f32 / 8.0);
+    prop_oneof![
+        (q(), q(), 0u32..8, hit_types()).prop_map(|(x, y, r, t)| circle(x, y, r as f32 / 8.0, t)),
+        (q(), q(), 0u32..12, 0u32..12, hit_types()).prop_map(|(x, y, w, h, t)| rect(
+            x,
+            y,
+            x + w as f32 / 8.0,
+            y + h as f32 / 8.0,
+            t
+        )),
+    ]
+}
+
+fn objects() -> impl Strategy<Value = Vec<Registered>> {
+    let one = (
+        0i32..48,
+        0i32..48,
+        any::<bool>(),
+        any::<bool>(),
+        prop::collection::vec(volume(), 0..3),
+        prop::collection::vec(volume(), 0..3),
+    )
+        .prop_map(|(x, y, fx, fy, attack, vulnerable)| {
+            let o = HitObject {
+                facing: Facing {
+                    flip_x: fx,
+                    flip_y: fy,
+                },
+                ..HitObject::new(
+                    0,
+                    Vec2::new(x as f32 / 8.0, y as f32 / 8.0),
+                    Vec2::new(1.0, 2.0),
+                )
+            };
+            (o, attack, vulnerable)
+        });
+    prop::collection::vec(one, 0..40)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 500, ..ProptestConfig::default() })]
+
+    #[test]
+    fn both_broadphases_find_exactly_the_all_pairs_hits(objects in objects()) {
+        let expected = reference(&objects);
+        for kind in [Broadphase::SweepAndPrune, Broadphase::UniformGrid] {
+            let mut world = HitWorld::with_broadphase(kind);
+            // Two frames, so the sweep order kept from the first is exercised too.
+            for _ in 0..2 {
+                world.begin_frame();
+                for (o, a, v) in &objects {
+                    world.register(*o, a, v);
+                }
+                let got: Vec<_> = world
+                    .detect(&mut |_: &HitObject, _: &HitObject, _: HitTypes| true)
+                    .iter()
+                    .map(|e| (e.attacker.0, e.victim.0, e.hit_type))
+                    .collect();
+                prop_assert_eq!(&got, &expected, "{:?}", kind);
+            }
+            for id in 0..objects.len() as u32 {
+                let (o, a, v) = &objects[id as usize];
+                if let Some(bounds) = world.bounding_circle(ObjectId(id)) {
+                    for shape in a.iter().chain(v).map(|x| placed(x, o)) {
+                        let far = match shape {
+                            Shape::Circle(p, r) => p.distance(bounds.center) + r,
+                            Shape::Box(lo, hi) => (lo - bounds.center).abs().max((hi - bounds.center).abs()).length(),
+                        };
+                        prop_assert!(far <= bounds.radius, "volume outside the bounding circle");
+                    }
+                }
+            }
+        }
+    }
+
+    /// A moving volume meets a still one exactly when some instant of the frame overlaps:
+    /// never missed (every sampled overlap is reported) and never invented (a reported hit
+    /// is within the sampling step of an overlap).
+    #[test]
+    fn swept_volumes_meet_what_some_instant_of_the_frame_overlaps(
+        a in volume(),
+        b in volume(),
+        from in (-40i32..40, -40i32..40),
+        motion in (-80i32..80, -80i32..80),
+    ) {
+        let (a, b) = (Volume { hit: HitTypes::HIT, ..a }, Volume { hit: HitTypes::HIT, ..b });
+        let motion = Vec2::new(motion.0 as f32, motion.1 as f32) / 8.0;
+        let end = Vec2::new(from.0 as f32, from.1 as f32) / 8.0 + motion;
+        let shooter = HitObject { motion, ..HitObject::new(1, end, Vec2::ONE) };
+        let target = HitObject { team: 1, ..HitObject::new(2, Vec2::ZERO, Vec2::ONE) };
+        let mut world = HitWorld::new();
+        world.begin_frame();
+        world.register(shooter, &[a], &[]);
+        world.register(target, &[], &[b]);
+        let reported = !world.detect(&mut TeamRule).is_empty();
+        const STEPS: usize = 2000;
+        let tb = placed(&b, &target);
+        let grown = |s: Shape, by: f32| match s {
+            Shape::Circle(p, r) => Shape::Circle(p, r + by),
+            Shape::Box(lo, hi) => Shape::Box(lo - Vec2::splat(by), hi + Vec2::splat(by)),
+        };
+        let step = motion.length() / STEPS as f32;
+        let mut sampled = false;
+        let mut near = false;
+        for k in 0..=STEPS {
+            let at = HitObject { position: end - motion + motion * (k as f32 / STEPS as f32), ..shooter };
+            let ta = placed(&a, &at);
+            sampled |= overlap(ta, tb);
+            near |= overlap(grown(ta, step + 1e-4), tb);
+        }
+        if sampled {
+            prop_assert!(reported, "an overlap during the frame was missed");
+        }
+        if reported {
+            prop_assert!(near, "a hit was reported with no overlap near any instant");
+        }
+    }
+}
