@@ -4,12 +4,15 @@ use anyhow::{Result, anyhow};
 use clap::Subcommand;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
+use tileslide_bench::broad::{BroadResult, contenders, run_broad};
 use tileslide_bench::crowd::{
     CrowdContender, CrowdResult, ParrySegmentsCrowd, ParryVoxelsCrowd, RapierCrowd, TileslideCrowd,
     run_crowd,
 };
 use tileslide_bench::rays::{RaysConfig, RaysReport, run_rays};
-use tileslide_scenes::{CROWD_RADIUS, CrowdBody, Scene, SolidGrid, dungeon256, scene_crowd};
+use tileslide_scenes::{
+    BROAD_RADIUS, CROWD_RADIUS, CrowdBody, Scene, SolidGrid, dungeon256, scene_crowd,
+};
 
 #[derive(Subcommand, Debug)]
 pub enum BenchCommand {
@@ -41,6 +44,20 @@ pub enum BenchCommand {
         #[arg(long)]
         json: bool,
     },
+    /// The "broad" scene: N circles bouncing in a square, every pair of overlapping boxes
+    /// each update; tileslide's sweep and prune and grid vs parry2d's Bvh and rapier2d's
+    /// broad phase.
+    Broad {
+        /// Number of circles (BENCHMARKS.md: 100000).
+        #[arg(long, default_value_t = 100_000, value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+        n: u64,
+        /// Timed updates per contender; the median is reported.
+        #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u64).range(1..=10_000))]
+        updates: u64,
+        /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 fn parse_scene(name: &str) -> Result<Scene, String> {
@@ -56,6 +73,7 @@ pub fn run(which: BenchCommand) -> Result<()> {
     }
     match which {
         BenchCommand::Crowd { n, steps, json } => crowd(n as usize, steps, json),
+        BenchCommand::Broad { n, updates, json } => broad(n as usize, updates as usize, json),
         BenchCommand::Rays {
             scene,
             n,
@@ -102,18 +120,11 @@ fn crowd(n: usize, steps: Option<u64>, json: bool) -> Result<()> {
         |g, b, r| Ok(Box::new(ParrySegmentsCrowd::new(g, b, r))),
         |g, b, r| Ok(Box::new(RapierCrowd::new(g, b, r))),
     ];
-    let bar = ProgressBar::new(contenders.len() as u64);
-    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:30}] {pos}/{len} contenders") {
-        bar.set_style(style.progress_chars("=> "));
-    }
-    let mut results: Vec<CrowdResult> = Vec::new();
-    for make in contenders {
+    let results: Vec<CrowdResult> = with_progress(contenders.to_vec(), |make, bar| {
         let mut contender = make(&grid, &bodies, CROWD_RADIUS)?;
         bar.set_message(format!("bench crowd N = {n}: {}", contender.name()));
-        results.push(run_crowd(contender.as_mut(), &grid, steps, CROWD_RADIUS));
-        bar.inc(1);
-    }
-    bar.finish_and_clear();
+        Ok(run_crowd(contender.as_mut(), &grid, steps, CROWD_RADIUS))
+    })?;
     if json {
         let list: Vec<_> = results
             .iter()
@@ -157,6 +168,55 @@ fn crowd(n: usize, steps: Option<u64>, json: bool) -> Result<()> {
         );
     }
     print_ratio(&results, |r| 1.0 / r.ms_per_step, |r| r.name);
+    Ok(())
+}
+
+fn broad(n: usize, updates: usize, json: bool) -> Result<()> {
+    let results: Vec<BroadResult> = with_progress(contenders(), |mut contender, bar| {
+        bar.set_message(format!("bench broad N = {n}: {}", contender.name()));
+        Ok(run_broad(contender.as_mut(), n, updates))
+    })?;
+    if json {
+        let list: Vec<_> = results
+            .iter()
+            .map(|r| {
+                json!({
+                    "name": r.name,
+                    "ms_per_update": r.ms_per_update,
+                    "fastest_ms": r.spread_ms.0,
+                    "slowest_ms": r.spread_ms.1,
+                    "pairs": r.pairs,
+                    "exact": r.exact,
+                })
+            })
+            .collect();
+        println!(
+            "{}",
+            json!({"scene": "broad", "n": n, "updates": updates, "radius": BROAD_RADIUS, "results": list})
+        );
+        return Ok(());
+    }
+    println!("broad: {n} circles of radius {BROAD_RADIUS}, {updates} updates, median update time");
+    println!(
+        "{:<18} {:>10} {:>21} {:>9} {:>6}",
+        "engine", "ms/update", "(fastest–slowest)", "pairs", "exact"
+    );
+    for r in &results {
+        println!(
+            "{:<18} {:>10.3} {:>21} {:>9} {:>6}",
+            r.name,
+            r.ms_per_update,
+            format!("({:.3}–{:.3})", r.spread_ms.0, r.spread_ms.1),
+            r.pairs,
+            if r.exact { "yes" } else { "NO" }
+        );
+    }
+    if results.iter().any(|r| !r.exact) {
+        println!(
+            "NO marks a contender whose pairs differ from brute force: its time means nothing"
+        );
+    }
+    print_ratio(&results, |r| 1.0 / r.ms_per_update, |r| r.name.as_str());
     Ok(())
 }
 
@@ -210,14 +270,38 @@ fn print_rays_table(report: &RaysReport) {
     print_ratio(&report.results, |r| r.mrays_per_s, |r| r.name);
 }
 
-/// Prints how many times faster tileslide (the first result) is than the fastest peer (the
-/// others), by `speed` (larger is faster).
+/// Runs `run` on each contender in turn under a progress bar (hidden when stderr is not a
+/// terminal; `run` sets its message), and collects the results.
+fn with_progress<C, R>(
+    contenders: Vec<C>,
+    mut run: impl FnMut(C, &ProgressBar) -> Result<R>,
+) -> Result<Vec<R>> {
+    let bar = ProgressBar::new(contenders.len() as u64);
+    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:30}] {pos}/{len} contenders") {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    let mut results = Vec::with_capacity(contenders.len());
+    for contender in contenders {
+        results.push(run(contender, &bar)?);
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    Ok(results)
+}
+
+/// Prints how many times faster tileslide's fastest entry (names starting with
+/// "tileslide") is than the fastest peer (the others), by `speed` (larger is faster).
 fn print_ratio<T>(results: &[T], speed: impl Fn(&T) -> f64, name: impl Fn(&T) -> &str) {
-    if let Some((ours, peers)) = results.split_first()
-        && let Some(best) = peers.iter().max_by(|a, b| speed(a).total_cmp(&speed(b)))
-    {
+    let fastest = |ours: bool| {
+        results
+            .iter()
+            .filter(|r| name(r).starts_with("tileslide") == ours)
+            .max_by(|a, b| speed(a).total_cmp(&speed(b)))
+    };
+    if let (Some(ours), Some(best)) = (fastest(true), fastest(false)) {
         println!(
-            "tileslide: {:.1}× the fastest peer ({}) in this run",
+            "{}: {:.1}× the fastest peer ({}) in this run",
+            name(ours),
             speed(ours) / speed(best),
             name(best)
         );

@@ -372,3 +372,69 @@ fn bench_crowd_json_lists_every_contender_with_its_audit() {
     assert!(ours["mean_travel"].as_f64().unwrap() > 0.0);
     assert!(ours["ms_per_step"].as_f64().unwrap() > 0.0);
 }
+
+#[test]
+fn bench_broad_json_lists_every_contender_with_the_exact_pair_count() {
+    let o = tileslide(&["bench", "broad", "--n", "3000", "--updates", "3", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["scene"], "broad");
+    assert_eq!(v["n"], 3000);
+    assert_eq!(v["updates"], 3);
+    let results = v["results"].as_array().unwrap();
+    let names: Vec<&str> = results
+        .iter()
+        .map(|r| r["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "tileslide-grid",
+            "tileslide-sap",
+            "parry2d-bvh",
+            "rapier2d-broad"
+        ]
+    );
+    // Every contender finds the same pairs, the brute-force ones.
+    let pairs = results[0]["pairs"].as_u64().unwrap();
+    assert!(pairs > 50, "{pairs}");
+    for r in results {
+        assert_eq!(r["pairs"].as_u64(), Some(pairs), "{r}");
+        assert_eq!(r["exact"], true, "{r}");
+        assert!(r["ms_per_update"].as_f64().unwrap() > 0.0, "{r}");
+    }
+}
+
+#[test]
+fn bench_broad_table_names_the_fastest_tileslide_entry_and_peer() {
+    let o = tileslide(&["bench", "broad", "--n", "2000", "--updates", "2"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("broad: 2000 circles"), "{out}");
+    for name in [
+        "tileslide-grid",
+        "tileslide-sap",
+        "parry2d-bvh",
+        "rapier2d-broad",
+    ] {
+        assert!(out.contains(name), "{out}");
+    }
+    let ratio = out
+        .lines()
+        .find(|l| l.contains("× the fastest peer"))
+        .unwrap_or_else(|| panic!("no ratio line in {out}"));
+    assert!(ratio.starts_with("tileslide-"), "{ratio}");
+    assert!(
+        !ratio.contains("(tileslide"),
+        "a tileslide entry taken for a peer: {ratio}"
+    );
+}
+
+#[test]
+fn bench_broad_rejects_zero_circles_and_updates() {
+    for args in [["--n", "0"], ["--updates", "0"]] {
+        let o = tileslide(&["bench", "broad", args[0], args[1]]);
+        assert!(!o.status.success());
+        assert!(stderr(&o).contains(args[0]), "{}", stderr(&o));
+    }
+}

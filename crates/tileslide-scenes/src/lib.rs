@@ -9,7 +9,10 @@
 //!   plain grid walk that defines what counts as a hit;
 //! - the "crowd" scene, [`scene_crowd`] (circles of [`CROWD_RADIUS`] on the
 //!   free spots of [`crowd_candidates`], each with a constant velocity), with
-//!   [`audit_crowd`] as the end-of-run check for overlaps and wall penetrations.
+//!   [`audit_crowd`] as the end-of-run check for overlaps and wall penetrations;
+//! - the "broad" scene, [`scene_broad`] (circles of [`BROAD_RADIUS`] bouncing around the
+//!   square `[1, 255]²` under [`update_broad`]), with [`broad_pairs_reference`] as the exact
+//!   set of overlapping [boxes](broad_box) every broad phase must report.
 //!
 //! Conventions: cell `(x, y)` covers `[x, x+1] × [y, y+1]`, cells are stored
 //! row-major (`y * width + x`), and cells outside a grid are empty.
@@ -28,6 +31,7 @@
 //! ```
 
 mod audit;
+mod broad;
 mod crowd;
 mod dungeon;
 mod edges;
@@ -40,6 +44,10 @@ mod tile_map;
 pub use tile_map::TileMapError;
 
 pub use audit::{AUDIT_TOLERANCE, CrowdAudit, audit_crowd};
+pub use broad::{
+    BROAD_RADIUS, BroadCircle, boxes_overlap, broad_box, broad_boxes, broad_pairs_reference,
+    scene_broad, update_broad,
+};
 pub use crowd::{CROWD_RADIUS, CrowdBody, crowd_candidates, scene_crowd};
 pub use dungeon::{dungeon256, open256};
 pub use edges::ExposedEdge;

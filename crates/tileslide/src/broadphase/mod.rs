@@ -1,0 +1,415 @@
+//! Broadphase: the pairs of boxes that overlap (closed boxes: touching counts), each once,
+//! found with a uniform grid or by sweep and prune. Both are checked against the all-pairs
+//! reference by model tests, call after call on moving boxes.
+//!
+//! [`Bodies`](crate::Bodies) feeds it the regions its circles can reach during a step, and
+//! the hit volumes their objects' swept bounding circles, so a pair that can meet is never
+//! missed.
+//!
+//! ```
+//! use tileslide::{Aabb, Broadphase, PairFinder, Vec2};
+//! let boxes = [
+//!     Aabb::from_corners(Vec2::new(0.0, 0.0), Vec2::new(1.0, 1.0)),
+//!     Aabb::from_corners(Vec2::new(1.0, 0.5), Vec2::new(2.0, 1.5)), // touches the first
+//!     Aabb::from_corners(Vec2::new(5.0, 5.0), Vec2::new(6.0, 6.0)),
+//! ];
+//! let mut finder = PairFinder::default();
+//! let mut pairs = Vec::new();
+//! finder.find(Broadphase::SweepAndPrune, &boxes, &mut pairs);
+//! assert_eq!(pairs, [(0, 1)]);
+//! ```
+
+mod grid;
+mod sweep;
+
+use std::ops::Range;
+
+use glam::{Vec2, Vec4, Vec4Swizzles};
+
+use crate::geometry::Aabb;
+
+use grid::GridPairs;
+use sweep::SweepPairs;
+
+/// Which broadphase finds the pairs of boxes: bodies that may meet during a step, objects
+/// whose hit volumes may touch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Broadphase {
+    /// A uniform grid sized to the largest box: the right choice when boxes are of similar
+    /// size. The default.
+    #[default]
+    UniformGrid,
+    /// Sweep and prune along x, in horizontal bands as tall as the largest box, keeping its
+    /// order from one call to the next: no grid to size, and cheap when few boxes move.
+    SweepAndPrune,
+}
+
+/// Finds the overlapping pairs of a list of boxes; keeps its buffers (and the sweep order)
+/// between calls, so finding the pairs of boxes that moved a little is cheap and allocates
+/// nothing once warm.
+#[derive(Clone, Debug, Default)]
+pub struct PairFinder {
+    grid: GridPairs,
+    sweep: SweepPairs,
+}
+
+impl PairFinder {
+    /// Appends to `pairs` every `(i, j)`, `i < j`, whose closed boxes share a point, each
+    /// once.
+    ///
+    /// The order of the pairs is unspecified but deterministic: the same calls with the
+    /// same boxes give the same pairs in the same order. A box with a NaN coordinate
+    /// overlaps nothing.
+    pub fn find(&mut self, kind: Broadphase, boxes: &[Aabb], pairs: &mut Vec<(u32, u32)>) {
+        match kind {
+            Broadphase::UniformGrid => self.grid.find(boxes, pairs),
+            Broadphase::SweepAndPrune => self.sweep.find(boxes, pairs),
+        }
+    }
+}
+
+/// Sorts in place with insertion sort: close to linear on nearly sorted lists (the sweep
+/// order between calls) and on short ones (a circle's few neighbours).
+pub(crate) fn insertion_sort_by<T: Copy>(list: &mut [T], less: impl Fn(T, T) -> bool) {
+    for k in 1..list.len() {
+        let item = list[k];
+        let mut j = k;
+        while j > 0 && less(item, list[j - 1]) {
+            list[j] = list[j - 1];
+            j -= 1;
+        }
+        list[j] = item;
+    }
+}
+
+/// The boxes' common bounds and the largest side of any box, or `None` without boxes.
+fn extent(boxes: &[Aabb]) -> Option<(Vec2, Vec2, f32)> {
+    let first = boxes.first()?;
+    let mut lo = first.min;
+    let mut hi = first.max;
+    let mut largest = 0.0f32;
+    for b in boxes {
+        lo = lo.min(b.min);
+        hi = hi.max(b.max);
+        largest = largest.max(b.size().max_element());
+    }
+    Some((lo, hi, largest))
+}
+
+/// A box as `(max.x, max.y, −min.x, −min.y)`. Two closed boxes `a`, `b` overlap exactly when
+/// every lane of [`lower`]`(a)` is `<=` the same lane of `upper(b)`: one four-lane compare
+/// instead of four branches. Negation is exact, so this is the same test as
+/// [`Aabb::overlaps`], touching included, and false whenever a coordinate is NaN.
+#[inline]
+fn upper(b: &Aabb) -> Vec4 {
+    Vec4::new(b.max.x, b.max.y, -b.min.x, -b.min.y)
+}
+
+/// `(min.x, min.y, −max.x, −max.y)` of the box whose [`upper`] form is `u`.
+#[inline]
+fn lower(u: Vec4) -> Vec4 {
+    -u.zwxy()
+}
+
+/// How many candidates [`Candidates::emit`] tests at once.
+const BLOCK: usize = 2;
+
+/// Boxes laid out in the order a broadphase scans them: their [`upper`] forms and their
+/// indices, followed by [`BLOCK`] boxes that overlap nothing (NaN), so that a block of
+/// candidates never reads past the end.
+#[derive(Clone, Debug, Default)]
+struct Candidates {
+    uppers: Vec<Vec4>,
+    ids: Vec<u32>,
+}
+
+impl Candidates {
+    /// Makes room for `n` boxes (plus the padding), to be written with [`Self::set`].
+    fn reset(&mut self, n: usize) {
+        self.uppers.clear();
+        self.uppers.resize(n + BLOCK, Vec4::NAN);
+        self.ids.clear();
+        self.ids.resize(n + BLOCK, 0);
+    }
+
+    /// Puts box `id`, in [`upper`] form, at `slot`.
+    #[inline]
+    fn set(&mut self, slot: usize, upper: Vec4, id: u32) {
+        self.uppers[slot] = upper;
+        self.ids[slot] = id;
+    }
+
+    /// Writes at `pairs[*n..]` the pairs of box `id` (whose [`lower`] form is `lower`) with
+    /// the boxes at `run` that it overlaps, advancing `*n` past them; `pairs` grows as
+    /// needed (the caller truncates it to `*n` at the end).
+    ///
+    /// Candidates are tested in whole blocks, the ones past the run masked off, and every
+    /// candidate is written and kept by advancing the cursor: runs hold a few boxes, and
+    /// both a loop that stops after a varying few steps and a branch on "overlaps" are
+    /// mispredicted about every other time (measured on 100,000 scattered boxes: the grid's
+    /// scan 1.4× slower with a loop per candidate).
+    #[inline]
+    fn emit(
+        &self,
+        lower: Vec4,
+        id: u32,
+        run: Range<usize>,
+        pairs: &mut Vec<(u32, u32)>,
+        n: &mut usize,
+    ) {
+        let mut q = run.start;
+        loop {
+            self.emit_block(lower, id, q, run.end, pairs, n);
+            q += BLOCK;
+            if q >= run.end {
+                return;
+            }
+        }
+    }
+
+    /// One block of [`Self::emit`]: the boxes at `q..q + BLOCK` that are before `end`.
+    #[inline]
+    fn emit_block(
+        &self,
+        lower: Vec4,
+        id: u32,
+        q: usize,
+        end: usize,
+        pairs: &mut Vec<(u32, u32)>,
+        n: &mut usize,
+    ) {
+        if pairs.len() < *n + BLOCK {
+            pairs.resize(2 * (*n + BLOCK), (0, 0));
+        }
+        for k in q..q + BLOCK {
+            let keep = lower.cmple(self.uppers[k]).all() & (k < end);
+            let other = self.ids[k];
+            pairs[*n] = (id.min(other), id.max(other));
+            *n += usize::from(keep);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    const KINDS: [Broadphase; 2] = [Broadphase::UniformGrid, Broadphase::SweepAndPrune];
+
+    fn brute(boxes: &[Aabb]) -> Vec<(u32, u32)> {
+        let mut out = Vec::new();
+        for i in 0..boxes.len() {
+            for j in i + 1..boxes.len() {
+                if boxes[i].overlaps(&boxes[j]) {
+                    out.push((i as u32, j as u32));
+                }
+            }
+        }
+        out
+    }
+
+    /// The pairs `finder` finds, checked to be `(i, j)` with `i < j`, sorted.
+    fn found(finder: &mut PairFinder, kind: Broadphase, boxes: &[Aabb]) -> Vec<(u32, u32)> {
+        let mut pairs = vec![(7, 7)]; // `find` appends: what is there stays.
+        finder.find(kind, boxes, &mut pairs);
+        assert_eq!(pairs.remove(0), (7, 7));
+        assert!(pairs.iter().all(|&(i, j)| i < j), "{kind:?}: {pairs:?}");
+        pairs.sort_unstable();
+        pairs
+    }
+
+    fn boxes_strategy() -> impl Strategy<Value = Vec<Aabb>> {
+        // Mostly small boxes, some large ones, some touching exactly (corners on a lattice
+        // of halves), some flat or points.
+        prop::collection::vec(
+            (
+                0u32..40,
+                0u32..40,
+                0u32..4,
+                0u32..4,
+                any::<bool>(),
+                0u32..20,
+            )
+                .prop_map(|(x, y, w, h, big, k)| {
+                    let scale = if big && k == 0 { 8.0 } else { 1.0 };
+                    let min = Vec2::new(x as f32 * 0.5, y as f32 * 0.5);
+                    Aabb::from_corners(min, min + Vec2::new(w as f32, h as f32) * 0.5 * scale)
+                }),
+            0..120,
+        )
+    }
+
+    /// A box moved by `(dx, dy)` halves, with its size unchanged or changed.
+    fn moved(b: &Aabb, dx: i32, dy: i32, grow: u32) -> Aabb {
+        let shift = Vec2::new(dx as f32, dy as f32) * 0.5;
+        let max = b.max + shift + Vec2::splat(grow as f32 * 0.5);
+        Aabb::from_corners(b.min + shift, max)
+    }
+
+    proptest! {
+        #[test]
+        fn grid_and_sweep_and_prune_match_all_pairs(boxes in boxes_strategy()) {
+            let expected = brute(&boxes);
+            for kind in KINDS {
+                prop_assert_eq!(found(&mut PairFinder::default(), kind, &boxes), expected.clone());
+            }
+        }
+
+        /// One finder per kind kept over several calls, as a game uses it: boxes move,
+        /// grow, and come and go between calls, and every call must still give the truth.
+        #[test]
+        fn a_finder_kept_between_calls_matches_all_pairs(
+            start in boxes_strategy(),
+            calls in prop::collection::vec(
+                (prop::collection::vec((-3i32..=3, -3i32..=3, 0u32..3), 120), 0usize..130),
+                1..6,
+            ),
+        ) {
+            let mut finders = [PairFinder::default(), PairFinder::default()];
+            let mut boxes = start;
+            for (moves, keep) in calls {
+                boxes = boxes
+                    .iter()
+                    .zip(&moves)
+                    .map(|(b, &(dx, dy, grow))| moved(b, dx, dy, grow))
+                    .collect();
+                // Drop boxes from the end, or add copies of the first ones back.
+                let extra: Vec<Aabb> = boxes.iter().take(keep.saturating_sub(boxes.len())).copied().collect();
+                boxes.truncate(keep);
+                boxes.extend(extra);
+                let expected = brute(&boxes);
+                for (finder, kind) in finders.iter_mut().zip(KINDS) {
+                    prop_assert_eq!(found(finder, kind, &boxes), expected.clone(), "{:?}", kind);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn sweep_and_prune_reuses_its_order_when_boxes_move() {
+        let mut finder = PairFinder::default();
+        let mut boxes: Vec<Aabb> = (0..50)
+            .map(|i| Aabb::from_center(Vec2::new(i as f32 * 0.7, 0.0), Vec2::splat(0.4)))
+            .collect();
+        assert_eq!(
+            found(&mut finder, Broadphase::SweepAndPrune, &boxes),
+            brute(&boxes)
+        );
+        // Reverse the row: the kept order is now fully wrong, and must still give the truth.
+        for (i, b) in boxes.iter_mut().enumerate() {
+            *b = Aabb::from_center(Vec2::new(50.0 - i as f32 * 0.7, 0.0), Vec2::splat(0.4));
+        }
+        assert_eq!(
+            found(&mut finder, Broadphase::SweepAndPrune, &boxes),
+            brute(&boxes)
+        );
+    }
+
+    #[test]
+    fn boxes_touching_at_zero_and_minus_zero_are_a_pair() {
+        // −0.0 and 0.0 are the same coordinate: the boxes touch. A sort on the raw bits
+        // would put them apart.
+        let boxes = [
+            Aabb {
+                min: Vec2::new(-1.0, -1.0),
+                max: Vec2::new(-0.0, -0.0),
+            },
+            Aabb {
+                min: Vec2::new(0.0, 0.0),
+                max: Vec2::new(1.0, 1.0),
+            },
+        ];
+        for kind in KINDS {
+            assert_eq!(found(&mut PairFinder::default(), kind, &boxes), [(0, 1)]);
+        }
+    }
+
+    #[test]
+    fn boxes_with_nan_overlap_nothing_and_hide_no_other_pair() {
+        let nan = f32::NAN;
+        let unit = |x: f32, y: f32| Aabb {
+            min: Vec2::new(x, y),
+            max: Vec2::new(x + 1.0, y + 1.0),
+        };
+        let boxes = [
+            unit(0.0, 0.0),
+            Aabb {
+                min: Vec2::new(nan, 0.0),
+                max: Vec2::new(1.0, 1.0),
+            },
+            unit(0.5, 0.5),
+            Aabb {
+                min: Vec2::new(0.0, 0.0),
+                max: Vec2::new(-nan, nan),
+            },
+            Aabb {
+                min: Vec2::splat(-nan),
+                max: Vec2::splat(nan),
+            },
+            unit(1.0, 1.0),
+        ];
+        for kind in KINDS {
+            assert_eq!(
+                found(&mut PairFinder::default(), kind, &boxes),
+                [(0, 2), (0, 5), (2, 5)],
+                "{kind:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn far_apart_huge_and_point_boxes_match_all_pairs() {
+        // Coordinates near f32's limits, boxes of zero size, a box covering everything.
+        let big = 3.0e38;
+        let boxes = [
+            Aabb::from_corners(Vec2::splat(-big), Vec2::splat(big)),
+            Aabb::from_corners(Vec2::new(big, big), Vec2::new(big, big)),
+            Aabb::from_corners(Vec2::new(-big, 5.0), Vec2::new(-big, 5.0)),
+            Aabb::from_corners(Vec2::new(1.0, 1.0), Vec2::new(1.0, 1.0)),
+            Aabb::from_corners(Vec2::new(1.0, 1.0), Vec2::new(2.0, 1.0)),
+            Aabb::from_corners(Vec2::new(1e-40, 0.0), Vec2::new(1e-40, 0.0)),
+            Aabb::from_corners(Vec2::new(0.0, -1e-40), Vec2::new(2e-40, 0.0)),
+            // Turned inside out: `overlaps` is still defined for them, and must agree.
+            Aabb {
+                min: Vec2::new(3.0, 9.0),
+                max: Vec2::new(-3.0, -9.0),
+            },
+            Aabb {
+                min: Vec2::new(0.5, 0.5),
+                max: Vec2::new(0.4, 0.4),
+            },
+        ];
+        for kind in KINDS {
+            assert_eq!(
+                found(&mut PairFinder::default(), kind, &boxes),
+                brute(&boxes),
+                "{kind:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn many_points_on_a_lattice_match_all_pairs() {
+        // Zero-size boxes, many sharing a coordinate: the sweep's bands cannot take their
+        // height from the boxes.
+        let boxes: Vec<Aabb> = (0..400)
+            .map(|i| {
+                let p = Vec2::new((i % 7) as f32, (i / 7 % 9) as f32 * 0.25);
+                Aabb::from_corners(p, p)
+            })
+            .collect();
+        for kind in KINDS {
+            let pairs = found(&mut PairFinder::default(), kind, &boxes);
+            assert!(pairs.len() > 1000, "{}", pairs.len());
+            assert_eq!(pairs, brute(&boxes), "{kind:?}");
+        }
+    }
+
+    #[test]
+    fn insertion_sort_sorts() {
+        let mut list = [5, 3, 9, 1, 1, 8, 0];
+        insertion_sort_by(&mut list, |a, b| a < b);
+        assert_eq!(list, [0, 1, 1, 3, 5, 8, 9]);
+    }
+}
