@@ -8,7 +8,9 @@
 //! the exact time of impact and slides the blocked remainder along the contact tangent, so
 //! crowds flow around each other and along walls without ever overlapping. [`HitWorld`]
 //! finds the hits between objects' attack and vulnerability volumes each frame, with hit
-//! types, teams and "hit once per swing", exactly and along fast moves.
+//! types, teams and "hit once per swing", exactly and along fast moves. [`Character`] is a
+//! platformer's box or circle: moved by velocity × dt, it walks slopes, snaps to the ground,
+//! stands on one-way platforms and reports its ground, ceiling and wall contacts.
 //!
 //! ## Conventions
 //!
@@ -47,6 +49,7 @@
 
 mod bodies;
 mod broadphase;
+mod controller;
 mod geometry;
 pub mod io;
 mod query;
@@ -58,9 +61,12 @@ pub use bodies::{
     ResolveReport, SlideMode, TimeOfImpact,
 };
 pub use broadphase::{Broadphase, PairFinder};
+pub use controller::{
+    Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
+};
 pub use geometry::{
     Aabb, Circle, PARALLEL_TOLERANCE, Ray, RaySegmentHit, Segment, SweepHit, cast_ray_segment,
-    sweep_circle_circle, sweep_circle_segment,
+    sweep_box_segment, sweep_circle_circle, sweep_circle_segment,
 };
 pub use glam::Vec2;
 pub use query::{CircleHit, Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};

@@ -10,6 +10,7 @@ mod normal;
 pub(crate) mod ray;
 mod segment;
 mod sweep;
+mod sweep_box;
 
 pub use aabb::Aabb;
 pub use circle::Circle;
@@ -18,3 +19,4 @@ pub use ray::{PARALLEL_TOLERANCE, Ray, RaySegmentHit, cast_ray_segment};
 pub use segment::Segment;
 pub(crate) use sweep::bisect;
 pub use sweep::{SweepHit, sweep_circle_circle, sweep_circle_segment};
+pub use sweep_box::sweep_box_segment;

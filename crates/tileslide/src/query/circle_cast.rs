@@ -65,10 +65,10 @@ impl Capsule {
 
 /// A capsule with what a query reports about its segment.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Wall {
-    capsule: Capsule,
-    flags: SegmentFlags,
-    source: SegmentSource,
+pub(crate) struct Wall {
+    pub capsule: Capsule,
+    pub flags: SegmentFlags,
+    pub source: SegmentSource,
 }
 
 impl TileMap {
@@ -142,7 +142,7 @@ impl TileMap {
     /// Appends the temporary segments, then the active segments of the cells (row by row)
     /// that share a point with `region`, that `filter` lets block a moving circle (flag mask,
     /// excluded owner, and for [`Faces::Against`] the direction).
-    fn walls_in(&self, region: &Aabb, filter: &RayFilter, out: &mut Vec<Wall>) {
+    pub(crate) fn walls_in(&self, region: &Aabb, filter: &RayFilter, out: &mut Vec<Wall>) {
         let keeps = |normal: Vec2, flags: SegmentFlags| {
             flags.intersects(filter.mask)
                 && match filter.faces {

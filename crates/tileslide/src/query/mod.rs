@@ -10,8 +10,8 @@ mod ray_cast;
 mod segment_test;
 mod traversal;
 
-pub(crate) use circle_cast::Capsule;
 pub use circle_cast::CircleHit;
+pub(crate) use circle_cast::{Capsule, Wall};
 pub use filter::{Faces, RayFilter};
 pub use hit::{RayHit, SegmentSource};
 pub use overlap::SegmentOverlap;

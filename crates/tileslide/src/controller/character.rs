@@ -1,0 +1,411 @@
+//! A platformer character and its move: collide and slide against the tile world and its
+//! temporary segments, walk along slopes, snap to the ground, one-way platforms.
+
+use glam::Vec2;
+
+use super::contact::{Contact, Contacts, Surface};
+use super::{CharacterShape, ControllerError};
+use crate::geometry::{Aabb, SweepHit};
+use crate::query::{RayFilter, Wall};
+use crate::tiles::{SegmentFlags, TileMap};
+
+/// How a character moves: slope limit, ground snapping, the gap it keeps from surfaces.
+/// Distances are in map units; the defaults suit maps with cells of size 1 (scale them with
+/// the cell size, e.g. ×32 for Replica Island's pixels).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ControllerConfig {
+    /// The steepest walkable slope, in degrees from level: steeper surfaces are walls.
+    /// Default 50.
+    pub max_slope_degrees: f32,
+    /// How far below its feet a grounded character that is not moving up looks for ground
+    /// to stay on (walking down a ramp, over a small step down). Default 0.3.
+    pub snap_distance: f32,
+    /// The gap kept between the character and every surface it stops against, so that the
+    /// next move does not start in contact. Default 0.001.
+    pub skin: f32,
+    /// How many times one move may hit a surface and slide on. Default 4.
+    pub max_slides: u32,
+    /// Segments block the character when they have one of these flags. Default
+    /// `SOLID | ONE_WAY`.
+    pub mask: SegmentFlags,
+}
+
+impl Default for ControllerConfig {
+    fn default() -> Self {
+        Self {
+            max_slope_degrees: 50.0,
+            snap_distance: 0.3,
+            skin: 1e-3,
+            max_slides: 4,
+            mask: SegmentFlags::SOLID | SegmentFlags::ONE_WAY,
+        }
+    }
+}
+
+/// Requests for one move.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MoveOptions {
+    /// Fall through one-way platforms during this move (hold it for as many moves as it
+    /// takes the character to clear the platform).
+    pub drop_through: bool,
+}
+
+/// A platformer character: a shape at a position, with an `up` direction, moved by a
+/// desired displacement per step.
+///
+/// [`move_by`](Self::move_by) takes the displacement the game wants this step (velocity ×
+/// dt, gravity included) and moves the character as far as the world lets it:
+///
+/// - Walking (sideways, while on the ground) follows the ground: up and down ramps no
+///   steeper than the slope limit, keeping its sideways progress, and over tile seams
+///   without a bump. A steeper surface is a wall.
+/// - Downward motion while on the ground only presses the character onto it: standing on a
+///   ramp it does not creep down.
+/// - Falling onto walkable ground stops there; falling along a wall or a steep slope slides
+///   down it; rising into a ceiling stops (or slides along a slanted one).
+/// - After the move, a character that was on the ground and is not moving up looks
+///   [`snap_distance`](ControllerConfig::snap_distance) below its feet and stays on any
+///   walkable ground there.
+/// - One-way platforms (`ONE_WAY` segments) block only a character whose lowest point is
+///   on or above them: it jumps up through them, walks through their ends, lands on them,
+///   and drops through on request ([`MoveOptions::drop_through`]).
+///
+/// Every part of a move is an exact sweep (see [`sweep_circle_segment`] and
+/// [`sweep_box_segment`]), so no speed passes through a wall.
+///
+/// ```
+/// use tileslide::{Character, CharacterShape, ControllerConfig, MoveOptions, Vec2, io::ascii};
+/// let map = ascii::parse("\
+/// #######
+/// #.....#
+/// #.....#
+/// #######", "doc.txt", 1.0)?;
+/// // ASCII maps are y-down: up is -y.
+/// let shape = CharacterShape::rect(Vec2::new(0.25, 0.4))?;
+/// let mut hero = Character::new(shape, Vec2::new(2.0, 1.5), Vec2::NEG_Y, ControllerConfig::default())?;
+/// // Fall: lands on the floor at y = 3, its bottom a skin above it.
+/// let contacts = hero.move_by(&map, Vec2::new(0.0, 2.0), MoveOptions::default())?;
+/// assert!(contacts.is_grounded());
+/// assert!((hero.position.y - (3.0 - 0.4 - 0.001)).abs() < 1e-5);
+/// // Walk right into the wall at x = 6.
+/// let contacts = hero.move_by(&map, Vec2::new(10.0, 0.5), MoveOptions::default())?;
+/// assert!(contacts.right.is_some() && contacts.is_grounded());
+/// assert!((hero.position.x - (6.0 - 0.25 - 0.001)).abs() < 1e-4);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// [`sweep_circle_segment`]: crate::sweep_circle_segment
+/// [`sweep_box_segment`]: crate::sweep_box_segment
+#[derive(Clone, Debug)]
+pub struct Character {
+    /// The shape's centre, in world coordinates.
+    pub position: Vec2,
+    shape: CharacterShape,
+    up: Vec2,
+    /// The sideways axis (towards higher x, perpendicular to `up`).
+    side: Vec2,
+    config: ControllerConfig,
+    /// Cosine of the slope limit.
+    walkable: f32,
+    /// The ground under the character after its last move.
+    ground: Option<Contact>,
+    /// Scratch: the segments near the current sweep.
+    walls: Vec<Wall>,
+}
+
+/// Moves shorter than this are not swept (they are rounding, not motion).
+const MIN_MOVE: f32 = 1e-7;
+
+/// Which part of a move is being swept: the walk (sideways) or the rise or fall (along up).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Phase {
+    Walk,
+    Vertical,
+}
+
+impl Character {
+    /// A character of `shape` centred at `position`, with unit-length-or-not `up` (it is
+    /// normalized), moving by `config`; an error naming the bad value when the position is
+    /// not finite, `up` is zero or not finite, or the configuration is out of range.
+    pub fn new(
+        shape: CharacterShape,
+        position: Vec2,
+        up: Vec2,
+        config: ControllerConfig,
+    ) -> Result<Self, ControllerError> {
+        finite("position", position)?;
+        let up = up.try_normalize().ok_or(ControllerError::NonFinite {
+            what: "up",
+            value: up,
+        })?;
+        check_config(&config)?;
+        // Sideways is the map's x axis made perpendicular to up (so "left" and "right" are
+        // the screen's whichever way y points); for an up along x, up turned a quarter.
+        let side = (Vec2::X - up * up.x).try_normalize().unwrap_or(up.perp());
+        Ok(Self {
+            position,
+            shape,
+            up,
+            side,
+            walkable: config.max_slope_degrees.to_radians().cos(),
+            config,
+            ground: None,
+            walls: Vec::new(),
+        })
+    }
+
+    /// The character's shape.
+    #[must_use]
+    pub fn shape(&self) -> CharacterShape {
+        self.shape
+    }
+
+    /// The unit up direction.
+    #[must_use]
+    pub fn up(&self) -> Vec2 {
+        self.up
+    }
+
+    /// The configuration it moves by.
+    #[must_use]
+    pub fn config(&self) -> &ControllerConfig {
+        &self.config
+    }
+
+    /// The ground under the character after its last move, if it stands on any.
+    #[must_use]
+    pub fn ground(&self) -> Option<&Contact> {
+        self.ground.as_ref()
+    }
+
+    /// Moves the character to `position` (a teleport: no sweep), forgetting its ground.
+    pub fn teleport(&mut self, position: Vec2) -> Result<(), ControllerError> {
+        finite("position", position)?;
+        self.position = position;
+        self.ground = None;
+        Ok(())
+    }
+
+    /// Moves the character by `displacement` (velocity × dt) through `map` and its
+    /// temporary segments, as described on the type, and returns what it touched. An error
+    /// when the displacement is not finite (the character does not move).
+    pub fn move_by(
+        &mut self,
+        map: &TileMap,
+        displacement: Vec2,
+        options: MoveOptions,
+    ) -> Result<Contacts, ControllerError> {
+        finite("displacement", displacement)?;
+        let mut contacts = Contacts::default();
+        let rise = displacement.dot(self.up);
+        let sideways = displacement.dot(self.side);
+        // On the ground and neither jumping nor dropping through it: walk along it, and let
+        // gravity only press.
+        let walking = self.ground.filter(|ground| {
+            rise <= 0.0 && !(options.drop_through && ground.flags.contains(SegmentFlags::ONE_WAY))
+        });
+        if let Some(ground) = walking {
+            let walk = along(ground.normal, self.side, sideways);
+            self.slide(map, walk, Phase::Walk, options, &mut contacts);
+        } else {
+            self.slide(
+                map,
+                self.side * sideways,
+                Phase::Walk,
+                options,
+                &mut contacts,
+            );
+            self.slide(map, self.up * rise, Phase::Vertical, options, &mut contacts);
+        }
+        // Find the ground under the character: within the snap distance when it was
+        // walking (so it follows ramps down and steps down small ledges), within two skins
+        // otherwise (touching, not snapping).
+        let reach = if walking.is_some() {
+            self.config.snap_distance
+        } else {
+            2.0 * self.config.skin
+        };
+        contacts.ground = self.settle(map, reach, options);
+        self.ground = contacts.ground;
+        Ok(contacts)
+    }
+
+    /// Sweeps `motion` with collide and slide, recording contacts.
+    fn slide(
+        &mut self,
+        map: &TileMap,
+        motion: Vec2,
+        phase: Phase,
+        options: MoveOptions,
+        contacts: &mut Contacts,
+    ) {
+        let mut remaining = motion;
+        for _ in 0..self.config.max_slides {
+            let length = remaining.length();
+            // (Not finite only for absurd displacements scaled up along a steep ramp.)
+            if length <= MIN_MOVE || !length.is_finite() {
+                return;
+            }
+            let Some((hit, wall)) = self.first_hit(map, remaining, options) else {
+                self.position += remaining;
+                return;
+            };
+            let dir = remaining / length;
+            // Stop a skin short of the surface, measured along its normal.
+            let travel = length * hit.t;
+            let approach = -dir.dot(hit.normal);
+            let back = if approach > 0.0 {
+                (self.config.skin / approach).min(travel)
+            } else {
+                0.0
+            };
+            self.position += dir * (travel - back);
+            let rest = remaining - dir * (travel - back);
+            let surface = Surface::of(hit.normal, self.up, self.side, self.walkable);
+            let contact = Contact {
+                normal: hit.normal,
+                flags: wall.flags,
+                source: wall.source,
+            };
+            match surface {
+                Surface::Ground => contacts.ground = Some(contact),
+                Surface::Ceiling => contacts.ceiling = Some(contact),
+                Surface::Left => contacts.left = Some(contact),
+                Surface::Right => contacts.right = Some(contact),
+            }
+            remaining = match (phase, surface) {
+                // Walking onto walkable ground (a ramp up, or down onto a floor): on along
+                // it, keeping the sideways progress still to make.
+                (Phase::Walk, Surface::Ground) => along(hit.normal, self.side, rest.dot(self.side)),
+                // Landing.
+                (Phase::Vertical, Surface::Ground) => Vec2::ZERO,
+                // A wall or steep slope: slide along it, but a walk never climbs it.
+                (Phase::Walk, Surface::Left | Surface::Right) => {
+                    let slid = rest - hit.normal * rest.dot(hit.normal);
+                    if slid.dot(self.up) > 0.0 {
+                        Vec2::ZERO
+                    } else {
+                        slid
+                    }
+                }
+                _ => rest - hit.normal * rest.dot(hit.normal),
+            };
+        }
+    }
+
+    /// Looks up to `reach` below the character for walkable ground; if found, moves onto
+    /// it (a skin above) and returns it.
+    fn settle(&mut self, map: &TileMap, reach: f32, options: MoveOptions) -> Option<Contact> {
+        let down = -self.up * reach;
+        let (hit, wall) = self.first_hit(map, down, options)?;
+        if Surface::of(hit.normal, self.up, self.side, self.walkable) != Surface::Ground {
+            return None;
+        }
+        let approach = self.up.dot(hit.normal);
+        let gap = reach * hit.t;
+        let drop = gap - self.config.skin / approach;
+        if drop > 0.0 {
+            self.position -= self.up * drop;
+        }
+        Some(Contact {
+            normal: hit.normal,
+            flags: wall.flags,
+            source: wall.source,
+        })
+    }
+
+    /// The first surface the character meets moving by `motion` from where it is: every
+    /// segment near the move, swept exactly; on equal `t`, the first found (temporary
+    /// segments, then cells row by row).
+    fn first_hit(
+        &mut self,
+        map: &TileMap,
+        motion: Vec2,
+        options: MoveOptions,
+    ) -> Option<(SweepHit, Wall)> {
+        let (start, end) = (
+            self.shape.bounds(self.position),
+            self.shape.bounds(self.position + motion),
+        );
+        let region = Aabb::from_corners(start.min.min(end.min), start.max.max(end.max))
+            .expand(self.config.skin);
+        let filter = RayFilter::default().with_mask(self.config.mask);
+        self.walls.clear();
+        map.walls_in(&region, &filter, &mut self.walls);
+        let mut best: Option<(SweepHit, Wall)> = None;
+        for wall in &self.walls {
+            let capsule = &wall.capsule;
+            if wall.flags.contains(SegmentFlags::ONE_WAY)
+                && !wall.flags.contains(SegmentFlags::SOLID)
+            {
+                // A one-way platform holds only a character whose lowest point (towards
+                // the platform) is on or above it, give or take the skin.
+                let height = (self.position - capsule.segment.a).dot(capsule.normal)
+                    - self.shape.support(capsule.normal);
+                if options.drop_through || height < -2.0 * self.config.skin {
+                    continue;
+                }
+            }
+            if let Some(hit) = self.shape.sweep(capsule, self.position, motion)
+                && best.is_none_or(|(b, _)| hit.t < b.t)
+            {
+                best = Some((hit, *wall));
+            }
+        }
+        best
+    }
+}
+
+/// `value`, or an error naming it (`what`) when it is not finite.
+fn finite(what: &'static str, value: Vec2) -> Result<Vec2, ControllerError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(ControllerError::NonFinite { what, value })
+    }
+}
+
+/// The move along a surface with `normal` that makes `sideways` progress along `side`: the
+/// surface's tangent scaled so that its sideways part is `sideways`. Zero for a surface
+/// with no sideways extent (a vertical one).
+fn along(normal: Vec2, side: Vec2, sideways: f32) -> Vec2 {
+    let tangent = normal.perp();
+    let across = tangent.dot(side);
+    if across.abs() <= 1e-6 || sideways == 0.0 {
+        return Vec2::ZERO;
+    }
+    tangent * (sideways / across)
+}
+
+/// An error naming the field when a configuration is out of range.
+fn check_config(config: &ControllerConfig) -> Result<(), ControllerError> {
+    let checks = [
+        (
+            "max_slope_degrees",
+            config.max_slope_degrees,
+            (0.0..90.0).contains(&config.max_slope_degrees),
+        ),
+        (
+            "snap_distance",
+            config.snap_distance,
+            config.snap_distance >= 0.0 && config.snap_distance.is_finite(),
+        ),
+        (
+            "skin",
+            config.skin,
+            config.skin >= 0.0 && config.skin.is_finite(),
+        ),
+    ];
+    for (field, value, ok) in checks {
+        if !ok {
+            return Err(ControllerError::BadConfig { field, value });
+        }
+    }
+    if config.max_slides == 0 {
+        return Err(ControllerError::BadConfig {
+            field: "max_slides",
+            value: 0.0,
+        });
+    }
+    Ok(())
+}

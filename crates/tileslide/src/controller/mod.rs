@@ -1,0 +1,48 @@
+//! A platformer character controller: a box or circle moved against the tile world and its
+//! temporary segments, with ground, ceiling and wall contacts, slopes, ground snapping and
+//! one-way platforms.
+//!
+//! Replica Island keeps its characters out of the world with ray sweeps of the box's leading
+//! edges, then snaps the box flush and casts short alignment rays; tileslide sweeps the
+//! whole shape exactly instead (see `docs/controller.md` for how the two differ and why).
+
+mod character;
+mod contact;
+mod shape;
+
+pub use character::{Character, ControllerConfig, MoveOptions};
+pub use contact::{Contact, Contacts};
+pub use shape::CharacterShape;
+
+use glam::Vec2;
+
+/// A character or its move was given a value it cannot use.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum ControllerError {
+    /// A position, direction or displacement was not finite (or `up` was zero).
+    #[error("character {what} must be finite (and `up` non-zero), got {value}")]
+    NonFinite {
+        /// Which value: `"position"`, `"up"` or `"displacement"`.
+        what: &'static str,
+        /// The value given.
+        value: Vec2,
+    },
+    /// A shape's size was not positive and finite.
+    #[error("character shape {what} must be positive and finite, got {value}")]
+    BadShape {
+        /// `"radius"` or `"half extents"`.
+        what: &'static str,
+        /// The value given (a radius in both lanes).
+        value: Vec2,
+    },
+    /// A [`ControllerConfig`] field was out of range.
+    #[error(
+        "controller config field `{field}` is out of range: {value} (max_slope_degrees in [0, 90), distances finite and not negative, max_slides at least 1)"
+    )]
+    BadConfig {
+        /// The field's name.
+        field: &'static str,
+        /// The value given.
+        value: f32,
+    },
+}

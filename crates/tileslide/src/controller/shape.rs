@@ -1,0 +1,92 @@
+//! The shape a character collides with: a circle or an axis-aligned box.
+
+use glam::Vec2;
+
+use super::ControllerError;
+use crate::geometry::{Aabb, SweepHit, sweep_box_segment};
+use crate::query::Capsule;
+
+/// A character's collision shape, centred on its position.
+///
+/// ```
+/// use tileslide::{CharacterShape, Vec2};
+/// let hero = CharacterShape::rect(Vec2::new(0.4, 0.9))?; // 0.8 wide, 1.8 tall
+/// let ball = CharacterShape::circle(0.45)?;
+/// assert!(CharacterShape::circle(f32::NAN).is_err());
+/// # Ok::<(), tileslide::ControllerError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CharacterShape {
+    /// A circle of this radius: rolls over corners, and stands on a slope at one point.
+    Circle {
+        /// Radius, positive and finite.
+        radius: f32,
+    },
+    /// An axis-aligned box with these half extents: stands flat at a ledge's edge, the
+    /// usual platformer hero.
+    Rect {
+        /// Half the width and half the height, positive and finite.
+        half: Vec2,
+    },
+}
+
+impl CharacterShape {
+    /// A circle of `radius`; an error unless it is positive and finite.
+    pub fn circle(radius: f32) -> Result<Self, ControllerError> {
+        if radius > 0.0 && radius.is_finite() {
+            Ok(Self::Circle { radius })
+        } else {
+            Err(ControllerError::BadShape {
+                what: "radius",
+                value: Vec2::splat(radius),
+            })
+        }
+    }
+
+    /// A box with half extents `half`; an error unless both are positive and finite.
+    pub fn rect(half: Vec2) -> Result<Self, ControllerError> {
+        if half.cmpgt(Vec2::ZERO).all() && half.is_finite() {
+            Ok(Self::Rect { half })
+        } else {
+            Err(ControllerError::BadShape {
+                what: "half extents",
+                value: half,
+            })
+        }
+    }
+
+    /// The shape's bounding box around `center`.
+    #[must_use]
+    pub fn bounds(&self, center: Vec2) -> Aabb {
+        match *self {
+            Self::Circle { radius } => Aabb::from_center(center, Vec2::splat(radius)),
+            Self::Rect { half } => Aabb::from_center(center, half),
+        }
+    }
+
+    /// How far the shape reaches from its centre in direction `-normal` (unit): the
+    /// distance from the centre to a line with that normal that the shape touches.
+    #[must_use]
+    pub(crate) fn support(&self, normal: Vec2) -> f32 {
+        match *self {
+            Self::Circle { radius } => radius,
+            Self::Rect { half } => half.x * normal.x.abs() + half.y * normal.y.abs(),
+        }
+    }
+
+    /// The time of impact of the shape at `center` moving by `motion` against `capsule`'s
+    /// front face (see `sweep_circle_segment` and `sweep_box_segment`).
+    pub(crate) fn sweep(&self, capsule: &Capsule, center: Vec2, motion: Vec2) -> Option<SweepHit> {
+        match *self {
+            Self::Circle { radius } => capsule.sweep(center, radius, motion),
+            Self::Rect { half } => sweep_box_segment(
+                center,
+                half,
+                motion,
+                &capsule.segment,
+                capsule.normal,
+                capsule.caps,
+            ),
+        }
+    }
+}

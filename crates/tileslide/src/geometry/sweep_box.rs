@@ -1,0 +1,296 @@
+//! Moving boxes: the exact time of impact of an axis-aligned box swept along a straight move
+//! against the front of a segment.
+//!
+//! The box and the segment first touch where the box's centre meets the boundary of their
+//! Minkowski sum (Ericson, *Real-Time Collision Detection*, 5.5.7): the segment pushed out by
+//! the box's support feature along the segment's normal (a corner, or a whole side when the
+//! segment is axis-aligned), and near the segment's ends, the box's sides meeting an end
+//! point. Both are solved in closed form, so a move of any length is checked whole.
+
+use glam::Vec2;
+
+use super::{Segment, SweepHit};
+
+/// Time of impact of an axis-aligned box with half extents `half`, centred at `center` and
+/// moving by `motion`, against the front of `segment`, whose unit `normal` points to its
+/// front; `caps` says at which ends (`[at a, at b]`) the box's sides may catch the segment's
+/// end point.
+///
+/// The rules are those of [`sweep_circle_segment`](super::sweep_circle_segment): back faces
+/// never block (a box whose centre is behind the segment's line is not stopped by it); the
+/// flat side is met when the box's lowest point along `-normal` reaches the line, moving
+/// towards it, while the box's extent along the segment overlaps it; a box already touching
+/// or overlapping it and moving closer gets `t = 0`. An end point counts where `caps` says
+/// so, and only while the box's centre is in front of the segment's line (as a circle's cap
+/// counts only its front half): a box whose centre is below a one-way platform passes its
+/// ends, and at a seam (no cap) the neighbour's flat side decides. The contact normal points
+/// from the segment towards the box.
+///
+/// ```
+/// # use tileslide::{Segment, Vec2, sweep_box_segment};
+/// // A floor along y = 0 facing up; a 1 × 2 box falls onto it from y = 3 (its bottom at 2).
+/// let floor = Segment::new(Vec2::new(-5.0, 0.0), Vec2::new(5.0, 0.0));
+/// let hit = sweep_box_segment(Vec2::new(0.0, 3.0), Vec2::new(0.5, 1.0), Vec2::new(0.0, -4.0), &floor, Vec2::Y, [true; 2]).unwrap();
+/// assert_eq!(hit.t, 0.5);
+/// assert_eq!(hit.normal, Vec2::Y);
+/// // A box whose edge overhangs the floor's end by less than its half width still lands.
+/// let hit = sweep_box_segment(Vec2::new(5.4, 3.0), Vec2::new(0.5, 1.0), Vec2::new(0.0, -4.0), &floor, Vec2::Y, [true; 2]);
+/// assert_eq!(hit.map(|h| h.t), Some(0.5));
+/// ```
+#[must_use]
+pub fn sweep_box_segment(
+    center: Vec2,
+    half: Vec2,
+    motion: Vec2,
+    segment: &Segment,
+    normal: Vec2,
+    caps: [bool; 2],
+) -> Option<SweepHit> {
+    let (a, e) = (segment.a, segment.delta());
+    let len2 = e.length_squared();
+    let h0 = (center - a).dot(normal);
+    let vn = motion.dot(normal);
+    let mut best: Option<SweepHit> = None;
+    if h0 >= 0.0 && vn < 0.0 && len2 > 0.0 {
+        // How far the box reaches towards the line from its centre.
+        let support = half.x * normal.x.abs() + half.y * normal.y.abs();
+        let t_near = if h0 <= support {
+            0.0
+        } else {
+            (h0 - support) / -vn
+        };
+        // Past the line the centre is behind the face: no front contact from then on.
+        let t_line = h0 / -vn;
+        // The support feature's extent along the segment, relative to the centre: one
+        // corner, or a whole side when the segment is axis-aligned (its normal has a zero
+        // component, as every grid-aligned tile face has).
+        let len = len2.sqrt();
+        let u = e / len;
+        let corner = Vec2::new(-half.x.copysign(normal.x), -half.y.copysign(normal.y));
+        let (lo, hi) = if normal.x == 0.0 {
+            let r = half.x * u.x.abs();
+            (corner.y * u.y - r, corner.y * u.y + r)
+        } else if normal.y == 0.0 {
+            let r = half.y * u.y.abs();
+            (corner.x * u.x - r, corner.x * u.x + r)
+        } else {
+            let s = corner.dot(u);
+            (s, s)
+        };
+        // The feature overlaps the segment while `s(t) + lo <= len` and `s(t) + hi >= 0`.
+        let (s0, se) = ((center - a).dot(u), motion.dot(u));
+        let (t_in, t_out) = if se == 0.0 {
+            if s0 + lo <= len && s0 + hi >= 0.0 {
+                (0.0, f32::INFINITY)
+            } else {
+                (f32::INFINITY, f32::NEG_INFINITY)
+            }
+        } else {
+            let (t0, t1) = ((-hi - s0) / se, (len - lo - s0) / se);
+            (t0.min(t1), t0.max(t1))
+        };
+        let t = t_near.max(t_in).max(0.0);
+        if t <= 1.0 && t <= t_out && t <= t_line {
+            best = Some(SweepHit { t, normal });
+        }
+    }
+    for (end, capped) in [(a, caps[0]), (segment.b, caps[1])] {
+        if capped
+            && let Some(hit) = sweep_box_point(center, half, motion, end)
+            && (center + motion * hit.t - a).dot(normal) >= 0.0
+            && best.is_none_or(|b| hit.t < b.t)
+        {
+            best = Some(hit);
+        }
+    }
+    best
+}
+
+/// Time of impact of the box against a point: the point, moving by `-motion`, entering the
+/// box through one of its sides (a slab test). The normal is that side's outward normal,
+/// negated: from the point towards the box. `None` when the point is already inside, misses
+/// the box, or enters after `t = 1`.
+fn sweep_box_point(center: Vec2, half: Vec2, motion: Vec2, point: Vec2) -> Option<SweepHit> {
+    // The point relative to the box, moving by -motion.
+    let p = point - center;
+    let d = -motion;
+    let mut t_enter = f32::NEG_INFINITY;
+    let mut t_exit = f32::INFINITY;
+    let mut normal = Vec2::ZERO;
+    for (axis, unit) in [(0, Vec2::X), (1, Vec2::Y)] {
+        let (pa, da, ha) = (p[axis], d[axis], half[axis]);
+        if da == 0.0 {
+            if pa < -ha || pa > ha {
+                return None;
+            }
+            continue;
+        }
+        let (t0, t1) = ((-ha - pa) / da, (ha - pa) / da);
+        let (near, far) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
+        if near > t_enter {
+            t_enter = near;
+            // Entering through the side facing the point's approach: the point moves along
+            // `da`, so it comes through the side at `-sign(da)`; the contact normal from the
+            // point towards the box is `+sign(da)` on this axis.
+            normal = unit * da.signum();
+        }
+        t_exit = t_exit.min(far);
+    }
+    (t_enter >= 0.0 && t_enter <= t_exit && t_enter <= 1.0)
+        .then_some(SweepHit { t: t_enter, normal })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn v(x: f32, y: f32) -> Vec2 {
+        Vec2::new(x, y)
+    }
+
+    /// The up-left normal of the ramp of [`drop_on_ramp`].
+    fn ramp_normal() -> Vec2 {
+        v(-1.0, 1.0).normalize()
+    }
+
+    /// A unit box at `center` falling by `fall` onto a ramp rising to the right (y up) from
+    /// (0, 0) to (2, 2), with `caps`.
+    fn drop_on_ramp(center: Vec2, fall: f32, caps: [bool; 2]) -> Option<SweepHit> {
+        let ramp = Segment::new(v(0.0, 0.0), v(2.0, 2.0));
+        sweep_box_segment(
+            center,
+            v(0.5, 0.5),
+            v(0.0, -fall),
+            &ramp,
+            ramp_normal(),
+            caps,
+        )
+    }
+
+    fn floor() -> Segment {
+        Segment::new(v(0.0, 0.0), v(4.0, 0.0))
+    }
+
+    #[test]
+    fn a_box_resting_on_a_floor_slides_along_it_unhindered() {
+        // Bottom exactly on the floor, moving along it: not approaching.
+        let hit = sweep_box_segment(
+            v(1.0, 0.5),
+            v(0.5, 0.5),
+            v(2.0, 0.0),
+            &floor(),
+            Vec2::Y,
+            [true, true],
+        );
+        assert!(hit.is_none());
+        // Pressing into it: t = 0.
+        let hit = sweep_box_segment(
+            v(1.0, 0.5),
+            v(0.5, 0.5),
+            v(1.0, -1.0),
+            &floor(),
+            Vec2::Y,
+            [true, true],
+        );
+        assert_eq!(hit.map(|h| h.t), Some(0.0));
+    }
+
+    #[test]
+    fn the_corner_of_a_box_lands_on_a_ramp() {
+        // A unit box above the ramp's middle falls straight down: its bottom-right corner
+        // (1.5, y − 0.5) meets the ramp where y − 0.5 = 1.5.
+        let hit = drop_on_ramp(v(1.0, 5.0), 10.0, [true, true]).unwrap();
+        let center = 5.0 - 10.0 * hit.t;
+        assert!((center - 2.0).abs() < 1e-5, "{hit:?}");
+        assert_eq!(hit.normal, ramp_normal());
+    }
+
+    #[test]
+    fn an_end_point_catches_a_box_in_front_of_its_line_only_where_capped() {
+        // The top of a ramp ends at (2, 2), capped. A box whose bottom-left corner is
+        // right of the end lands on the end point with its bottom side.
+        let hit = drop_on_ramp(v(2.3, 4.0), 4.0, [true, true]).unwrap();
+        assert_eq!(hit.normal, Vec2::Y);
+        assert!((4.0 - 4.0 * hit.t - 2.5).abs() < 1e-5);
+        // Without the cap (the surface continues), the end point does not count.
+        assert!(drop_on_ramp(v(2.6, 4.0), 4.0, [true, false]).is_none());
+        // Moving sideways into a one-way floor's end: passes with the centre below its
+        // line, is caught by the side with the centre above it.
+        let platform = Segment::new(v(0.0, 0.0), v(2.0, 0.0));
+        let sideways = |y: f32| {
+            let (c, half, m) = (v(-1.0, y), v(0.5, 0.5), v(4.0, 0.0));
+            sweep_box_segment(c, half, m, &platform, Vec2::Y, [true, true])
+        };
+        assert!(sideways(-0.1).is_none());
+        let hit = sideways(0.1).unwrap();
+        assert_eq!((hit.t, hit.normal), (0.125, -Vec2::X));
+    }
+
+    #[test]
+    fn back_faces_and_receding_moves_do_not_block() {
+        assert!(
+            sweep_box_segment(
+                v(1.0, -2.0),
+                v(0.5, 0.5),
+                v(0.0, 4.0),
+                &floor(),
+                Vec2::Y,
+                [true, true,]
+            )
+            .is_none()
+        );
+        assert!(
+            sweep_box_segment(
+                v(1.0, 0.2),
+                v(0.5, 0.5),
+                v(0.0, 4.0),
+                &floor(),
+                Vec2::Y,
+                [true, true,]
+            )
+            .is_none()
+        );
+    }
+
+    /// Whether the box at `c` and the segment share a point, with the box shrunk by `eps`.
+    fn overlaps(c: Vec2, half: Vec2, s: &Segment, eps: f32) -> bool {
+        let b = crate::geometry::Aabb::from_center(c, half - Vec2::splat(eps));
+        b.overlaps_segment(s)
+    }
+
+    proptest! {
+        /// Against dense sampling: no sample before the reported `t` has the box overlapping
+        /// the segment from its front (by more than rounding), and when nothing is reported
+        /// no sample overlaps while the centre is in front.
+        #[test]
+        fn no_overlap_is_missed_before_the_time_of_impact(
+            cx in -3.0f32..7.0, cy in 0.8f32..4.0,
+            mx in -6.0f32..6.0, my in -6.0f32..0.5,
+            hx in 0.1f32..1.0, hy in 0.1f32..1.0,
+            ax in -1.0f32..2.0, bx in 2.5f32..5.0, ay in -0.5f32..0.5, by in -0.5f32..0.5,
+        ) {
+            let (a, b) = (v(ax, ay), v(bx, by));
+            let s = Segment::new(a, b);
+            let n = (b - a).perp().normalize();
+            let (c, half, m) = (v(cx, cy), v(hx, hy), v(mx, my));
+            // Start clear of the segment and in front of it.
+            prop_assume!(!overlaps(c, half, &s, 0.0) && (c - a).dot(n) > 0.0);
+            let hit = sweep_box_segment(c, half, m, &s, n, [true, true]);
+            let end = hit.map_or(1.0, |h| h.t);
+            for k in 0..=400 {
+                let t = end * k as f32 / 400.0;
+                let p = c + m * t;
+                if (p - a).dot(n) < 0.0 {
+                    break;
+                }
+                prop_assert!(!overlaps(p, half, &s, 1e-3), "overlap at t = {} before {:?}", t, hit);
+            }
+            if let Some(h) = hit {
+                // At the reported time, the box touches the segment.
+                let p = c + m * h.t;
+                prop_assert!(overlaps(p, half + Vec2::splat(2e-3), &s, 0.0), "{:?}", h);
+            }
+        }
+    }
+}

@@ -1,0 +1,435 @@
+//! The platformer controller on ASCII maps (y down: `up` is −y): landing, walls, ceilings,
+//! ramps, seams, one-way platforms, corners, frame-rate independence, and a property test
+//! that a character never ends inside solid or outside its room.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use proptest::prelude::*;
+use tileslide::io::ascii;
+use tileslide::{
+    Aabb, Character, CharacterShape, Contacts, ControllerConfig, MoveOptions, SegmentFlags,
+    TileMap, Vec2,
+};
+
+const UP: Vec2 = Vec2::NEG_Y;
+const SKIN: f32 = 1e-3;
+
+fn map(text: &str) -> TileMap {
+    ascii::parse(text, "test.txt", 1.0).unwrap()
+}
+
+fn v(x: f32, y: f32) -> Vec2 {
+    Vec2::new(x, y)
+}
+
+fn boxed() -> CharacterShape {
+    CharacterShape::rect(v(0.25, 0.4)).unwrap()
+}
+
+fn ball() -> CharacterShape {
+    CharacterShape::circle(0.3).unwrap()
+}
+
+fn hero(shape: CharacterShape, at: Vec2) -> Character {
+    Character::new(shape, at, UP, ControllerConfig::default()).unwrap()
+}
+
+fn step(ch: &mut Character, m: &TileMap, d: Vec2) -> Contacts {
+    ch.move_by(m, d, MoveOptions::default()).unwrap()
+}
+
+/// The distance from the shape's centre to its lowest point.
+fn foot(shape: CharacterShape) -> f32 {
+    match shape {
+        CharacterShape::Circle { radius } => radius,
+        CharacterShape::Rect { half } => half.y,
+    }
+}
+
+/// Whether the character at its position overlaps a solid segment by more than `eps`
+/// (one-way platforms excepted: a character may stand in one while passing through).
+fn in_solid(ch: &Character, m: &TileMap, eps: f32) -> bool {
+    let p = ch.position;
+    if m.is_point_solid(p) {
+        return true;
+    }
+    let solid = |f: SegmentFlags| f.contains(SegmentFlags::SOLID);
+    match ch.shape() {
+        CharacterShape::Circle { radius } => {
+            let probe = tileslide::Circle::new(p, radius - eps);
+            m.segments_overlapping_circle(&probe)
+                .iter()
+                .any(|s| solid(s.flags))
+        }
+        CharacterShape::Rect { half } => {
+            let probe = Aabb::from_center(p, half - Vec2::splat(eps));
+            m.segments_overlapping_aabb(&probe)
+                .iter()
+                .any(|s| solid(s.flags))
+        }
+    }
+}
+
+const ROOM: &str = "\
+##########
+#........#
+#........#
+#........#
+##########";
+
+#[test]
+fn falling_characters_land_flush_on_the_floor() {
+    let m = map(ROOM);
+    for shape in [boxed(), ball()] {
+        let mut ch = hero(shape, v(3.5, 1.5));
+        let c = step(&mut ch, &m, v(0.0, 5.0));
+        assert!(c.is_grounded(), "{shape:?}");
+        assert_eq!(c.ground.unwrap().normal, UP);
+        assert!(
+            (ch.position.y - (4.0 - foot(shape) - SKIN)).abs() < 1e-5,
+            "{:?}",
+            ch.position
+        );
+        assert_eq!(ch.position.x, 3.5);
+        assert!(ch.ground().is_some());
+    }
+}
+
+#[test]
+fn walking_into_walls_stops_flush_with_a_left_or_right_contact() {
+    let m = map(ROOM);
+    for shape in [boxed(), ball()] {
+        let half_width = match shape {
+            CharacterShape::Circle { radius } => radius,
+            CharacterShape::Rect { half } => half.x,
+        };
+        let mut ch = hero(shape, v(4.5, 2.0));
+        step(&mut ch, &m, v(0.0, 3.0));
+        let c = step(&mut ch, &m, v(20.0, 0.1));
+        assert!(
+            c.right.is_some() && c.left.is_none() && c.is_grounded(),
+            "{c:?}"
+        );
+        assert_eq!(c.right.unwrap().normal, v(-1.0, 0.0));
+        assert!((ch.position.x - (9.0 - half_width - SKIN)).abs() < 1e-4);
+        let c = step(&mut ch, &m, v(-20.0, 0.1));
+        assert!(c.left.is_some() && c.right.is_none(), "{c:?}");
+        assert!((ch.position.x - (1.0 + half_width + SKIN)).abs() < 1e-4);
+    }
+}
+
+#[test]
+fn jumping_into_the_ceiling_stops_with_a_ceiling_contact() {
+    let m = map(ROOM);
+    for shape in [boxed(), ball()] {
+        let mut ch = hero(shape, v(4.5, 2.5));
+        step(&mut ch, &m, v(0.0, 3.0));
+        let c = step(&mut ch, &m, v(0.5, -10.0));
+        assert!(c.ceiling.is_some() && !c.is_grounded(), "{c:?}");
+        assert!((ch.position.y - (1.0 + foot(shape) + SKIN)).abs() < 1e-4);
+        assert!(
+            (ch.position.x - 5.0).abs() < 1e-5,
+            "the sideways part is kept"
+        );
+    }
+}
+
+const HILL: &str = "\
+##############
+#............#
+#............#
+#............#
+#..../##\\....#
+##############";
+
+#[test]
+fn walking_over_a_45_degree_hill_stays_on_the_ground_every_step() {
+    let m = map(HILL);
+    for shape in [boxed(), ball()] {
+        // The floor is at y = 5, the hill's top at y = 4.
+        let mut ch = hero(shape, v(1.5, 5.0 - foot(shape) - SKIN));
+        step(&mut ch, &m, v(0.0, 0.1));
+        let mut top = f32::INFINITY;
+        for k in 0..200 {
+            let c = step(&mut ch, &m, v(0.06, 0.02));
+            assert!(
+                c.is_grounded(),
+                "{shape:?} left the ground at step {k}: {:?}",
+                ch.position
+            );
+            assert!(!in_solid(&ch, &m, 1e-3), "{shape:?} in solid at step {k}");
+            top = top.min(ch.position.y);
+        }
+        // Over the hill (one cell high) and down to the far wall.
+        assert!(ch.position.x > 12.0 - 0.5, "{:?}", ch.position);
+        assert!(
+            (top - (4.0 - foot(shape) - SKIN)).abs() < 0.05,
+            "{shape:?}: top {top}"
+        );
+        assert!((ch.position.y - (5.0 - foot(shape) - SKIN)).abs() < 1e-4);
+    }
+}
+
+#[test]
+fn a_slope_steeper_than_the_limit_is_a_wall() {
+    let m = map(HILL);
+    let config = ControllerConfig {
+        max_slope_degrees: 40.0,
+        ..ControllerConfig::default()
+    };
+    let mut ch = Character::new(boxed(), v(2.5, 4.0), UP, config).unwrap();
+    step(&mut ch, &m, v(0.0, 1.0));
+    let y = ch.position.y;
+    let mut c = Contacts::default();
+    for _ in 0..100 {
+        c = step(&mut ch, &m, v(0.06, 0.02));
+    }
+    assert!(c.right.is_some(), "{c:?}");
+    assert!(c.is_grounded());
+    assert_eq!(ch.position.y, y, "it must not climb the steep ramp");
+    assert!(ch.position.x < 5.0);
+}
+
+#[test]
+fn standing_on_a_ramp_under_gravity_does_not_creep() {
+    let m = map(HILL);
+    for shape in [boxed(), ball()] {
+        let mut ch = hero(shape, v(5.5, 2.0));
+        for _ in 0..20 {
+            step(&mut ch, &m, v(0.0, 0.2));
+        }
+        assert!(ch.ground().is_some());
+        let rest = ch.position;
+        for _ in 0..300 {
+            let c = step(&mut ch, &m, v(0.0, 0.05));
+            assert!(c.is_grounded());
+        }
+        assert!(
+            (ch.position - rest).length() < 1e-5,
+            "{shape:?}: {rest:?} → {:?}",
+            ch.position
+        );
+    }
+}
+
+#[test]
+fn walking_over_many_seams_keeps_the_height_exactly() {
+    let m = map("\
+##############################
+#............................#
+#............................#
+##############################");
+    for shape in [boxed(), ball()] {
+        let mut ch = hero(shape, v(1.5, 2.0));
+        step(&mut ch, &m, v(0.0, 1.0));
+        let y = ch.position.y;
+        for k in 0..350 {
+            let c = step(&mut ch, &m, v(0.07, 0.03));
+            assert!(
+                c.is_grounded() && c.right.is_none(),
+                "{shape:?} step {k}: {c:?}"
+            );
+            assert_eq!(ch.position.y, y, "{shape:?} bumped at step {k}");
+        }
+        assert!(ch.position.x > 25.0);
+    }
+}
+
+const PLATFORM: &str = "\
+##########
+#........#
+#........#
+#..====..#
+#........#
+#........#
+##########";
+
+#[test]
+fn a_jump_passes_up_through_a_one_way_platform_and_lands_on_it() {
+    let m = map(PLATFORM);
+    for shape in [boxed(), ball()] {
+        let mut ch = hero(shape, v(4.5, 5.0));
+        step(&mut ch, &m, v(0.0, 1.0));
+        assert!(ch.ground().is_some());
+        // Up through the platform (y = 3) to well above it.
+        let c = step(&mut ch, &m, v(0.0, -3.3));
+        assert!(c.ceiling.is_none() && !c.is_grounded(), "{c:?}");
+        assert!(ch.position.y < 3.0 - foot(shape));
+        // Fall back: lands on it.
+        let c = step(&mut ch, &m, v(0.0, 2.0));
+        let ground = c.ground.expect("lands on the platform");
+        assert!(ground.flags.contains(SegmentFlags::ONE_WAY));
+        assert!((ch.position.y - (3.0 - foot(shape) - SKIN)).abs() < 1e-4);
+        // Drop through on request, then fall to the floor.
+        let drop = MoveOptions { drop_through: true };
+        ch.move_by(&m, v(0.0, 0.2), drop).unwrap();
+        for _ in 0..20 {
+            step(&mut ch, &m, v(0.0, 0.2));
+        }
+        assert!((ch.position.y - (6.0 - foot(shape) - SKIN)).abs() < 1e-4);
+    }
+}
+
+#[test]
+fn walking_into_the_end_of_a_one_way_platform_passes_under_and_through_it() {
+    let m = map("\
+##########
+#........#
+#........#
+#..====..#
+##########");
+    // A box 0.8 tall on the floor (y = 4): its top is above the platform at y = 3.
+    let mut ch = hero(boxed(), v(1.5, 3.5));
+    step(&mut ch, &m, v(0.0, 1.0));
+    let y = ch.position.y;
+    for _ in 0..60 {
+        let c = step(&mut ch, &m, v(0.1, 0.05));
+        assert!(c.right.is_none() && c.ceiling.is_none(), "{c:?}");
+    }
+    assert!(ch.position.x > 7.0);
+    assert_eq!(ch.position.y, y);
+}
+
+#[test]
+fn moving_diagonally_into_a_corner_ends_flush_against_both_surfaces() {
+    let m = map(ROOM);
+    for shape in [boxed(), ball()] {
+        let mut ch = hero(shape, v(4.5, 2.0));
+        let c = step(&mut ch, &m, v(10.0, 10.0));
+        assert!(c.is_grounded() && c.right.is_some(), "{shape:?}: {c:?}");
+        let (hw, hh) = match shape {
+            CharacterShape::Circle { radius } => (radius, radius),
+            CharacterShape::Rect { half } => (half.x, half.y),
+        };
+        assert!(
+            (ch.position.x - (9.0 - hw - SKIN)).abs() < 1e-3,
+            "{:?}",
+            ch.position
+        );
+        assert!(
+            (ch.position.y - (4.0 - hh - SKIN)).abs() < 1e-3,
+            "{:?}",
+            ch.position
+        );
+    }
+}
+
+/// A game loop at `rate` steps per second for `seconds`: walk right at 3 cells/s under
+/// gravity (30 cells/s²), with a jump (12 cells/s up) half a second in. Returns the end
+/// position.
+fn game_run(m: &TileMap, shape: CharacterShape, rate: f32, seconds: f32) -> Vec2 {
+    let mut ch = hero(shape, v(1.5, 2.0));
+    let dt = 1.0 / rate;
+    let mut vy = 0.0f32;
+    let steps = (seconds * rate).round() as usize;
+    let jump_at = (0.5 * rate).round() as usize;
+    for k in 0..steps {
+        if k == jump_at && ch.ground().is_some() {
+            vy = -12.0;
+        }
+        vy += 30.0 * dt;
+        let c = step(&mut ch, m, v(3.0 * dt, vy * dt));
+        if c.is_grounded() && vy > 0.0 || c.ceiling.is_some() && vy < 0.0 {
+            vy = 0.0;
+        }
+        assert!(!in_solid(&ch, m, 1e-3), "in solid at {rate} Hz step {k}");
+    }
+    ch.position
+}
+
+#[test]
+fn the_same_run_at_30_60_and_144_steps_per_second_ends_in_the_same_place() {
+    let m = map(HILL);
+    for shape in [boxed(), ball()] {
+        let ends: Vec<Vec2> = [30.0, 60.0, 144.0]
+            .iter()
+            .map(|&rate| game_run(&m, shape, rate, 3.0))
+            .collect();
+        // Walking right for 3 s at 3 cells/s from x = 1.5, over the hill and its ramps,
+        // with a jump: x = 10.5 at every rate, resting on the floor.
+        for end in &ends {
+            assert!((end.x - ends[0].x).abs() < 1e-3, "{shape:?}: {ends:?}");
+            assert!((end.y - ends[0].y).abs() < 1e-3, "{shape:?}: {ends:?}");
+        }
+        assert!((ends[0].x - 10.5).abs() < 1e-3, "{ends:?}");
+        assert!(
+            (ends[0].y - (5.0 - foot(shape) - SKIN)).abs() < 1e-4,
+            "{ends:?}"
+        );
+    }
+}
+
+#[test]
+fn bad_input_is_an_error_naming_the_value() {
+    let m = map(ROOM);
+    let mut ch = hero(boxed(), v(3.5, 2.0));
+    let err = ch
+        .move_by(&m, v(f32::NAN, 0.0), MoveOptions::default())
+        .unwrap_err();
+    assert!(err.to_string().contains("displacement"), "{err}");
+    assert_eq!(ch.position, v(3.5, 2.0));
+    assert!(
+        Character::new(
+            boxed(),
+            v(1.0, 1.0),
+            Vec2::ZERO,
+            ControllerConfig::default()
+        )
+        .is_err()
+    );
+    assert!(
+        Character::new(
+            boxed(),
+            v(f32::INFINITY, 1.0),
+            UP,
+            ControllerConfig::default()
+        )
+        .is_err()
+    );
+    let bad = ControllerConfig {
+        max_slope_degrees: 95.0,
+        ..ControllerConfig::default()
+    };
+    let err = Character::new(boxed(), v(1.0, 1.0), UP, bad).unwrap_err();
+    assert!(err.to_string().contains("max_slope_degrees"), "{err}");
+    assert!(CharacterShape::rect(v(0.5, -1.0)).is_err());
+    assert!(CharacterShape::circle(0.0).is_err());
+}
+
+/// Two rooms with ramps and platforms, separated by a thick wall.
+const ROOMS: &str = "\
+########################
+#.......##.....#.......#
+#...==..##.........=...#
+#.......##../\\...#.....#
+#../##\\.##.//\\\\..#..\\..#
+########################";
+
+/// The room (0 left, 1 right) a position is in, by which side of the thick wall it is.
+fn room_of(p: Vec2) -> u8 {
+    u8::from(p.x > 9.0)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// From random free positions, random moves (walks, jumps, falls, of up to several
+    /// cells a step, drop-throughs): the character never ends a move inside solid, and
+    /// never leaves its room.
+    #[test]
+    fn a_character_never_ends_inside_solid_or_outside_its_room(
+        circle in any::<bool>(),
+        x in 1.2f32..22.8, y in 1.2f32..4.8,
+        moves in prop::collection::vec((-4.0f32..4.0, -4.0f32..4.0, any::<bool>()), 1..30),
+    ) {
+        let m = map(ROOMS);
+        let shape = if circle { ball() } else { boxed() };
+        let mut ch = hero(shape, v(x, y));
+        prop_assume!(!in_solid(&ch, &m, 0.0));
+        let room = room_of(ch.position);
+        for (k, &(dx, dy, drop)) in moves.iter().enumerate() {
+            ch.move_by(&m, v(dx, dy), MoveOptions { drop_through: drop }).unwrap();
+            prop_assert!(!in_solid(&ch, &m, 2e-3), "move {}: in solid at {:?}", k, ch.position);
+            prop_assert_eq!(room_of(ch.position), room, "move {}: left its room to {:?}", k, ch.position);
+        }
+    }
+}
