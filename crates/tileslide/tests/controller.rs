@@ -6,8 +6,8 @@
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Aabb, Character, CharacterShape, Contacts, ControllerConfig, MoveOptions, SegmentFlags,
-    TileMap, Vec2,
+    Aabb, Character, CharacterShape, Contacts, ControllerConfig, MoveOptions, Owner, Segment,
+    SegmentFlags, TemporarySegment, TileMap, Vec2,
 };
 
 const UP: Vec2 = Vec2::NEG_Y;
@@ -410,7 +410,12 @@ fn room_of(p: Vec2) -> u8 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(300))]
+    // Starts inside solid are rejected (about two in five), hence the reject budget.
+    #![proptest_config(ProptestConfig {
+        cases: 300,
+        max_global_rejects: 100_000,
+        ..ProptestConfig::default()
+    })]
 
     /// From random free positions, random moves (walks, jumps, falls, of up to several
     /// cells a step, drop-throughs): the character never ends a move inside solid, and
@@ -432,4 +437,160 @@ proptest! {
             prop_assert_eq!(room_of(ch.position), room, "move {}: left its room to {:?}", k, ch.position);
         }
     }
+}
+
+/// Cells of 0.25: a one-cell step (0.25 high) at x = 1.75, and a column rising 0.5 above the
+/// step at x = 2.75.
+const STEPS: &str = "\
+####################
+#..................#
+#..................#
+#..................#
+#..........#.......#
+#..........#.......#
+#......#######.....#
+####################";
+
+fn small_box() -> CharacterShape {
+    CharacterShape::rect(v(0.1, 0.2)).unwrap()
+}
+
+#[test]
+fn a_walk_steps_up_onto_a_ledge_no_higher_than_the_step_height() {
+    let m = ascii::parse(STEPS, "steps.txt", 0.25).unwrap();
+    let walk = |step_height: f32| {
+        let config = ControllerConfig {
+            step_height,
+            ..ControllerConfig::default()
+        };
+        let mut ch = Character::new(small_box(), v(0.5, 1.5), UP, config).unwrap();
+        step(&mut ch, &m, v(0.0, 1.0));
+        let mut last = Contacts::default();
+        for _ in 0..100 {
+            last = step(&mut ch, &m, v(0.05, 0.02));
+            assert!(last.is_grounded(), "{:?}", ch.position);
+            assert!(!in_solid(&ch, &m, 1e-3));
+        }
+        (ch.position, last)
+    };
+    // Without stepping: stopped at the step's face (x = 1.75).
+    let (at, contacts) = walk(0.0);
+    assert!((at.x - (1.75 - 0.1 - SKIN)).abs() < 1e-4, "{at:?}");
+    assert!(contacts.right.is_some());
+    // With a 0.3 step height: up onto the step (top at y = 1.5), and stopped by the
+    // column 0.5 higher (x = 2.75).
+    let (at, contacts) = walk(0.3);
+    assert!((at.y - (1.5 - 0.2 - SKIN)).abs() < 1e-4, "{at:?}");
+    assert!((at.x - (2.75 - 0.1 - SKIN)).abs() < 1e-4, "{at:?}");
+    assert!(contacts.right.is_some());
+}
+
+const OPEN: &str = "\
+####################
+#..................#
+#..................#
+#..................#
+#..................#
+#..................#
+#..................#
+#..................#
+####################";
+
+/// A platform: owner 7's solid top segment, 2 wide, centred at `at`, facing up.
+fn platform(m: &mut TileMap, at: Vec2, velocity: Vec2) {
+    m.clear_temporaries();
+    m.add_temporary(TemporarySegment {
+        segment: Segment::new(at - v(1.0, 0.0), at + v(1.0, 0.0)),
+        normal: UP,
+        flags: SegmentFlags::SOLID,
+        owner: Owner(7),
+        velocity,
+    })
+    .unwrap();
+}
+
+#[test]
+fn a_rider_is_carried_exactly_however_fast_its_platform_moves() {
+    let mut m = map(OPEN);
+    for shape in [boxed(), ball()] {
+        let mut at = v(5.0, 6.0);
+        platform(&mut m, at, Vec2::ZERO);
+        let mut ch = hero(shape, v(5.2, 4.0));
+        for _ in 0..10 {
+            step(&mut ch, &m, v(0.0, 0.3));
+        }
+        assert!(ch.ground().is_some());
+        let offset = ch.position - at;
+        assert!((offset.y + foot(shape) + SKIN).abs() < 1e-4, "{offset:?}");
+        // Sideways, then up fast, then down fast (faster than the character falls).
+        let moves = [v(0.1, 0.0); 20]
+            .into_iter()
+            .chain([v(0.0, -0.45); 6])
+            .chain([v(-0.2, 0.6); 5]);
+        for (k, d) in moves.enumerate() {
+            at += d;
+            platform(&mut m, at, d);
+            let c = step(&mut ch, &m, v(0.0, 0.05));
+            let ground = c
+                .ground
+                .unwrap_or_else(|| panic!("{shape:?} fell off at frame {k}"));
+            assert_eq!(ground.platform_velocity(), d);
+            assert!(
+                (ch.position - at - offset).length() < 1e-3,
+                "{shape:?} frame {k}: {:?} vs platform {at:?}",
+                ch.position
+            );
+        }
+    }
+}
+
+#[test]
+fn a_platform_rising_into_the_ceiling_crushes_its_rider_without_tunnelling() {
+    let mut m = map(OPEN);
+    let mut at = v(5.0, 6.0);
+    platform(&mut m, at, Vec2::ZERO);
+    let mut ch = hero(boxed(), v(5.0, 5.0));
+    for _ in 0..5 {
+        step(&mut ch, &m, v(0.0, 0.3));
+    }
+    let mut crushed = false;
+    for _ in 0..30 {
+        at.y -= 0.3;
+        if at.y < 0.5 {
+            break;
+        }
+        platform(&mut m, at, v(0.0, -0.3));
+        let c = step(&mut ch, &m, v(0.0, 0.05));
+        crushed |= c.crush.is_some();
+        // Never through the ceiling at y = 1.
+        assert!(ch.position.y - 0.4 >= 1.0, "{:?}", ch.position);
+    }
+    assert!(crushed);
+}
+
+#[test]
+fn a_platform_moving_sideways_into_a_character_pushes_it() {
+    let mut m = map(OPEN);
+    let mut ch = hero(boxed(), v(5.0, 5.0));
+    step(&mut ch, &m, v(0.0, 5.0));
+    // The left face of a block moving left: a vertical segment facing −x.
+    for k in 0..10 {
+        let x = 6.0 - 0.2 * k as f32;
+        m.clear_temporaries();
+        m.add_temporary(TemporarySegment {
+            segment: Segment::new(v(x, 8.0), v(x, 6.0)),
+            normal: v(-1.0, 0.0),
+            flags: SegmentFlags::SOLID,
+            owner: Owner(3),
+            velocity: v(-0.2, 0.0),
+        })
+        .unwrap();
+        step(&mut ch, &m, v(0.0, 0.05));
+        assert!(
+            ch.position.x + 0.25 <= x,
+            "frame {k}: {:?} vs face at {x}",
+            ch.position
+        );
+    }
+    assert!(ch.position.x < 4.5);
 }

@@ -4,10 +4,11 @@
 use glam::Vec2;
 
 use super::contact::{Contact, Contacts, Surface};
+use super::platform::Riding;
 use super::{CharacterShape, ControllerError};
 use crate::geometry::{Aabb, SweepHit};
 use crate::query::{RayFilter, Wall};
-use crate::tiles::{SegmentFlags, TileMap};
+use crate::tiles::{Owner, SegmentFlags, TileMap};
 
 /// How a character moves: slope limit, ground snapping, the gap it keeps from surfaces.
 /// Distances are in map units; the defaults suit maps with cells of size 1 (scale them with
@@ -25,6 +26,9 @@ pub struct ControllerConfig {
     pub skin: f32,
     /// How many times one move may hit a surface and slide on. Default 4.
     pub max_slides: u32,
+    /// The highest ledge a walking character steps up onto instead of stopping at it (its
+    /// top must be walkable). Default 0: no stepping up.
+    pub step_height: f32,
     /// Segments block the character when they have one of these flags. Default
     /// `SOLID | ONE_WAY`.
     pub mask: SegmentFlags,
@@ -37,6 +41,7 @@ impl Default for ControllerConfig {
             snap_distance: 0.3,
             skin: 1e-3,
             max_slides: 4,
+            step_height: 0.0,
             mask: SegmentFlags::SOLID | SegmentFlags::ONE_WAY,
         }
     }
@@ -108,7 +113,9 @@ pub struct Character {
     /// Cosine of the slope limit.
     walkable: f32,
     /// The ground under the character after its last move.
-    ground: Option<Contact>,
+    pub(super) ground: Option<Contact>,
+    /// The moving platform it stands on, if its ground is one.
+    pub(super) riding: Option<Riding>,
     /// Scratch: the segments near the current sweep.
     walls: Vec<Wall>,
 }
@@ -116,10 +123,12 @@ pub struct Character {
 /// Moves shorter than this are not swept (they are rounding, not motion).
 const MIN_MOVE: f32 = 1e-7;
 
-/// Which part of a move is being swept: the walk (sideways) or the rise or fall (along up).
+/// Which part of a move is being swept: a walk along the ground, the sideways part of a
+/// move in the air, or the rise or fall (along up).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Phase {
     Walk,
+    Sideways,
     Vertical,
 }
 
@@ -150,6 +159,7 @@ impl Character {
             walkable: config.max_slope_degrees.to_radians().cos(),
             config,
             ground: None,
+            riding: None,
             walls: Vec::new(),
         })
     }
@@ -183,6 +193,7 @@ impl Character {
         finite("position", position)?;
         self.position = position;
         self.ground = None;
+        self.riding = None;
         Ok(())
     }
 
@@ -197,6 +208,10 @@ impl Character {
     ) -> Result<Contacts, ControllerError> {
         finite("displacement", displacement)?;
         let mut contacts = Contacts::default();
+        // Platforms moved first (the game submitted their new segments): go along with the
+        // one stood on, and out of any that moved into the character.
+        self.ride(map, options);
+        self.push_out(map, options, &mut contacts);
         let rise = displacement.dot(self.up);
         let sideways = displacement.dot(self.side);
         // On the ground and neither jumping nor dropping through it: walk along it, and let
@@ -211,7 +226,7 @@ impl Character {
             self.slide(
                 map,
                 self.side * sideways,
-                Phase::Walk,
+                Phase::Sideways,
                 options,
                 &mut contacts,
             );
@@ -227,6 +242,7 @@ impl Character {
         };
         contacts.ground = self.settle(map, reach, options);
         self.ground = contacts.ground;
+        self.riding = contacts.ground.and_then(|ground| Riding::on(map, &ground));
         Ok(contacts)
     }
 
@@ -241,27 +257,18 @@ impl Character {
     ) {
         let mut remaining = motion;
         for _ in 0..self.config.max_slides {
-            let length = remaining.length();
-            // (Not finite only for absurd displacements scaled up along a steep ramp.)
-            if length <= MIN_MOVE || !length.is_finite() {
+            let Some((hit, wall, rest)) = self.go(map, remaining, options, None) else {
+                return;
+            };
+            let surface = Surface::of(hit.normal, self.up, self.side, self.walkable);
+            // A ledge low enough to step onto: stepped over, not a wall.
+            if phase == Phase::Walk
+                && self.config.step_height > 0.0
+                && matches!(surface, Surface::Left | Surface::Right)
+                && self.step_up(map, rest, options)
+            {
                 return;
             }
-            let Some((hit, wall)) = self.first_hit(map, remaining, options) else {
-                self.position += remaining;
-                return;
-            };
-            let dir = remaining / length;
-            // Stop a skin short of the surface, measured along its normal.
-            let travel = length * hit.t;
-            let approach = -dir.dot(hit.normal);
-            let back = if approach > 0.0 {
-                (self.config.skin / approach).min(travel)
-            } else {
-                0.0
-            };
-            self.position += dir * (travel - back);
-            let rest = remaining - dir * (travel - back);
-            let surface = Surface::of(hit.normal, self.up, self.side, self.walkable);
             let contact = Contact {
                 normal: hit.normal,
                 flags: wall.flags,
@@ -276,11 +283,13 @@ impl Character {
             remaining = match (phase, surface) {
                 // Walking onto walkable ground (a ramp up, or down onto a floor): on along
                 // it, keeping the sideways progress still to make.
-                (Phase::Walk, Surface::Ground) => along(hit.normal, self.side, rest.dot(self.side)),
+                (Phase::Walk | Phase::Sideways, Surface::Ground) => {
+                    along(hit.normal, self.side, rest.dot(self.side))
+                }
                 // Landing.
                 (Phase::Vertical, Surface::Ground) => Vec2::ZERO,
                 // A wall or steep slope: slide along it, but a walk never climbs it.
-                (Phase::Walk, Surface::Left | Surface::Right) => {
+                (Phase::Walk | Phase::Sideways, Surface::Left | Surface::Right) => {
                     let slid = rest - hit.normal * rest.dot(hit.normal);
                     if slid.dot(self.up) > 0.0 {
                         Vec2::ZERO
@@ -293,11 +302,75 @@ impl Character {
         }
     }
 
+    /// Moves by `motion` up to the first surface in the way (ignoring `exclude`'s temporary
+    /// segments), stopping a skin short of it (measured along its normal). Returns that
+    /// surface and the part of `motion` not made, or `None` when the whole move was made
+    /// clear of every surface (or it was too short, or absurdly long, to sweep).
+    ///
+    /// The sweep looks a skin further than the move, so a move that ends just short of a
+    /// surface also stops a skin short of it (and reports it): a character never ends a move
+    /// closer than the skin to a surface it was moving towards.
+    pub(super) fn go(
+        &mut self,
+        map: &TileMap,
+        motion: Vec2,
+        options: MoveOptions,
+        exclude: Option<Owner>,
+    ) -> Option<(SweepHit, Wall, Vec2)> {
+        let length = motion.length();
+        // (Not finite only for absurd displacements scaled up along a steep ramp.)
+        if length <= MIN_MOVE || !length.is_finite() {
+            return None;
+        }
+        let dir = motion / length;
+        let reach = length + self.config.skin;
+        let Some((hit, wall)) = self.first_hit(map, dir * reach, options, exclude) else {
+            self.position += motion;
+            return None;
+        };
+        let approach = -dir.dot(hit.normal);
+        let back = if approach > 0.0 {
+            self.config.skin / approach
+        } else {
+            0.0
+        };
+        let advance = (reach * hit.t - back).clamp(0.0, length);
+        self.position += dir * advance;
+        Some((hit, wall, motion - dir * advance))
+    }
+
+    /// Tries to step over the ledge a walk just met: up by the step height (as far as there
+    /// is room), forward by the walk's sideways remainder `rest`, then down onto walkable
+    /// ground no lower than where it started. Undone (false) when it makes no progress or
+    /// finds no walkable ground.
+    fn step_up(&mut self, map: &TileMap, rest: Vec2, options: MoveOptions) -> bool {
+        let start = self.position;
+        let forward = self.side * rest.dot(self.side);
+        if forward.length() <= MIN_MOVE {
+            return false;
+        }
+        self.go(map, self.up * self.config.step_height, options, None);
+        let raised = (self.position - start).dot(self.up);
+        let lifted = self.position;
+        self.go(map, forward, options, None);
+        let progress = (self.position - lifted).dot(self.side).abs();
+        let landed = progress > self.config.skin
+            && self
+                .go(map, -self.up * (raised + self.config.skin), options, None)
+                .is_some_and(|(hit, _, _)| {
+                    Surface::of(hit.normal, self.up, self.side, self.walkable) == Surface::Ground
+                });
+        if !landed {
+            self.position = start;
+        }
+        landed
+    }
+
     /// Looks up to `reach` below the character for walkable ground; if found, moves onto
     /// it (a skin above) and returns it.
     fn settle(&mut self, map: &TileMap, reach: f32, options: MoveOptions) -> Option<Contact> {
         let down = -self.up * reach;
-        let (hit, wall) = self.first_hit(map, down, options)?;
+        let (hit, wall) = self.first_hit(map, down, options, None)?;
         if Surface::of(hit.normal, self.up, self.side, self.walkable) != Surface::Ground {
             return None;
         }
@@ -315,13 +388,14 @@ impl Character {
     }
 
     /// The first surface the character meets moving by `motion` from where it is: every
-    /// segment near the move, swept exactly; on equal `t`, the first found (temporary
-    /// segments, then cells row by row).
+    /// segment near the move (but `exclude`'s temporary segments), swept exactly; on equal
+    /// `t`, the first found (temporary segments, then cells row by row).
     fn first_hit(
         &mut self,
         map: &TileMap,
         motion: Vec2,
         options: MoveOptions,
+        exclude: Option<Owner>,
     ) -> Option<(SweepHit, Wall)> {
         let (start, end) = (
             self.shape.bounds(self.position),
@@ -329,7 +403,8 @@ impl Character {
         );
         let region = Aabb::from_corners(start.min.min(end.min), start.max.max(end.max))
             .expand(self.config.skin);
-        let filter = RayFilter::default().with_mask(self.config.mask);
+        let mut filter = RayFilter::default().with_mask(self.config.mask);
+        filter.exclude_owner = exclude;
         self.walls.clear();
         map.walls_in(&region, &filter, &mut self.walls);
         let mut best: Option<(SweepHit, Wall)> = None;
@@ -394,6 +469,11 @@ fn check_config(config: &ControllerConfig) -> Result<(), ControllerError> {
             "skin",
             config.skin,
             config.skin >= 0.0 && config.skin.is_finite(),
+        ),
+        (
+            "step_height",
+            config.step_height,
+            config.step_height >= 0.0 && config.step_height.is_finite(),
         ),
     ];
     for (field, value, ok) in checks {

@@ -32,6 +32,10 @@ pub struct Contacts {
     pub left: Option<Contact>,
     /// A wall on the character's right (higher x): its normal points to the left.
     pub right: Option<Contact>,
+    /// A moving platform that pushed into the character when the world left it no room (a
+    /// platform pressing it into a ceiling or a wall): the character is crushed. It stays
+    /// on the world's side, overlapping the platform.
+    pub crush: Option<Contact>,
 }
 
 impl Contacts {

@@ -8,6 +8,7 @@
 
 mod character;
 mod contact;
+mod platform;
 mod shape;
 
 pub use character::{Character, ControllerConfig, MoveOptions};

@@ -40,6 +40,29 @@ pub(crate) struct Capsule {
 }
 
 impl Capsule {
+    /// The capsule of `segment` whose front is the side `normal` points to.
+    ///
+    /// Sweeps measure heights along the normal, so it must be perpendicular to the segment:
+    /// an authored normal a little off (Replica Island's are up to half a degree off, about
+    /// 0.3 pixel over a tile) would let a box's corner sink into the surface by that much.
+    /// Such a normal is replaced by the segment's perpendicular on the same side; a normal
+    /// perpendicular to rounding (every computed one) is kept bit for bit.
+    #[inline]
+    pub fn new(segment: Segment, normal: Vec2, caps: [bool; 2]) -> Self {
+        let e = segment.delta();
+        let normal = if normal.dot(e).abs() <= 1e-6 * e.length() {
+            normal
+        } else {
+            let perp = e.perp().normalize_or(normal);
+            if perp.dot(normal) >= 0.0 { perp } else { -perp }
+        };
+        Self {
+            segment,
+            normal,
+            caps,
+        }
+    }
+
     /// The time of impact of a circle of `radius` at `center` moving by `motion`.
     #[inline]
     pub fn sweep(&self, center: Vec2, radius: f32, motion: Vec2) -> Option<SweepHit> {
@@ -158,11 +181,7 @@ impl TileMap {
                 continue;
             }
             out.push(Wall {
-                capsule: Capsule {
-                    segment: tmp.segment,
-                    normal: tmp.normal,
-                    caps: [true; 2],
-                },
+                capsule: Capsule::new(tmp.segment, tmp.normal, [true; 2]),
                 flags: tmp.flags,
                 source: SegmentSource::Temporary {
                     owner: tmp.owner,
@@ -193,11 +212,7 @@ impl TileMap {
     pub(crate) fn capsules_in(&self, region: &Aabb, mask: SegmentFlags, out: &mut Vec<Capsule>) {
         for tmp in self.temporaries() {
             if tmp.flags.intersects(mask) && region.overlaps_segment(&tmp.segment) {
-                out.push(Capsule {
-                    segment: tmp.segment,
-                    normal: tmp.normal,
-                    caps: [true; 2],
-                });
+                out.push(Capsule::new(tmp.segment, tmp.normal, [true; 2]));
             }
         }
         self.for_each_segment_in(region, |_, _, s, capsule| {
@@ -224,11 +239,11 @@ impl TileMap {
                 let index = row * width + col;
                 let caps = self.store.caps(index);
                 for (i, (s, &cap)) in self.store.cell(index).iter().zip(caps).enumerate() {
-                    let capsule = Capsule {
-                        segment: Segment::new(s.a, s.b()),
-                        normal: s.normal,
-                        caps: [cap & CAP_A != 0, cap & CAP_B != 0],
-                    };
+                    let capsule = Capsule::new(
+                        Segment::new(s.a, s.b()),
+                        s.normal,
+                        [cap & CAP_A != 0, cap & CAP_B != 0],
+                    );
                     f(index, i as u32, s, capsule);
                 }
             }
