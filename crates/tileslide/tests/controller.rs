@@ -544,15 +544,22 @@ fn a_rider_is_carried_exactly_however_fast_its_platform_moves() {
     }
 }
 
-#[test]
-fn a_platform_rising_into_the_ceiling_crushes_its_rider_without_tunnelling() {
+/// The open room with a still platform at (5, 6), and a box that fell onto it.
+fn standing_on_a_platform() -> (TileMap, Vec2, Character) {
     let mut m = map(OPEN);
-    let mut at = v(5.0, 6.0);
+    let at = v(5.0, 6.0);
     platform(&mut m, at, Vec2::ZERO);
     let mut ch = hero(boxed(), v(5.0, 5.0));
     for _ in 0..5 {
         step(&mut ch, &m, v(0.0, 0.3));
     }
+    assert!(ch.ground().is_some());
+    (m, at, ch)
+}
+
+#[test]
+fn a_platform_rising_into_the_ceiling_crushes_its_rider_without_tunnelling() {
+    let (mut m, mut at, mut ch) = standing_on_a_platform();
     let mut crushed = false;
     for _ in 0..30 {
         at.y -= 0.3;
@@ -593,4 +600,69 @@ fn a_platform_moving_sideways_into_a_character_pushes_it() {
         );
     }
     assert!(ch.position.x < 4.5);
+}
+
+#[test]
+fn level_bounds_hold_when_submitted_as_segments_and_nothing_breaks_without_them() {
+    // A floor with no side walls: the map's edge is x = 0 and x = 10.
+    let mut m = map("\
+..........
+..........
+##########");
+    let mut ch = hero(boxed(), v(5.0, 1.0));
+    step(&mut ch, &m, v(0.0, 1.0));
+    // Without bounds, walking left off the map's edge: it leaves the map and falls, no panic.
+    for _ in 0..100 {
+        step(&mut ch, &m, v(-0.2, 0.1));
+    }
+    assert!(
+        ch.position.x < 0.0 && ch.position.y > 3.0,
+        "{:?}",
+        ch.position
+    );
+    // The level's bounds as temporary segments facing in (the map's own edges are not walls:
+    // a game decides whether leaving the level is a fall, a wall or a door).
+    let bounds = [
+        (v(0.0, -5.0), v(0.0, 3.0), v(1.0, 0.0)),
+        (v(10.0, 3.0), v(10.0, -5.0), v(-1.0, 0.0)),
+    ];
+    for (a, b, normal) in bounds {
+        m.add_temporary(TemporarySegment {
+            segment: Segment::new(a, b),
+            normal,
+            flags: SegmentFlags::SOLID,
+            owner: Owner(99),
+            velocity: Vec2::ZERO,
+        })
+        .unwrap();
+    }
+    let mut ch = hero(boxed(), v(5.0, 1.0));
+    step(&mut ch, &m, v(0.0, 1.0));
+    let mut c = Contacts::default();
+    for _ in 0..100 {
+        c = step(&mut ch, &m, v(-0.2, 0.1));
+    }
+    assert!(c.left.is_some() && c.is_grounded(), "{c:?}");
+    assert!(
+        (ch.position.x - (0.25 + SKIN)).abs() < 1e-4,
+        "{:?}",
+        ch.position
+    );
+}
+
+#[test]
+fn a_jump_off_a_moving_platform_can_keep_its_velocity() {
+    let (mut m, mut at, mut ch) = standing_on_a_platform();
+    let carry = v(0.15, 0.0);
+    at += carry;
+    platform(&mut m, at, carry);
+    let c = step(&mut ch, &m, v(0.0, 0.05));
+    // The game adds the platform's velocity to the jump.
+    let keep = c.ground.unwrap().platform_velocity();
+    assert_eq!(keep, carry);
+    let before = ch.position;
+    m.clear_temporaries();
+    let c = step(&mut ch, &m, keep + v(0.0, -0.3));
+    assert!(!c.is_grounded());
+    assert!((ch.position - before - v(0.15, -0.3)).length() < 1e-5);
 }

@@ -2,7 +2,8 @@
 //! box the size of the game's hero starts at each level's player spawn and runs right,
 //! jumping at walls and gaps, for a minute of game time at 60 steps per second. Every step
 //! it must end outside solid, and its centre must not have crossed a solid face since the
-//! last step (it never falls through a floor or passes a wall).
+//! last step (it never falls through a floor or passes a wall). Three levels that run left
+//! to right it must cross from the spawn to the right wall.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 mod replica_support;
@@ -18,6 +19,14 @@ use tileslide::{
 
 /// The hero's box, in pixels: 24 × 48.
 const HALF: Vec2 = Vec2::new(12.0, 24.0);
+/// Levels that run left to right with nothing a runner cannot jump: the run must cross
+/// them, from the spawn to within three tiles of the right wall.
+const CROSSED: [&str; 3] = [
+    "level_0_1_sewer_kyle.bin",
+    "level_2_4_grass.bin",
+    "level_3_6_sewer.bin",
+];
+
 /// Steps per second, and how long each run lasts.
 const RATE: f32 = 60.0;
 const SECONDS: f32 = 60.0;
@@ -135,6 +144,7 @@ fn a_hero_runs_and_jumps_across_every_level_without_passing_a_wall() {
     };
     let set = Arc::new(replica::load_tile_set(dir.join("collision.bin")).unwrap());
     let mut levels = 0;
+    let mut crossed = 0;
     let mut report = Vec::new();
     for name in level_names(&dir) {
         let bytes = read(&dir, &name);
@@ -148,10 +158,19 @@ fn a_hero_runs_and_jumps_across_every_level_without_passing_a_wall() {
         let result = run(&name, &map, start);
         report.push(format!("{name}: {result:?}"));
         levels += 1;
-        // It stood on the ground, and got somewhere.
+        // It stood on the ground, and got somewhere; across the levels it can cross.
         assert!(result.grounded_steps > 60, "{name}: {result:?}");
         assert!(result.progress > 2.0 * TILE, "{name}: {result:?}");
+        if CROSSED.contains(&name.as_str()) {
+            let to_the_end = map.width() as f32 * TILE - start.x;
+            assert!(
+                result.progress >= to_the_end - 3.0 * TILE,
+                "{name}: {result:?}, {to_the_end} px to the right wall"
+            );
+            crossed += 1;
+        }
     }
+    assert_eq!(crossed, CROSSED.len());
     eprintln!("{}", report.join("\n"));
     assert!(levels >= 20, "only {levels} levels with a player spawn");
 }
