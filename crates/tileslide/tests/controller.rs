@@ -666,3 +666,97 @@ fn a_jump_off_a_moving_platform_can_keep_its_velocity() {
     assert!(!c.is_grounded());
     assert!((ch.position - before - v(0.15, -0.3)).length() < 1e-5);
 }
+
+/// Submits `segments` (start, end, normal) as owner 5's temporary segments, solid unless
+/// `one_way`.
+fn submit(m: &mut TileMap, segments: &[(Vec2, Vec2, Vec2)], one_way: bool) {
+    m.clear_temporaries();
+    let flags = if one_way {
+        SegmentFlags::ONE_WAY
+    } else {
+        SegmentFlags::SOLID
+    };
+    for &(a, b, normal) in segments {
+        m.add_temporary(TemporarySegment {
+            segment: Segment::new(a, b),
+            normal,
+            flags,
+            owner: Owner(5),
+            velocity: Vec2::ZERO,
+        })
+        .unwrap();
+    }
+}
+
+#[test]
+fn a_slanted_platform_with_a_rough_normal_holds_its_rider_without_hovering() {
+    // Submitted with straight-up as its normal, though it slopes by 14 degrees.
+    let mut m = map(OPEN);
+    submit(&mut m, &[(v(4.0, 5.0), v(8.0, 6.0), UP)], false);
+    let mut ch = hero(boxed(), v(7.0, 4.0));
+    for _ in 0..20 {
+        let c = step(&mut ch, &m, v(0.0, 0.1));
+        assert!(c.crush.is_none());
+    }
+    assert!(ch.ground().is_some(), "{:?}", ch.position);
+    // Its bottom-left corner (6.75, y + 0.4) a skin above the slope (y = 5 + (x − 4) / 4).
+    let surface = 5.0 + (6.75 - 4.0) / 4.0;
+    let gap = surface - (ch.position.y + 0.4);
+    assert!(gap > 0.0 && gap < 3.0 * SKIN, "gap {gap}");
+}
+
+#[test]
+fn walking_under_a_still_one_way_platform_does_not_pop_up_onto_it() {
+    // A one-way temporary platform 0.3 above the floor: the box (0.8 tall) walks through.
+    let mut m = map(OPEN);
+    submit(&mut m, &[(v(6.0, 7.7), v(9.0, 7.7), UP)], true);
+    let mut ch = hero(boxed(), v(3.0, 7.0));
+    step(&mut ch, &m, v(0.0, 1.0));
+    let y = ch.position.y;
+    for _ in 0..80 {
+        let c = step(&mut ch, &m, v(0.1, 0.05));
+        assert!(c.crush.is_none());
+        assert_eq!(ch.position.y, y, "popped up at {:?}", ch.position);
+    }
+    assert!(ch.position.x > 9.5);
+}
+
+#[test]
+fn a_rider_stays_put_when_its_platform_resubmits_its_segments_in_another_order() {
+    let top = (v(4.0, 6.0), v(6.0, 6.0), UP);
+    let bottom = (v(6.0, 6.5), v(4.0, 6.5), Vec2::Y);
+    let mut m = map(OPEN);
+    submit(&mut m, &[top, bottom], false);
+    let mut ch = hero(boxed(), v(5.0, 5.0));
+    for _ in 0..10 {
+        step(&mut ch, &m, v(0.0, 0.2));
+    }
+    let rest = ch.position;
+    // Reordered, then the top reversed end for end.
+    submit(&mut m, &[bottom, top], false);
+    step(&mut ch, &m, v(0.0, 0.05));
+    let reversed = (top.1, top.0, UP);
+    submit(&mut m, &[reversed, bottom], false);
+    let c = step(&mut ch, &m, v(0.0, 0.05));
+    assert!(c.is_grounded());
+    assert!(
+        (ch.position - rest).length() < 1e-5,
+        "{rest:?} → {:?}",
+        ch.position
+    );
+}
+
+#[test]
+fn a_position_set_to_nan_or_an_overflowing_move_is_an_error() {
+    let m = map(ROOM);
+    let mut ch = hero(boxed(), v(3.5, 2.0));
+    let err = ch
+        .move_by(&m, v(3.0e38, 3.0e38), MoveOptions::default())
+        .unwrap_err();
+    assert!(err.to_string().contains("displacement length"), "{err}");
+    ch.position = v(f32::NAN, 2.0);
+    let err = ch
+        .move_by(&m, v(0.1, 0.0), MoveOptions::default())
+        .unwrap_err();
+    assert!(err.to_string().contains("position"), "{err}");
+}

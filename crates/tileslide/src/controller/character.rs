@@ -207,6 +207,15 @@ impl Character {
         options: MoveOptions,
     ) -> Result<Contacts, ControllerError> {
         finite("displacement", displacement)?;
+        // (`position` is a public field: checked here too.)
+        finite("position", self.position)?;
+        if !displacement.length().is_finite() {
+            // Finite components whose length overflows: no sweep can take it.
+            return Err(ControllerError::NonFinite {
+                what: "displacement length",
+                value: displacement,
+            });
+        }
         let mut contacts = Contacts::default();
         // Platforms moved first (the game submitted their new segments): go along with the
         // one stood on, and out of any that moved into the character.
@@ -308,8 +317,9 @@ impl Character {
     /// clear of every surface (or it was too short, or absurdly long, to sweep).
     ///
     /// The sweep looks a skin further than the move, so a move that ends just short of a
-    /// surface also stops a skin short of it (and reports it): a character never ends a move
-    /// closer than the skin to a surface it was moving towards.
+    /// surface head-on also stops a skin short of it (and reports it). A move that only
+    /// grazes a surface may end closer to it (down to the skin times the cosine of the
+    /// angle of approach), never inside it.
     pub(super) fn go(
         &mut self,
         map: &TileMap,

@@ -23,7 +23,8 @@ pub enum ControllerError {
     /// A position, direction or displacement was not finite (or `up` was zero).
     #[error("character {what} must be finite (and `up` non-zero), got {value}")]
     NonFinite {
-        /// Which value: `"position"`, `"up"` or `"displacement"`.
+        /// Which value: `"position"`, `"up"`, `"displacement"` or `"displacement length"`
+        /// (finite components whose length overflows).
         what: &'static str,
         /// The value given.
         value: Vec2,

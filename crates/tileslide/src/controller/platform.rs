@@ -3,10 +3,11 @@
 //!
 //! A platform is an [`Owner`]'s temporary segments, submitted anew every frame at the
 //! platform's new place (platforms move first, characters after). A character standing on
-//! one remembers which (the owner, and the segment's rank among that owner's segments) and
-//! where that segment's first end point was; on its next move it is first carried by
-//! exactly as much as that point moved, swept against everything but the platform itself,
-//! so it neither lags nor sinks, however fast the platform goes. Then any platform that
+//! one remembers which (the owner, and the segment's midpoint and normal); on its next move
+//! it finds that segment again (the owner's segment facing the same way whose midpoint is
+//! nearest) and is first carried by exactly as much as its midpoint moved, swept against
+//! everything but the platform itself, so it neither lags nor sinks, however fast the
+//! platform goes. Platforms translate; a rotating one carries its riders by its midpoint. Then any platform that
 //! moved into the character pushes it out along its normal; a push the world blocks (a
 //! platform pressing the character into a ceiling) is a crush, and the character stays on
 //! the world's side: it never tunnels.
@@ -14,17 +15,17 @@
 use glam::Vec2;
 
 use super::{Character, Contact, Contacts, MoveOptions};
-use crate::query::SegmentSource;
+use crate::geometry::Segment;
+use crate::query::{Capsule, SegmentSource};
 use crate::tiles::{Owner, SegmentFlags, TileMap};
 
 /// The moving platform a character stands on.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct Riding {
     owner: Owner,
-    /// The segment's rank among its owner's temporary segments.
-    rank: usize,
-    /// Where the segment's first end point was.
-    anchor: Vec2,
+    /// The segment stood on: its midpoint and (corrected) normal when last seen.
+    middle: Vec2,
+    normal: Vec2,
 }
 
 impl Riding {
@@ -33,17 +34,38 @@ impl Riding {
         let SegmentSource::Temporary { owner, index, .. } = ground.source else {
             return None;
         };
-        let temporaries = map.temporaries();
-        let segment = temporaries.get(index)?;
+        let platform = map.temporaries().get(index)?;
+        let capsule = Capsule::new(platform.segment, platform.normal, [true; 2]);
         Some(Self {
             owner,
-            rank: temporaries[..index]
-                .iter()
-                .filter(|t| t.owner == owner)
-                .count(),
-            anchor: segment.segment.a,
+            middle: midpoint(&platform.segment),
+            normal: capsule.normal,
         })
     }
+
+    /// Where the segment stood on is now: of the owner's segments facing about the same
+    /// way, the one whose midpoint is nearest to where it was (so an owner may submit its
+    /// segments in any order, either way round). `None` when the owner has none.
+    fn find(&self, map: &TileMap) -> Option<Vec2> {
+        map.temporaries()
+            .iter()
+            .filter(|t| t.owner == self.owner)
+            .filter(|t| {
+                Capsule::new(t.segment, t.normal, [true; 2])
+                    .normal
+                    .dot(self.normal)
+                    > 0.9
+            })
+            .map(|t| midpoint(&t.segment))
+            .min_by(|a, b| {
+                a.distance_squared(self.middle)
+                    .total_cmp(&b.distance_squared(self.middle))
+            })
+    }
+}
+
+fn midpoint(segment: &Segment) -> Vec2 {
+    (segment.a + segment.b) * 0.5
 }
 
 impl Contact {
@@ -66,17 +88,12 @@ impl Character {
         let Some(riding) = self.riding else {
             return;
         };
-        let platform = map
-            .temporaries()
-            .iter()
-            .filter(|t| t.owner == riding.owner)
-            .nth(riding.rank);
-        let Some(platform) = platform else {
+        let Some(middle) = riding.find(map) else {
             self.riding = None;
             self.ground = None;
             return;
         };
-        let carried = platform.segment.a - riding.anchor;
+        let carried = middle - riding.middle;
         if carried != Vec2::ZERO {
             self.go(map, carried, options, Some(riding.owner));
         }
@@ -84,29 +101,42 @@ impl Character {
 
     /// Pushes the character out of every temporary segment that overlaps it from the front,
     /// along that segment's normal, a skin clear; records a crush when the world stops the
-    /// push.
+    /// push short.
+    ///
+    /// A one-way platform pushes only a character whose lowest point is on or above its
+    /// line (as it holds only those): one rising into a character from below passes
+    /// through it, as a jump passes up through one.
     pub(super) fn push_out(
         &mut self,
         map: &TileMap,
         options: MoveOptions,
         contacts: &mut Contacts,
     ) {
+        let skin = self.config().skin;
         for (index, platform) in map.temporaries().iter().enumerate() {
             let one_way = platform.flags.contains(SegmentFlags::ONE_WAY)
                 && !platform.flags.contains(SegmentFlags::SOLID);
             if !platform.flags.intersects(self.config().mask) || one_way && options.drop_through {
                 continue;
             }
-            let Some(depth) =
-                self.shape()
-                    .penetration(&platform.segment, platform.normal, self.position)
-            else {
+            let capsule = Capsule::new(platform.segment, platform.normal, [true; 2]);
+            let Some(depth) = self.shape().penetration(&capsule, self.position) else {
                 continue;
             };
-            let push = platform.normal * (depth + self.config().skin);
-            if self.go(map, push, options, Some(platform.owner)).is_some() {
+            if one_way && depth > 2.0 * skin {
+                continue;
+            }
+            let before = self.position;
+            self.go(
+                map,
+                capsule.normal * (depth + skin),
+                options,
+                Some(platform.owner),
+            );
+            // Short of the depth (not of the extra skin): the world is in the way.
+            if (self.position - before).dot(capsule.normal) < depth - 0.5 * skin {
                 contacts.crush = Some(Contact {
-                    normal: platform.normal,
+                    normal: capsule.normal,
                     flags: platform.flags,
                     source: SegmentSource::Temporary {
                         owner: platform.owner,

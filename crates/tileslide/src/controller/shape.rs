@@ -3,7 +3,7 @@
 use glam::Vec2;
 
 use super::ControllerError;
-use crate::geometry::{Aabb, Segment, SweepHit, sweep_box_segment};
+use crate::geometry::{Aabb, SweepHit, sweep_box_segment};
 use crate::query::Capsule;
 
 /// A character's collision shape, centred on its position.
@@ -74,27 +74,28 @@ impl CharacterShape {
         }
     }
 
-    /// How far the shape at `center` reaches past the line of `segment` (front `normal`)
-    /// while its centre is in front of it and it is over the segment's extent: the depth to
-    /// push it out by. `None` when it does not overlap the segment from the front.
-    ///
-    /// Over the extent means the centre (circle) or the whole box projects onto the segment;
-    /// a box near the end of a slanted segment may count a little early, which only makes a
-    /// push start a little early.
-    pub(crate) fn penetration(&self, segment: &Segment, normal: Vec2, center: Vec2) -> Option<f32> {
+    /// How far the shape at `center` reaches past the line of `capsule`'s segment while
+    /// its centre is in front of it and it touches the segment: the depth to push it out by
+    /// along the capsule's normal. `None` when it does not overlap the segment from the
+    /// front.
+    pub(crate) fn penetration(&self, capsule: &Capsule, center: Vec2) -> Option<f32> {
+        let (segment, normal) = (&capsule.segment, capsule.normal);
         let height = (center - segment.a).dot(normal);
         let support = self.support(normal);
         let length = segment.length();
         if !(height >= 0.0 && height < support && length > 0.0) {
             return None;
         }
-        let along = segment.delta() / length;
-        let s = (center - segment.a).dot(along);
-        let reach = match *self {
-            Self::Circle { .. } => 0.0,
-            Self::Rect { half } => half.x * along.x.abs() + half.y * along.y.abs(),
+        let touches = match *self {
+            // The centre over the segment's extent (the flat side; the rounded ends are
+            // left to the sweeps).
+            Self::Circle { .. } => {
+                let s = (center - segment.a).dot(segment.delta()) / length;
+                (0.0..=length).contains(&s)
+            }
+            Self::Rect { half } => Aabb::from_center(center, half).overlaps_segment(segment),
         };
-        (s + reach >= 0.0 && s - reach <= length).then_some(support - height)
+        touches.then_some(support - height)
     }
 
     /// The time of impact of the shape at `center` moving by `motion` against `capsule`'s

@@ -108,11 +108,23 @@ pub fn sweep_box_segment(
 
 /// Time of impact of the box against a point: the point, moving by `-motion`, entering the
 /// box through one of its sides (a slab test). The normal is that side's outward normal,
-/// negated: from the point towards the box. `None` when the point is already inside, misses
-/// the box, or enters after `t = 1`.
+/// negated: from the point towards the box. A point already inside the box gives `t = 0`
+/// with the normal of the side it is nearest, if the move takes the box further onto it.
+/// `None` when the point misses the box, enters after `t = 1`, or is inside and the box
+/// moves off it.
 fn sweep_box_point(center: Vec2, half: Vec2, motion: Vec2, point: Vec2) -> Option<SweepHit> {
     // The point relative to the box, moving by -motion.
     let p = point - center;
+    if p.abs().cmple(half).all() {
+        // Inside (or on the boundary): the nearest side decides.
+        let depth = half - p.abs();
+        let normal = if depth.x < depth.y {
+            Vec2::new(-p.x.signum(), 0.0)
+        } else {
+            Vec2::new(0.0, -p.y.signum())
+        };
+        return (motion.dot(normal) < 0.0).then_some(SweepHit { t: 0.0, normal });
+    }
     let d = -motion;
     let mut t_enter = f32::NEG_INFINITY;
     let mut t_exit = f32::INFINITY;
@@ -225,6 +237,18 @@ mod tests {
         assert!(sideways(-0.1).is_none());
         let hit = sideways(0.1).unwrap();
         assert_eq!((hit.t, hit.normal), (0.125, -Vec2::X));
+    }
+
+    #[test]
+    fn a_box_already_over_a_capped_end_is_held_as_a_circle_would_be() {
+        // The ramp's top end (1, 1) is inside the box; moving down-right onto it: t = 0.
+        let ramp = Segment::new(v(0.0, 0.0), v(1.0, 1.0));
+        let n = ramp_normal();
+        let hit = sweep_box_segment(v(1.1, 1.3), v(0.5, 0.5), v(0.5, -0.5), &ramp, n, [true; 2]);
+        assert_eq!(hit.map(|h| h.t), Some(0.0));
+        // Moving off it: no contact.
+        let away = sweep_box_segment(v(1.1, 1.3), v(0.5, 0.5), v(0.0, 0.5), &ramp, n, [true; 2]);
+        assert!(away.is_none());
     }
 
     #[test]
