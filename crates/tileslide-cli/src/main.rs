@@ -75,11 +75,37 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Bake a map into tileslide's binary format (`.tsm`), which loads without parsing
+    /// text: its tile set, size, origin and tiles, checksummed.
+    Bake {
+        #[command(flatten)]
+        map: map_file::MapArgs,
+        /// Where to write the baked map (conventionally `.tsm`).
+        #[arg(short, long, value_name = "OUT")]
+        output: PathBuf,
+    },
     /// Run a standard benchmark scene of BENCHMARKS.md against the peers in the same run.
     Bench {
         #[command(subcommand)]
         which: bench::BenchCommand,
     },
+}
+
+/// `tileslide bake`: loads the map, writes it baked, and says what it wrote.
+fn bake(map: &map_file::MapArgs, output: &std::path::Path) -> anyhow::Result<()> {
+    let (loaded, _) = map_file::load(map)?;
+    let bytes = tileslide::io::baked::to_bytes(&loaded);
+    std::fs::write(output, &bytes)
+        .map_err(|e| anyhow::anyhow!("{}: cannot write: {e}", output.display()))?;
+    println!(
+        "{}: {} × {} cells, {} tile shapes, {} bytes",
+        output.display(),
+        loaded.width(),
+        loaded.height(),
+        loaded.tile_set().len(),
+        bytes.len()
+    );
+    Ok(())
 }
 
 fn main() -> ExitCode {
@@ -95,6 +121,7 @@ fn main() -> ExitCode {
             json,
         } => raycast::run(&map, from.zip(to), rays, both_sides, json),
         Command::Simulate { scene, steps, json } => simulate::run(&scene, steps, json),
+        Command::Bake { map, output } => bake(&map, &output),
         Command::Bench { which } => bench::run(which),
     };
     match result {

@@ -6,12 +6,13 @@ use std::sync::Arc;
 use anyhow::{Result, bail};
 use clap::Args;
 use tileslide::TileMap;
-use tileslide::io::{ascii, replica};
+use tileslide::io::{ascii, baked, replica};
 
 /// The map arguments shared by every command that reads a map.
 #[derive(Args, Debug)]
 pub struct MapArgs {
-    /// The map: `.txt` ASCII map, or `.bin` Replica Island level (needs `--tileset`).
+    /// The map: `.txt` ASCII map, `.bin` Replica Island level (needs `--tileset`), or
+    /// `.tsm` baked map (`tileslide bake`).
     pub map: PathBuf,
     /// The tile set for maps that need one (Replica Island: `collision.bin`).
     #[arg(long, value_name = "FILE")]
@@ -26,6 +27,7 @@ pub struct MapArgs {
 pub enum MapFormat {
     Ascii,
     ReplicaIsland,
+    Baked,
 }
 
 impl MapFormat {
@@ -33,6 +35,7 @@ impl MapFormat {
         match self {
             MapFormat::Ascii => "ascii",
             MapFormat::ReplicaIsland => "replica-island",
+            MapFormat::Baked => "baked",
         }
     }
 
@@ -45,8 +48,9 @@ impl MapFormat {
         {
             Some("txt") => Ok(MapFormat::Ascii),
             Some("bin") => Ok(MapFormat::ReplicaIsland),
+            Some("tsm") => Ok(MapFormat::Baked),
             _ => bail!(
-                "{}: unknown map format (expected a .txt ASCII map or a .bin Replica Island level)",
+                "{}: unknown map format (expected a .txt ASCII map, a .bin Replica Island level or a .tsm baked map)",
                 path.display()
             ),
         }
@@ -81,6 +85,15 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
             };
             let set = replica::load_tile_set(tileset)?;
             replica::load_level(&args.map, Arc::new(set))?
+        }
+        MapFormat::Baked => {
+            if args.tileset.is_some() || args.cell.is_some() {
+                bail!(
+                    "{}: a baked map carries its own tile set and cell size; drop --tileset and --cell",
+                    args.map.display()
+                );
+            }
+            baked::load(&args.map)?
         }
     };
     Ok((map, format))

@@ -438,3 +438,49 @@ fn bench_broad_rejects_zero_circles_and_updates() {
         assert!(stderr(&o).contains(args[0]), "{}", stderr(&o));
     }
 }
+
+#[test]
+fn a_baked_map_answers_info_and_raycast_as_its_source_does() {
+    let source = scratch("bake_room.txt", ROOM);
+    let baked = source.with_extension("tsm");
+    let o = tileslide(&[
+        "bake",
+        source.to_str().unwrap(),
+        "-o",
+        baked.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains("bytes"), "{}", stdout(&o));
+    let ray = ["--from", "1.5,1.5", "--to", "9.5,2.5", "--json"];
+    let mut a = vec!["raycast", source.to_str().unwrap()];
+    a.extend(ray);
+    let mut b = vec!["raycast", baked.to_str().unwrap()];
+    b.extend(ray);
+    let (from_text, from_baked) = (tileslide(&a), tileslide(&b));
+    assert!(from_baked.status.success(), "{}", stderr(&from_baked));
+    assert_eq!(stdout(&from_text), stdout(&from_baked));
+    let info = tileslide(&["info", baked.to_str().unwrap(), "--json"]);
+    let v: Value = serde_json::from_str(stdout(&info).trim()).unwrap();
+    assert_eq!(v["format"], "baked");
+    // A corrupt baked file: an error naming the file and byte offset.
+    let mut bytes = std::fs::read(&baked).unwrap();
+    let last = bytes.len() - 1;
+    bytes[last] ^= 1;
+    let corrupt = source.with_extension("bad.tsm");
+    std::fs::write(&corrupt, &bytes).unwrap();
+    let o = tileslide(&["info", corrupt.to_str().unwrap()]);
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("bad.tsm") && err.contains("byte 32") && err.contains("checksum"),
+        "{err}"
+    );
+    // A baked map takes no --cell.
+    let o = tileslide(&["info", baked.to_str().unwrap(), "--cell", "2"]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("drop --tileset and --cell"),
+        "{}",
+        stderr(&o)
+    );
+}

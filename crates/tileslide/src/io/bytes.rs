@@ -60,6 +60,14 @@ impl<'a> ByteReader<'a> {
         Ok(i32::from_le_bytes(self.array(field)?))
     }
 
+    pub fn u32(&mut self, field: &'static str) -> Result<u32, LoadError> {
+        Ok(u32::from_le_bytes(self.array(field)?))
+    }
+
+    pub fn u64(&mut self, field: &'static str) -> Result<u64, LoadError> {
+        Ok(u64::from_le_bytes(self.array(field)?))
+    }
+
     pub fn f32(&mut self, field: &'static str) -> Result<f32, LoadError> {
         Ok(f32::from_le_bytes(self.array(field)?))
     }

@@ -2,6 +2,7 @@
 //! offset) and the cause; none panics or allocates from an unchecked size field.
 
 pub mod ascii;
+pub mod baked;
 mod bytes;
 mod error;
 pub mod replica;

@@ -151,8 +151,9 @@ impl TileShape {
         Ok(self)
     }
 
-    /// A shape from explicit segments with their own normals (normalised here). Exact
-    /// duplicates are kept once.
+    /// A shape from explicit segments with their own normals (normalised here, unless
+    /// already of unit length to four ulps: then kept as given). Exact duplicates are kept
+    /// once.
     pub fn from_segments(
         segments: impl IntoIterator<Item = TileSegment>,
     ) -> Result<Self, ShapeError> {
@@ -165,8 +166,14 @@ impl TileShape {
             if s.a == s.b {
                 return Err(ShapeError::ZeroLength { segment: i });
             }
-            // (Finite here, so `None` means the zero vector.)
-            s.normal = unit_normal(s.normal).ok_or(ShapeError::ZeroNormal { segment: i })?;
+            // A normal already of unit length (to four ulps) is kept as given, so that a
+            // shape rebuilt from its own segments (a baked map) is the same bit for bit;
+            // any other is normalised. (Finite here, so `None` means the zero vector.)
+            s.normal = if (s.normal.length_squared() - 1.0).abs() <= 4.0 * f32::EPSILON {
+                s.normal + Vec2::ZERO
+            } else {
+                unit_normal(s.normal).ok_or(ShapeError::ZeroNormal { segment: i })?
+            };
             if !out.contains(&s) {
                 if out.len() == MAX_SHAPE_SEGMENTS {
                     return Err(ShapeError::TooManySegments {
