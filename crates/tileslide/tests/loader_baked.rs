@@ -151,6 +151,11 @@ fn header_errors_name_the_field_and_offset() {
         "{text}"
     );
     assert_eq!(at, 8);
+    let mut reserved = good.clone();
+    reserved[13] = 1;
+    let (text, at) = error(&reserved);
+    assert!(text.contains("reserved"), "{text}");
+    assert_eq!(at, 12);
     let mut length = good.clone();
     length.push(0);
     let (text, at) = error(&length);

@@ -6,7 +6,7 @@
 //! offset  size  field
 //! 0       8     magic        "TSLDMAP" then 0x1A
 //! 8       4     version      u32 = 1
-//! 12      4     reserved     u32 = 0
+//! 12      4     reserved     u32 = 0 (checked)
 //! 16      8     payload_len  u64: bytes after the 32-byte header
 //! 24      8     checksum     u64: FNV-1a 64 of the payload
 //! 32      ...   payload:
@@ -142,7 +142,17 @@ pub fn parse(data: &[u8], path: impl AsRef<Path>) -> Result<TileMap, LoadError> 
             },
         ));
     }
-    r.u32("reserved")?;
+    let reserved = r.u32("reserved")?;
+    if reserved != 0 {
+        return Err(r.error_at(
+            12,
+            LoadErrorKind::BadSize {
+                field: "reserved",
+                value: reserved.into(),
+                reason: "must be 0 in version 1".into(),
+            },
+        ));
+    }
     let length = r.u64("payload_len")?;
     let checksum = r.u64("checksum")?;
     if length != r.remaining() as u64 {
