@@ -6,13 +6,14 @@ use std::sync::Arc;
 use anyhow::{Result, bail};
 use clap::Args;
 use tileslide::TileMap;
+use tileslide::io::tiled::{self, TiledOptions};
 use tileslide::io::{ascii, baked, replica};
 
 /// The map arguments shared by every command that reads a map.
 #[derive(Args, Debug)]
 pub struct MapArgs {
-    /// The map: `.txt` ASCII map, `.bin` Replica Island level (needs `--tileset`), or
-    /// `.tsm` baked map (`tileslide bake`).
+    /// The map: `.txt` ASCII map, `.bin` Replica Island level (needs `--tileset`), `.tsm`
+    /// baked map (`tileslide bake`), or `.tmx`/`.tmj` Tiled map (in Tiled's pixels, y down).
     pub map: PathBuf,
     /// The tile set for maps that need one (Replica Island: `collision.bin`).
     #[arg(long, value_name = "FILE")]
@@ -20,6 +21,10 @@ pub struct MapArgs {
     /// Cell size of an ASCII map (default 1).
     #[arg(long, value_name = "SIZE")]
     pub cell: Option<f32>,
+    /// The tile layer that collides in a Tiled map (default: the first tile layer with the
+    /// property `collision = true`, else the first tile layer).
+    #[arg(long, value_name = "NAME")]
+    pub layer: Option<String>,
 }
 
 /// The kind of map file, from its extension.
@@ -28,6 +33,8 @@ pub enum MapFormat {
     Ascii,
     ReplicaIsland,
     Baked,
+    TiledXml,
+    TiledJson,
 }
 
 impl MapFormat {
@@ -36,6 +43,8 @@ impl MapFormat {
             MapFormat::Ascii => "ascii",
             MapFormat::ReplicaIsland => "replica-island",
             MapFormat::Baked => "baked",
+            MapFormat::TiledXml => "tiled-tmx",
+            MapFormat::TiledJson => "tiled-tmj",
         }
     }
 
@@ -49,8 +58,10 @@ impl MapFormat {
             Some("txt") => Ok(MapFormat::Ascii),
             Some("bin") => Ok(MapFormat::ReplicaIsland),
             Some("tsm") => Ok(MapFormat::Baked),
+            Some("tmx") => Ok(MapFormat::TiledXml),
+            Some("tmj") => Ok(MapFormat::TiledJson),
             _ => bail!(
-                "{}: unknown map format (expected a .txt ASCII map, a .bin Replica Island level or a .tsm baked map)",
+                "{}: unknown map format (expected a .txt ASCII map, a .bin Replica Island level, a .tsm baked map or a .tmx/.tmj Tiled map)",
                 path.display()
             ),
         }
@@ -60,6 +71,13 @@ impl MapFormat {
 /// Loads the map the arguments name.
 pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
     let format = MapFormat::of(&args.map)?;
+    let tiled = matches!(format, MapFormat::TiledXml | MapFormat::TiledJson);
+    if args.layer.is_some() && !tiled {
+        bail!(
+            "{}: --layer chooses the collision layer of a Tiled map (.tmx, .tmj); drop it",
+            args.map.display()
+        );
+    }
     let map = match format {
         MapFormat::Ascii => {
             if args.tileset.is_some() {
@@ -94,6 +112,18 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
                 );
             }
             baked::load(&args.map)?
+        }
+        MapFormat::TiledXml | MapFormat::TiledJson => {
+            if args.tileset.is_some() || args.cell.is_some() {
+                bail!(
+                    "{}: a Tiled map names its own tile sets and cell size; drop --tileset and --cell",
+                    args.map.display()
+                );
+            }
+            let options = TiledOptions {
+                layer: args.layer.clone(),
+            };
+            tiled::load(&args.map, &options)?.map
         }
     };
     Ok((map, format))

@@ -3,24 +3,11 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 use serde_json::Value;
+use support::{stderr, stdout, tileslide};
 
-fn tileslide(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_tileslide"))
-        .args(args)
-        .output()
-        .expect("the tileslide binary runs")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+mod support;
 
 fn scratch(name: &str, contents: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("tileslide-cli-test-{}", std::process::id()));

@@ -27,7 +27,7 @@ use std::sync::Arc;
 
 use glam::Vec2;
 
-use super::error::read_file;
+use super::error::{as_text, read_file};
 use super::{LoadError, LoadErrorKind, Location};
 use crate::tiles::{
     MAX_CELLS, SegmentFlags, TileId, TileMap, TileSegment, TileSet, TileSetError, TileShape,
@@ -103,13 +103,7 @@ pub fn tile_set(cell: f32) -> Result<TileSet, TileSetError> {
 pub fn load(path: impl AsRef<Path>, cell: f32) -> Result<TileMap, LoadError> {
     let path = path.as_ref();
     let bytes = read_file(path)?;
-    let text = std::str::from_utf8(&bytes).map_err(|e| {
-        LoadError::new(
-            path,
-            Location::Byte(e.valid_up_to() as u64),
-            LoadErrorKind::NotText,
-        )
-    })?;
+    let text = as_text(&bytes, path)?;
     parse(text, path, cell)
 }
 

@@ -94,6 +94,10 @@ pub enum LoadErrorKind {
     /// A parameter given with the file is invalid.
     #[error("{0}")]
     Parameter(String),
+    /// The file's content is malformed or uses something not supported (a syntax error,
+    /// an unknown encoding, a hexagonal map): the message says what.
+    #[error("{0}")]
+    Invalid(String),
 }
 
 /// A load error: the file, where in it, and what is wrong.
@@ -126,4 +130,15 @@ impl LoadError {
 pub(crate) fn read_file(path: &std::path::Path) -> Result<Vec<u8>, LoadError> {
     std::fs::read(path)
         .map_err(|e| LoadError::new(path, Location::File, LoadErrorKind::Io(e.to_string())))
+}
+
+/// `bytes` as UTF-8 text, or an error naming `path` and the first byte that is not.
+pub(crate) fn as_text<'a>(bytes: &'a [u8], path: &std::path::Path) -> Result<&'a str, LoadError> {
+    std::str::from_utf8(bytes).map_err(|e| {
+        LoadError::new(
+            path,
+            Location::Byte(e.valid_up_to() as u64),
+            LoadErrorKind::NotText,
+        )
+    })
 }

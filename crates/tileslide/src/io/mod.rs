@@ -6,5 +6,7 @@ pub mod baked;
 mod bytes;
 mod error;
 pub mod replica;
+#[cfg(feature = "tiled")]
+pub mod tiled;
 
 pub use error::{LoadError, LoadErrorKind, Location};

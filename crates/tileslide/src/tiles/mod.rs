@@ -16,6 +16,7 @@ pub(crate) mod shape;
 pub(crate) mod store;
 mod temporary;
 mod tile_set;
+mod trace;
 
 pub use cell::{Cell, TileId};
 pub use flags::SegmentFlags;

@@ -77,6 +77,22 @@ pub enum ShapeError {
         /// Index of the second edge.
         second: usize,
     },
+    /// A pixel mask whose length is not its width times its height.
+    #[error("a {width} × {height} mask needs {} pixels, got {len}", u64::from(*width) * u64::from(*height))]
+    MaskSize {
+        /// The width given.
+        width: u32,
+        /// The height given.
+        height: u32,
+        /// The mask's length.
+        len: usize,
+    },
+    /// A tracing tolerance that is negative or not finite.
+    #[error("the tracing tolerance must be finite and not negative, got {tolerance}")]
+    BadTolerance {
+        /// The tolerance given.
+        tolerance: f32,
+    },
     /// More than [`MAX_SHAPE_SEGMENTS`] segments.
     #[error("the shape has {count} segments, more than the {MAX_SHAPE_SEGMENTS} a tile may have")]
     TooManySegments {

@@ -1,0 +1,211 @@
+//! The `tileslide` commands on Tiled maps: `info`, `raycast` and `bake` read the example
+//! `.tmx` and `.tmj` maps, and the two formats of one map give the same answers.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use std::path::{Path, PathBuf};
+
+use serde_json::Value;
+use support::{stderr, stdout, tileslide};
+
+mod support;
+
+fn example(name: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/maps")
+        .join(name)
+        .to_str()
+        .unwrap()
+        .to_owned()
+}
+
+fn scratch(name: &str, contents: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli_tiled");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, contents).unwrap();
+    path
+}
+
+/// `info --json`, without the fields that name the file and its format.
+fn info(map: &str) -> Value {
+    let o = tileslide(&["info", map, "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let mut v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let object = v.as_object_mut().unwrap();
+    object.remove("map");
+    object.remove("format");
+    v
+}
+
+/// Rays through the cave, in its pixels (y down), with what each must hit.
+const CAVE_RAYS: &str = "\
+# Down onto the floor at x = 40: y = 224.
+40,20,40,300
+# Down onto the one-way ledge (cells 14-17 of row 4): y = 64.
+232,20,232,200
+# Up through the ledge: it does not block; the ceiling does, at y = 16.
+232,100,232,0
+# Down onto the hill's left ramp: its slope at (184, 200).
+184,150,184,230
+# Right into the fence at x = 120.
+60,120,200,120
+# Down onto the spikes: the valley between their two tips, at (376, 204).
+376,150,376,300
+";
+
+#[test]
+fn info_is_the_same_for_the_tmx_and_tmj_of_a_map() {
+    for name in ["cave", "dungeon"] {
+        let tmx = info(&example(&format!("{name}.tmx")));
+        let tmj = info(&example(&format!("{name}.tmj")));
+        assert_eq!(tmx, tmj, "{name}");
+    }
+    let cave = info(&example("cave.tmx"));
+    assert_eq!(
+        (cave["width"].as_u64(), cave["height"].as_u64()),
+        (Some(30), Some(16))
+    );
+    assert_eq!(cave["cell_size"], serde_json::json!([16.0, 16.0]));
+    // The infinite dungeon: its chunks' bounding box, origin at the top-left chunk.
+    let dungeon = info(&example("dungeon.tmj"));
+    assert_eq!(dungeon["origin"], serde_json::json!([-256.0, -256.0]));
+    assert_eq!(
+        (dungeon["width"].as_u64(), dungeon["height"].as_u64()),
+        (Some(48), Some(32))
+    );
+}
+
+#[test]
+fn info_names_the_tiled_formats() {
+    for (file, format) in [("cave.tmx", "tiled-tmx"), ("cave.tmj", "tiled-tmj")] {
+        let o = tileslide(&["info", &example(file), "--json"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+        assert_eq!(v["format"], format);
+    }
+    let o = tileslide(&["info", &example("cave.tmx")]);
+    assert!(stdout(&o).contains("(tiled-tmx)") && stdout(&o).contains("30 × 16 cells of 16 × 16"));
+}
+
+#[test]
+fn raycast_gives_the_same_hits_on_both_formats() {
+    let rays = scratch("cave_rays.csv", CAVE_RAYS);
+    let run = |map: &str| {
+        let o = tileslide(&["raycast", map, "--rays", rays.to_str().unwrap(), "--json"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        stdout(&o)
+    };
+    let tmx = run(&example("cave.tmx"));
+    let tmj = run(&example("cave.tmj"));
+    assert_eq!(tmx, tmj);
+    let hits: Vec<Value> = tmx
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(hits.len(), 6);
+    let at = |i: usize| {
+        (
+            hits[i]["x"].as_f64().unwrap(),
+            hits[i]["y"].as_f64().unwrap(),
+        )
+    };
+    assert_eq!(at(0), (40.0, 224.0));
+    assert_eq!(
+        (hits[0]["nx"].as_f64(), hits[0]["ny"].as_f64()),
+        (Some(0.0), Some(-1.0))
+    );
+    assert_eq!(at(1), (232.0, 64.0));
+    assert_eq!(at(2), (232.0, 16.0));
+    assert_eq!(at(3), (184.0, 200.0));
+    assert_eq!(at(4), (120.0, 120.0));
+    assert_eq!(at(5), (376.0, 204.0));
+    assert!(hits.iter().all(|h| h["hit"] == true));
+    // The dungeon too.
+    let door = |map: &str| {
+        let o = tileslide(&[
+            "raycast", map, "--from", "200,-168", "--to", "300,-168", "--json",
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        stdout(&o)
+    };
+    let tmx = door(&example("dungeon.tmx"));
+    assert_eq!(tmx, door(&example("dungeon.tmj")));
+    let hit: Value = serde_json::from_str(tmx.trim()).unwrap();
+    assert_eq!(
+        (hit["x"].as_f64(), hit["tile"].as_u64()),
+        (Some(262.0), Some(9))
+    );
+}
+
+#[test]
+fn layer_chooses_the_collision_layer() {
+    // The background layer holds only moss, which blocks nothing.
+    let o = tileslide(&[
+        "raycast",
+        &example("cave.tmx"),
+        "--from",
+        "40,20",
+        "--to",
+        "40,300",
+        "--layer",
+        "background",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains("no hit"), "{}", stdout(&o));
+    let o = tileslide(&["info", &example("cave.tmj"), "--layer", "lava"]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("the map has no tile layer named \"lava\""),
+        "{}",
+        stderr(&o)
+    );
+    // --layer is for Tiled maps only, and Tiled maps refuse --cell and --tileset.
+    let o = tileslide(&["info", &example("cave.txt"), "--layer", "walls"]);
+    assert!(stderr(&o).contains("--layer chooses the collision layer of a Tiled map"));
+    let o = tileslide(&["info", &example("cave.tmx"), "--cell", "2"]);
+    assert!(
+        stderr(&o).contains("drop --tileset and --cell"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
+fn bake_reads_tiled_maps() {
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("cli_tiled")
+        .join("cave.tsm");
+    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
+    let o = tileslide(&["bake", &example("cave.tmx"), "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(info(out.to_str().unwrap()), info(&example("cave.tmx")));
+}
+
+#[test]
+fn a_broken_tiled_map_is_named_with_line_and_column() {
+    let map = scratch(
+        "broken.tmx",
+        "<map version=\"1.10\" orientation=\"isometric\" width=\"2\" height=\"1\" \
+         tilewidth=\"16\" tileheight=\"16\">\n</map>\n",
+    );
+    let o = tileslide(&["info", map.to_str().unwrap()]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains(&format!(
+            "{}:1:1: orientation \"isometric\" is not supported",
+            map.display()
+        )),
+        "{}",
+        stderr(&o)
+    );
+    let map = scratch(
+        "cut.tmj",
+        "{\n \"orientation\": \"orthogonal\",\n \"width\": 2,",
+    );
+    let o = tileslide(&["info", map.to_str().unwrap()]);
+    assert!(
+        stderr(&o).contains(&format!("{}:3:13: truncated JSON", map.display())),
+        "{}",
+        stderr(&o)
+    );
+}

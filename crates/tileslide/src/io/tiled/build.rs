@@ -1,0 +1,302 @@
+//! A [`Document`] (from either format) as a [`TiledMap`]: the collision layer's grid, one
+//! tile shape per (tile, flips) placed, and the object layers with their hit types.
+
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::sync::Arc;
+
+use glam::Vec2;
+
+use super::document::{Document, LayerCells, TileLayerDoc, TileSetDoc};
+use super::properties::Lookup;
+use super::{Flip, TileInfo, TiledMap, TiledOptions, invalid, shapes};
+use crate::io::{LoadError, LoadErrorKind, Location};
+use crate::tiles::{MAX_CELLS, TileId, TileMap, TileSet, TileShape};
+
+/// Builds the map; `path` is the map file, named by errors about its layers.
+pub(super) fn build(
+    doc: Document,
+    options: &TiledOptions,
+    path: &Path,
+) -> Result<TiledMap, LoadError> {
+    let index = collision_layer(&doc, options, path)?;
+    let layer = &doc.tile_layers[index];
+    let layer_error =
+        |message: String| invalid(path, layer.location, format!("{}: {message}", layer.label));
+    let grid = Grid::of(layer, doc.tile_size, path)?;
+    let tile_size = Vec2::new(doc.tile_size.0 as f32, doc.tile_size.1 as f32);
+
+    // The gids placed, checked; each becomes the tile id of its cells.
+    let mut tiles = vec![None; grid.width as usize * grid.height as usize];
+    // Each gid placed, with the first cell that holds it (for errors).
+    let mut placed = BTreeMap::new();
+    for (x, y, gid) in grid.cells(layer) {
+        if gid == 0 {
+            continue;
+        }
+        if gid & Flip::HEXAGONAL_120_BIT != 0 {
+            return Err(layer_error(format!(
+                "cell ({x}, {y}) has gid {gid:#010x} with the hexagonal 120° rotation bit \
+                 (0x10000000), which orthogonal maps do not use"
+            )));
+        }
+        let (col, row) = grid.cell_of(x, y);
+        tiles[row as usize * grid.width as usize + col as usize] = Some(TileId(gid));
+        placed.entry(gid).or_insert((x, y));
+    }
+
+    let mut set =
+        TileSet::new(tile_size).map_err(|e| invalid(path, Location::File, e.to_string()))?;
+    let mut infos = BTreeMap::new();
+    for (gid, (x, y)) in placed {
+        let at = |m: String| layer_error(format!("cell ({x}, {y}), gid {gid:#x}: {m}"));
+        let number = gid & Flip::GID_MASK;
+        let flip = Flip::from_gid(gid);
+        let tile_set = doc
+            .tile_sets
+            .iter()
+            .rev()
+            .find(|s| s.first_gid <= number)
+            .ok_or_else(|| at("no tile set holds this gid (it is below every first gid)".into()))?;
+        let local = number - tile_set.first_gid;
+        if local >= tile_set.tile_count && !tile_set.tiles.contains_key(&local) {
+            return Err(at(format!(
+                "tile set {:?} has {} tiles, so it has no tile {local}",
+                tile_set.name, tile_set.tile_count
+            )));
+        }
+        if tile_set.tile_size != doc.tile_size {
+            return Err(at(format!(
+                "tile set {:?} has {}×{} tiles but the map's grid is {}×{}: the collision \
+                 layer's tiles must match the grid",
+                tile_set.name,
+                tile_set.tile_size.0,
+                tile_set.tile_size.1,
+                doc.tile_size.0,
+                doc.tile_size.1
+            )));
+        }
+        if flip.diagonal && tile_size.x != tile_size.y {
+            return Err(at("only square tiles can be flipped diagonally".into()));
+        }
+        let shape = tile_shape(tile_set, local, flip, tile_size)?;
+        set.insert(TileId(gid), shape).map_err(|e| {
+            invalid(
+                &tile_set.file,
+                Location::File,
+                format!("tile set {:?}, tile {local}: {e}", tile_set.name),
+            )
+        })?;
+        let tile = tile_set.tiles.get(&local);
+        let hit_types = match tile {
+            Some(t) => Lookup::of(&t.properties).hit_types().map_err(|m| {
+                invalid(
+                    &tile_set.file,
+                    Location::File,
+                    format!("tile set {:?}, tile {local}: {m}", tile_set.name),
+                )
+            })?,
+            None => crate::HitTypes::NONE,
+        };
+        infos.insert(
+            TileId(gid),
+            TileInfo {
+                gid,
+                tile_set: tile_set.name.clone(),
+                local_id: local,
+                flip,
+                class: tile.map(|t| t.class.clone()).unwrap_or_default(),
+                properties: tile.map(|t| t.properties.clone()).unwrap_or_default(),
+                hit_types,
+            },
+        );
+    }
+
+    let map = TileMap::from_tiles(Arc::new(set), grid.width, grid.height, grid.origin, &tiles)
+        .map_err(|e| LoadError::new(path, layer.location, LoadErrorKind::Map(e)))?;
+
+    let mut object_layers = doc.object_layers;
+    for layer in &mut object_layers {
+        for object in &mut layer.objects {
+            object.hit_types = Lookup::of(&object.properties).hit_types().map_err(|m| {
+                invalid(
+                    path,
+                    Location::File,
+                    format!("object layer {:?}, object {}: {m}", layer.name, object.id),
+                )
+            })?;
+        }
+    }
+    Ok(TiledMap {
+        map,
+        collision_layer: layer.name.clone(),
+        tile_layers: doc.tile_layers.iter().map(|l| l.name.clone()).collect(),
+        object_layers,
+        properties: doc.properties,
+        tiles: infos,
+    })
+}
+
+/// The shape of tile `local` of `set` placed with `flip`.
+fn tile_shape(
+    set: &TileSetDoc,
+    local: u32,
+    flip: Flip,
+    size: Vec2,
+) -> Result<TileShape, LoadError> {
+    let error = |m: String| {
+        invalid(
+            &set.file,
+            Location::File,
+            format!("tile set {:?}, tile {local}: {m}", set.name),
+        )
+    };
+    let segments = match set.tiles.get(&local) {
+        Some(tile) => shapes::tile_segments(tile, size).map_err(error)?,
+        None => Vec::new(),
+    };
+    TileShape::from_segments(segments.into_iter().map(|s| flip.apply_segment(s, size)))
+        .map_err(|e| error(e.to_string()))
+}
+
+/// The index of the collision layer: the one named by the options, else the first with
+/// `collision = true`, else the first tile layer.
+fn collision_layer(
+    doc: &Document,
+    options: &TiledOptions,
+    path: &Path,
+) -> Result<usize, LoadError> {
+    let names = || {
+        doc.tile_layers
+            .iter()
+            .map(|l| format!("{:?}", l.name))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if let Some(name) = &options.layer {
+        return doc
+            .tile_layers
+            .iter()
+            .position(|l| &l.name == name)
+            .ok_or_else(|| {
+                invalid(
+                    path,
+                    Location::File,
+                    format!(
+                        "the map has no tile layer named {name:?} (its tile layers: {})",
+                        names()
+                    ),
+                )
+            });
+    }
+    for (i, layer) in doc.tile_layers.iter().enumerate() {
+        let collision = Lookup::of(&layer.properties)
+            .bool("collision")
+            .map_err(|m| invalid(path, layer.location, format!("{}: {m}", layer.label)))?;
+        if collision == Some(true) {
+            return Ok(i);
+        }
+    }
+    if doc.tile_layers.is_empty() {
+        return Err(invalid(path, Location::File, "the map has no tile layer"));
+    }
+    Ok(0)
+}
+
+/// The collision layer's grid: its size and where its cell (0, 0) is.
+struct Grid {
+    width: u32,
+    height: u32,
+    /// Tiled's cell coordinates of the map's cell (0, 0).
+    min: (i64, i64),
+    origin: Vec2,
+}
+
+impl Grid {
+    /// The grid of a finite layer, or the bounding box of an infinite layer's chunks,
+    /// refused before anything is allocated if it has more than [`MAX_CELLS`] cells.
+    fn of(layer: &TileLayerDoc, tile_size: (u32, u32), path: &Path) -> Result<Self, LoadError> {
+        let (min, max) = match &layer.cells {
+            LayerCells::Finite { width, height, .. } => {
+                ((0, 0), (i64::from(*width), i64::from(*height)))
+            }
+            LayerCells::Chunks(chunks) => {
+                let mut min = (i64::MAX, i64::MAX);
+                let mut max = (i64::MIN, i64::MIN);
+                for c in chunks {
+                    min = (min.0.min(c.x.into()), min.1.min(c.y.into()));
+                    max = (
+                        max.0.max(i64::from(c.x) + i64::from(c.width)),
+                        max.1.max(i64::from(c.y) + i64::from(c.height)),
+                    );
+                }
+                if chunks.is_empty() {
+                    return Err(invalid(
+                        path,
+                        layer.location,
+                        format!(
+                            "{}: the infinite layer has no chunks, so no cells",
+                            layer.label
+                        ),
+                    ));
+                }
+                (min, max)
+            }
+        };
+        let (width, height) = (max.0 - min.0, max.1 - min.1);
+        let cells = width.saturating_mul(height);
+        if width <= 0 || height <= 0 || cells as u64 > MAX_CELLS {
+            return Err(LoadError::new(
+                path,
+                layer.location,
+                LoadErrorKind::BadSize {
+                    field: "width × height",
+                    value: cells,
+                    reason: format!(
+                        "{}: the layer spans {width}×{height} cells, more than {MAX_CELLS}",
+                        layer.label
+                    ),
+                },
+            ));
+        }
+        let origin = Vec2::new(
+            (min.0 * i64::from(tile_size.0)) as f32,
+            (min.1 * i64::from(tile_size.1)) as f32,
+        ) + layer.offset;
+        Ok(Self {
+            width: width as u32,
+            height: height as u32,
+            min,
+            origin,
+        })
+    }
+
+    /// The map cell of Tiled's cell (x, y).
+    fn cell_of(&self, x: i64, y: i64) -> (u32, u32) {
+        ((x - self.min.0) as u32, (y - self.min.1) as u32)
+    }
+
+    /// Every cell of the layer with its gid, in Tiled's cell coordinates.
+    fn cells<'a>(&self, layer: &'a TileLayerDoc) -> Box<dyn Iterator<Item = (i64, i64, u32)> + 'a> {
+        match &layer.cells {
+            LayerCells::Finite { width, gids, .. } => {
+                let width = i64::from(*width);
+                Box::new(
+                    gids.iter()
+                        .enumerate()
+                        .map(move |(i, &g)| (i as i64 % width, i as i64 / width, g)),
+                )
+            }
+            LayerCells::Chunks(chunks) => Box::new(chunks.iter().flat_map(|c| {
+                let width = i64::from(c.width);
+                c.gids.iter().enumerate().map(move |(i, &g)| {
+                    (
+                        i64::from(c.x) + i as i64 % width,
+                        i64::from(c.y) + i as i64 / width,
+                        g,
+                    )
+                })
+            })),
+        }
+    }
+}

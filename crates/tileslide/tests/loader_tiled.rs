@@ -1,0 +1,970 @@
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+//! Proves the Tiled loader: every path (.tmx and .tmj, embedded and external .tsx/.tsj tile
+//! sets, several tile sets, finite and infinite maps, CSV and base64 with zlib or gzip,
+//! groups), the shapes of collision objects with hand-computed segments and normals, the
+//! flip bits (a ramp flipped every way), properties, object layers, and that every error
+//! names the file and where. Fixtures: `tests/tiled/` and the examples in `examples/maps/`.
+#![cfg(feature = "tiled")]
+
+use std::path::{Path, PathBuf};
+
+use tileslide::io::tiled::{
+    self, ELLIPSE_SEGMENTS, Flip, MAX_TILE_COUNT, ObjectShape, PropertyValue, TiledMap,
+    TiledOptions,
+};
+use tileslide::io::{LoadError, LoadErrorKind, Location};
+use tileslide::{
+    Cell, HitTypes, MAX_CELLS, Ray, RayFilter, SegmentFlags, TileId, TileMap, TileSegment, Vec2,
+};
+
+const H: u32 = Flip::HORIZONTAL_BIT;
+const V: u32 = Flip::VERTICAL_BIT;
+const D: u32 = Flip::DIAGONAL_BIT;
+
+fn v(x: f32, y: f32) -> Vec2 {
+    Vec2::new(x, y)
+}
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/tiled")
+        .join(name)
+}
+
+fn example(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/maps")
+        .join(name)
+}
+
+fn load(path: &Path) -> TiledMap {
+    tiled::load(path, &TiledOptions::default()).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn load_err(path: &Path) -> LoadError {
+    match tiled::load(path, &TiledOptions::default()) {
+        Ok(_) => panic!("{} loaded", path.display()),
+        Err(e) => e,
+    }
+}
+
+fn tmx_err(text: &str) -> LoadError {
+    match tiled::parse_tmx(text, fixture("inline.tmx"), &TiledOptions::default()) {
+        Ok(_) => panic!("the map loaded"),
+        Err(e) => e,
+    }
+}
+
+fn tmj_err(text: &str) -> LoadError {
+    match tiled::parse_tmj(text, fixture("inline.tmj"), &TiledOptions::default()) {
+        Ok(_) => panic!("the map loaded"),
+        Err(e) => e,
+    }
+}
+
+fn line_col(line: u32, column: u32) -> Location {
+    Location::LineColumn { line, column }
+}
+
+/// The line:column just past the end of `text`.
+fn end_of(text: &str) -> Location {
+    let line = text.matches('\n').count() as u32 + 1;
+    let last = text.rsplit('\n').next().unwrap_or("");
+    line_col(line, last.chars().count() as u32 + 1)
+}
+
+/// A scratch file under Cargo's per-target temporary directory, beside copies of the kit.
+fn scratch(name: &str, contents: &[u8]) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("loader_tiled");
+    std::fs::create_dir_all(&dir).unwrap();
+    // Tests run in parallel: each copy is written aside and renamed into place, so a test
+    // never reads a half-written kit.
+    for kit in ["kit.tsx", "kit.tsj"] {
+        let aside = dir.join(format!("{kit}.{name}.part"));
+        std::fs::copy(fixture(kit), &aside).unwrap();
+        std::fs::rename(&aside, dir.join(kit)).unwrap();
+    }
+    let path = dir.join(name);
+    std::fs::write(&path, contents).unwrap();
+    path
+}
+
+/// Asserts two maps are the same map: size, cells, tiles, shapes and every cell's active
+/// segments.
+fn assert_same_map(a: &TileMap, b: &TileMap) {
+    assert_eq!((a.width(), a.height()), (b.width(), b.height()));
+    assert_eq!(a.origin(), b.origin());
+    assert_eq!(a.cell_size(), b.cell_size());
+    assert_eq!(a.tile_set(), b.tile_set(), "tile shapes differ");
+    for row in 0..a.height() {
+        for col in 0..a.width() {
+            let cell = Cell::new(col, row);
+            assert_eq!(a.tile(cell), b.tile(cell), "tile of {cell}");
+            let sa: Vec<_> = a.active_segments(cell).collect();
+            let sb: Vec<_> = b.active_segments(cell).collect();
+            assert_eq!(sa, sb, "active segments of {cell}");
+        }
+    }
+    assert_eq!(a.active_segment_count(), b.active_segment_count());
+}
+
+fn assert_same_tiled(a: &TiledMap, b: &TiledMap) {
+    assert_same_map(&a.map, &b.map);
+    assert_eq!(a.collision_layer, b.collision_layer);
+    assert_eq!(a.tile_layers, b.tile_layers);
+    assert_eq!(a.object_layers, b.object_layers);
+    assert_eq!(a.properties, b.properties);
+    for (id, _) in a.map.tile_set().iter() {
+        assert_eq!(a.tile_info(id), b.tile_info(id), "tile info of {id}");
+    }
+}
+
+/// A shape's segments as (a, b, normal) with a before b, sorted: order-independent.
+fn outline(map: &TileMap, id: TileId) -> Vec<(Vec2, Vec2, Vec2, SegmentFlags)> {
+    let shape = map
+        .tile_set()
+        .shape(id)
+        .unwrap_or_else(|| panic!("no tile {id}"));
+    let mut out: Vec<_> = shape
+        .segments()
+        .iter()
+        .map(|s| {
+            let (a, b) = if (s.a.x, s.a.y) <= (s.b.x, s.b.y) {
+                (s.a, s.b)
+            } else {
+                (s.b, s.a)
+            };
+            (a, b, s.normal, s.flags)
+        })
+        .collect();
+    out.sort_by(|x, y| format!("{x:?}").cmp(&format!("{y:?}")));
+    out
+}
+
+fn solid(list: &[(Vec2, Vec2, Vec2)]) -> Vec<(Vec2, Vec2, Vec2, SegmentFlags)> {
+    let mut out: Vec<_> = list
+        .iter()
+        .map(|&(a, b, n)| {
+            let (a, b) = if (a.x, a.y) <= (b.x, b.y) {
+                (a, b)
+            } else {
+                (b, a)
+            };
+            (a, b, n, SegmentFlags::SOLID)
+        })
+        .collect();
+    out.sort_by(|x, y| format!("{x:?}").cmp(&format!("{y:?}")));
+    out
+}
+
+/// Every normal of a closed shape points out of it.
+fn assert_normals_point_out(map: &TileMap, id: TileId) {
+    let shape = map.tile_set().shape(id).unwrap();
+    for s in shape.segments() {
+        let mid = (s.a + s.b) * 0.5;
+        assert!(!shape.contains_point(mid + s.normal * 0.25), "{id}: {s:?}");
+        assert!(shape.contains_point(mid - s.normal * 0.25), "{id}: {s:?}");
+    }
+}
+
+// ------------------------------------------------------------------ both formats
+
+#[test]
+fn the_cave_in_tmx_and_tmj_is_the_same_map() {
+    let tmx = load(&example("cave.tmx"));
+    let tmj = load(&example("cave.tmj"));
+    assert_same_tiled(&tmx, &tmj);
+    assert_eq!((tmx.map.width(), tmx.map.height()), (30, 16));
+    assert_eq!(tmx.map.cell_size(), Vec2::splat(16.0));
+    assert_eq!(tmx.map.origin(), Vec2::ZERO);
+    assert_eq!(tmx.tile_layers, ["background", "walls"]);
+    assert_eq!(
+        tmx.properties["title"],
+        PropertyValue::String("The cave".into())
+    );
+    assert_eq!(tmx.properties["gravity"], PropertyValue::Float(9.8));
+}
+
+#[test]
+fn the_dungeon_in_tmx_and_tmj_is_the_same_map() {
+    // Infinite, chunks in base64+zlib (.tmx) and base64+gzip (.tmj), an external tile set
+    // and an embedded one, the layers inside a group.
+    let tmx = load(&example("dungeon.tmx"));
+    let tmj = load(&example("dungeon.tmj"));
+    assert_same_tiled(&tmx, &tmj);
+    assert_eq!(tmx.tile_layers, ["floor", "walls"]);
+    assert_eq!(tmx.collision_layer, "walls");
+}
+
+#[test]
+fn flips_in_tmx_tmj_and_tmj_with_a_tsx_tile_set_are_the_same_map() {
+    let tmx = load(&fixture("flips.tmx"));
+    let tmj = load(&fixture("flips.tmj"));
+    let mixed = load(&fixture("flips_tsx.tmj"));
+    assert_same_tiled(&tmx, &tmj);
+    assert_same_tiled(&tmx, &mixed);
+}
+
+// ------------------------------------------------------------------ grids
+
+#[test]
+fn an_infinite_map_covers_its_chunks_and_keeps_tileds_pixels() {
+    let dungeon = load(&example("dungeon.tmx"));
+    let map = &dungeon.map;
+    // Chunks from Tiled cell (-16, -16) to (32, 16): 48 × 32 cells, origin at the top-left
+    // chunk's corner in pixels.
+    assert_eq!((map.width(), map.height()), (48, 32));
+    assert_eq!(map.origin(), v(-256.0, -256.0));
+    // Tiled cell (-16, -16) is the top-left wall: map cell (0, 0), at pixel (-256, -256).
+    assert_eq!(map.tile(Cell::new(0, 0)), Some(TileId(1)));
+    assert!(map.is_point_solid(v(-250.0, -250.0)));
+    assert!(!map.is_point_solid(v(-230.0, -230.0)));
+    // The door in the middle wall (Tiled cell (16, -11)) is the embedded tile set's tile 0,
+    // gid 9; the rotated ones are gid 9 with D+H.
+    assert_eq!(map.tile(Cell::new(32, 5)), Some(TileId(9)));
+    let door = dungeon.tile_info(TileId(9)).unwrap();
+    assert_eq!((door.tile_set.as_str(), door.local_id), ("doors", 0));
+    assert_eq!(map.tile(Cell::new(24, 3)), Some(TileId(9 | D | H)));
+    // A vertical door: a 4-pixel slab across the cell at x = 6..10 of its cell, flag1 set.
+    // Cell (32, 5) spans x = 256..272, y = -176..-160 in pixels.
+    let ray = Ray::between(v(200.0, -168.0), v(300.0, -168.0));
+    let hit = map.cast_ray(ray, &RayFilter::default()).unwrap();
+    assert_eq!(hit.tile(), Some(TileId(9)));
+    assert_eq!((hit.point, hit.normal), (v(262.0, -168.0), v(-1.0, 0.0)));
+    assert_eq!(
+        hit.flags,
+        SegmentFlags::SOLID | SegmentFlags::user(1).unwrap()
+    );
+}
+
+#[test]
+fn the_collision_layer_is_named_or_flagged_or_the_first() {
+    // `walls` has collision = true; `background` comes first.
+    let cave = load(&example("cave.tmx"));
+    assert_eq!(cave.collision_layer, "walls");
+    let back = tiled::load(
+        example("cave.tmx"),
+        &TiledOptions::default().with_layer("background"),
+    )
+    .unwrap();
+    assert_eq!(back.collision_layer, "background");
+    // Moss only: tiles are placed but have no segments.
+    assert_eq!(back.map.tile(Cell::new(3, 2)), Some(TileId(7)));
+    assert_eq!(back.map.placed_segment_count(), 0);
+    // Without the property, the first tile layer.
+    let flips = load(&fixture("flips.tmx"));
+    assert_eq!(flips.collision_layer, "tiles");
+    // An unknown name lists the layers.
+    let e = tiled::load(
+        example("cave.tmj"),
+        &TiledOptions::default().with_layer("lava"),
+    )
+    .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "{}: the map has no tile layer named \"lava\" (its tile layers: \"background\", \"walls\")",
+            example("cave.tmj").display()
+        )
+    );
+}
+
+// ------------------------------------------------------------------ shapes
+
+#[test]
+fn the_caves_tiles_have_hand_computed_segments() {
+    let cave = load(&example("cave.tmx"));
+    let map = &cave.map;
+    let (n, e, s, w) = (v(0.0, -1.0), v(1.0, 0.0), v(0.0, 1.0), v(-1.0, 0.0));
+    // gid 1, the block: the tile's square.
+    assert_eq!(
+        outline(map, TileId(1)),
+        solid(&[
+            (v(0.0, 0.0), v(16.0, 0.0), n),
+            (v(16.0, 0.0), v(16.0, 16.0), e),
+            (v(0.0, 16.0), v(16.0, 16.0), s),
+            (v(0.0, 0.0), v(0.0, 16.0), w),
+        ])
+    );
+    // gid 3, the ledge: a 16×4 box with one_way on the tile keeps only its top, one-way.
+    assert_eq!(
+        outline(map, TileId(3)),
+        [(v(0.0, 0.0), v(16.0, 0.0), n, SegmentFlags::ONE_WAY)]
+    );
+    // In the world: the ledge at cells (14..18, 4) is at y = 64, facing up.
+    let ledge: Vec<_> = map.active_segments(Cell::new(14, 4)).collect();
+    assert_eq!(ledge.len(), 1);
+    assert_eq!(ledge[0].normal, n);
+    assert_eq!(ledge[0].segment.a.y, 64.0);
+    assert_eq!(ledge[0].flags, SegmentFlags::ONE_WAY);
+    // gid 4, the half block: the bottom half.
+    assert_eq!(
+        outline(map, TileId(4)),
+        solid(&[
+            (v(0.0, 8.0), v(16.0, 8.0), n),
+            (v(16.0, 8.0), v(16.0, 16.0), e),
+            (v(0.0, 16.0), v(16.0, 16.0), s),
+            (v(0.0, 8.0), v(0.0, 16.0), w),
+        ])
+    );
+    // gid 5, spikes: a zigzag polygon with user bit 0, and DEATH as the tile's hit type.
+    let spikes = map.tile_set().shape(TileId(5)).unwrap();
+    assert_eq!(spikes.segments().len(), 5);
+    let hazard = SegmentFlags::SOLID | SegmentFlags::user(0).unwrap();
+    assert!(spikes.segments().iter().all(|s| s.flags == hazard));
+    let info = cave.tile_info(TileId(5)).unwrap();
+    assert_eq!(info.hit_types, HitTypes::DEATH);
+    assert_eq!(info.class, "hazard");
+    assert_eq!(
+        info.properties["name"],
+        PropertyValue::String("spikes".into())
+    );
+    assert_normals_point_out(map, TileId(5));
+    // gid 6, the boulder: an ellipse of ELLIPSE_SEGMENTS corners on the inscribed circle.
+    let boulder = map.tile_set().shape(TileId(6)).unwrap();
+    assert_eq!(boulder.segments().len(), ELLIPSE_SEGMENTS);
+    assert_eq!(boulder.segments()[0].a, v(16.0, 8.0));
+    for seg in boulder.segments() {
+        assert!((seg.a.distance(v(8.0, 8.0)) - 8.0).abs() < 1e-4);
+    }
+    assert_normals_point_out(map, TileId(6));
+    // gid 8, the fence: a polyline down the middle is two solid segments back to back.
+    assert_eq!(
+        outline(map, TileId(8)),
+        solid(&[
+            (v(8.0, 0.0), v(8.0, 16.0), e),
+            (v(8.0, 0.0), v(8.0, 16.0), w),
+        ])
+    );
+}
+
+#[test]
+fn the_kits_shapes_have_hand_computed_segments() {
+    let kit = load(&fixture("flips.tmx"));
+    let map = &kit.map;
+    // gid 3: a one-way roof polyline (0,8)-(8,4)-(16,8): both edges face up.
+    let roof = map.tile_set().shape(TileId(3)).unwrap().segments().to_vec();
+    let k = 1.0 / 5f32.sqrt();
+    assert_eq!(roof.len(), 2);
+    assert_eq!((roof[0].a, roof[0].b), (v(0.0, 8.0), v(8.0, 4.0)));
+    assert!(roof[0].normal.distance(v(-k, -2.0 * k)) < 1e-6);
+    assert_eq!((roof[1].a, roof[1].b), (v(8.0, 4.0), v(16.0, 8.0)));
+    assert!(roof[1].normal.distance(v(k, -2.0 * k)) < 1e-6);
+    assert!(roof.iter().all(|s| s.flags == SegmentFlags::ONE_WAY));
+    // gid 4: a one-way wall facing left (one_way_side on the tile).
+    assert_eq!(
+        map.tile_set().shape(TileId(4)).unwrap().segments(),
+        [TileSegment::new(
+            v(4.0, 0.0),
+            v(4.0, 16.0),
+            v(-1.0, 0.0),
+            SegmentFlags::ONE_WAY
+        )]
+    );
+    // gid 5: an 8×4 box at (8,0) turned 90° clockwise about its corner: (4,0)-(8,8).
+    let (n, e, s, w) = (v(0.0, -1.0), v(1.0, 0.0), v(0.0, 1.0), v(-1.0, 0.0));
+    assert_eq!(
+        outline(map, TileId(5)),
+        solid(&[
+            (v(4.0, 0.0), v(8.0, 0.0), n),
+            (v(8.0, 0.0), v(8.0, 8.0), e),
+            (v(4.0, 8.0), v(8.0, 8.0), s),
+            (v(4.0, 0.0), v(4.0, 8.0), w),
+        ])
+    );
+    // gid 6: a 16×8 capsule at (0,4): two half circles of ELLIPSE_SEGMENTS / 2 segments
+    // and two straight sides, all inside its box.
+    let capsule = map.tile_set().shape(TileId(6)).unwrap();
+    assert_eq!(capsule.segments().len(), ELLIPSE_SEGMENTS + 2);
+    assert!(capsule.contains_point(v(8.0, 8.0)) && !capsule.contains_point(v(8.0, 2.0)));
+    assert_normals_point_out(map, TileId(6));
+    // gid 7: user bits from the tile (flag2, flag5), the right object turning flag5 off.
+    let crate_tile = map.tile_set().shape(TileId(7)).unwrap();
+    let (u2, u5) = (
+        SegmentFlags::user(2).unwrap(),
+        SegmentFlags::user(5).unwrap(),
+    );
+    let left = &crate_tile.segments()[..4];
+    let right = &crate_tile.segments()[4..];
+    assert!(
+        left.iter()
+            .all(|s| s.flags == SegmentFlags::SOLID | u2 | u5)
+    );
+    assert!(right.iter().all(|s| s.flags == SegmentFlags::SOLID | u2));
+    assert_eq!(kit.tile_info(TileId(7)).unwrap().class, "crate");
+    // gid 8: no segments, but its properties and hit types.
+    let coin = kit.tile_info(TileId(8)).unwrap();
+    assert!(
+        map.tile_set()
+            .shape(TileId(8))
+            .unwrap()
+            .segments()
+            .is_empty()
+    );
+    assert_eq!(coin.hit_types, HitTypes::COLLECT);
+    assert_eq!(coin.properties["value"], PropertyValue::Int(5));
+}
+
+#[test]
+fn a_ramp_flipped_every_way() {
+    // The ramp: solid below the diagonal from (16,0) to (0,16); its slope faces up-left.
+    //
+    //   none        H           V           H+V
+    //   . . /|      |\ . .      |‾‾‾‾/      \‾‾‾‾|
+    //   . / #|      |# \ .      |# /          \ #|
+    //   /####|      |####\      |/              \|
+    //
+    // The diagonal flip swaps x and y, which leaves this triangle as it is, so D, D+H (90°
+    // clockwise), D+V (90° anticlockwise) and D+H+V give the four outlines again.
+    let flips = load(&fixture("flips.tmx"));
+    let map = &flips.map;
+    let k = std::f32::consts::FRAC_1_SQRT_2;
+    let (n, e, s, w) = (v(0.0, -1.0), v(1.0, 0.0), v(0.0, 1.0), v(-1.0, 0.0));
+    let (tl, tr, bl, br) = (v(0.0, 0.0), v(16.0, 0.0), v(0.0, 16.0), v(16.0, 16.0));
+    let plain = solid(&[(bl, br, s), (tr, br, e), (bl, tr, v(-k, -k))]);
+    let h = solid(&[(bl, br, s), (tl, bl, w), (tl, br, v(k, -k))]);
+    let vert = solid(&[(tl, tr, n), (tr, br, e), (tl, br, v(-k, k))]);
+    let hv = solid(&[(tl, tr, n), (tl, bl, w), (bl, tr, v(k, k))]);
+    for (col, bits, want) in [
+        (0, 0, &plain),
+        (1, H, &h),
+        (2, V, &vert),
+        (3, H | V, &hv),
+        (4, D, &plain),
+        (5, D | H, &h),
+        (6, D | V, &vert),
+        (7, D | H | V, &hv),
+    ] {
+        let id = TileId(1 | bits);
+        assert_eq!(map.tile(Cell::new(col, 0)), Some(id), "column {col}");
+        assert_eq!(&outline(map, id), want, "ramp with bits {bits:#x}");
+        assert_normals_point_out(map, id);
+        let info = flips.tile_info(id).unwrap();
+        assert_eq!((info.local_id, info.flip), (0, Flip::from_gid(bits)));
+    }
+    // A shape the diagonal flip does change: the bottom half block.
+    //   none: bottom half; D: right half; D+H (90° cw): left half; D+V (90° ccw): right half.
+    let half = |x0: f32, y0: f32, x1: f32, y1: f32| {
+        solid(&[
+            (v(x0, y0), v(x1, y0), n),
+            (v(x1, y0), v(x1, y1), e),
+            (v(x0, y1), v(x1, y1), s),
+            (v(x0, y0), v(x0, y1), w),
+        ])
+    };
+    assert_eq!(outline(map, TileId(2)), half(0.0, 8.0, 16.0, 16.0));
+    assert_eq!(outline(map, TileId(2 | D)), half(8.0, 0.0, 16.0, 16.0));
+    assert_eq!(outline(map, TileId(2 | D | H)), half(0.0, 0.0, 8.0, 16.0));
+    assert_eq!(outline(map, TileId(2 | D | V)), half(8.0, 0.0, 16.0, 16.0));
+}
+
+#[test]
+fn a_ray_meets_a_flipped_ramps_slope_from_its_open_side_only() {
+    let flips = load(&fixture("flips.tmx"));
+    // Cell (1, 0): the ramp flipped H, its slope from (16,0) to (32,16) facing up-right.
+    let down = Ray::between(v(28.0, -10.0), v(28.0, 30.0));
+    let hit = flips.map.cast_ray(down, &RayFilter::default()).unwrap();
+    assert_eq!(hit.point, v(28.0, 12.0));
+    let k = std::f32::consts::FRAC_1_SQRT_2;
+    assert!(hit.normal.distance(v(k, -k)) < 1e-6);
+}
+
+// ------------------------------------------------------------------ objects
+
+#[test]
+fn object_layers_come_with_shapes_properties_and_hit_types() {
+    let cave = load(&example("cave.tmx"));
+    let spawns = cave.object_layer("spawns").unwrap();
+    let player = spawns.object("player").unwrap();
+    assert_eq!((player.id, player.class.as_str()), (1, "spawn"));
+    assert_eq!(
+        (player.position, &player.shape),
+        (v(40.0, 200.0), &ObjectShape::Point)
+    );
+    assert_eq!(spawns.object("bat").unwrap().hit_types, HitTypes::HIT);
+    let boulder = spawns.object("boulder").unwrap();
+    assert_eq!(boulder.gid, Some(6));
+    assert_eq!(
+        (boulder.position, boulder.size),
+        (v(304.0, 224.0), v(16.0, 16.0))
+    );
+    let regions = cave.object_layer("regions").unwrap();
+    let exit = regions.object("exit").unwrap();
+    assert_eq!(
+        (exit.shape.clone(), exit.size),
+        (ObjectShape::Rectangle, v(16.0, 48.0))
+    );
+    assert_eq!(
+        exit.properties["target"],
+        PropertyValue::String("dungeon.tmx".into())
+    );
+    assert_eq!(regions.object("pool").unwrap().shape, ObjectShape::Ellipse);
+    let danger = regions.object("danger").unwrap();
+    assert_eq!(danger.hit_types, HitTypes::DEATH | HitTypes::HIT);
+    assert_eq!(
+        danger.shape,
+        ObjectShape::Polygon(vec![
+            v(0.0, 0.0),
+            v(32.0, 0.0),
+            v(40.0, 24.0),
+            v(-8.0, 24.0)
+        ])
+    );
+    assert!(matches!(
+        &regions.object("bat_path").unwrap().shape,
+        ObjectShape::Polyline(p) if p.len() == 3
+    ));
+    // The dungeon's: a tile object of the embedded tile set keeps its gid.
+    let dungeon = load(&example("dungeon.tmj"));
+    let actors = dungeon.object_layer("actors").unwrap();
+    assert_eq!(actors.object("chest").unwrap().gid, Some(10));
+    assert_eq!(actors.object("chest").unwrap().hit_types, HitTypes::COLLECT);
+    assert_eq!(
+        actors.object("ghost").unwrap().hit_types,
+        HitTypes::HIT | HitTypes::POSSESS
+    );
+    assert_eq!(
+        actors.object("skeleton").unwrap().properties["speed"],
+        PropertyValue::Float(1.5)
+    );
+}
+
+// ------------------------------------------------------------------ queries on the cave
+
+#[test]
+fn rays_and_circles_behave_in_the_example_cave() {
+    let cave = load(&example("cave.tmj"));
+    let map = &cave.map;
+    let filter = RayFilter::default();
+    // Down onto the one-way ledge (cells 14..18, row 4): stops on its top at y = 64.
+    let hit = map
+        .cast_ray(Ray::between(v(232.0, 20.0), v(232.0, 200.0)), &filter)
+        .unwrap();
+    assert_eq!((hit.point.y, hit.normal), (64.0, v(0.0, -1.0)));
+    assert!(hit.flags.contains(SegmentFlags::ONE_WAY));
+    // Up through it from below: the ledge does not block; the ceiling does, at y = 16.
+    let hit = map
+        .cast_ray(Ray::between(v(232.0, 100.0), v(232.0, 0.0)), &filter)
+        .unwrap();
+    assert_eq!((hit.point.y, hit.normal), (16.0, v(0.0, 1.0)));
+    // Down onto the hill's left ramp at (11, 12): its slope faces up-left.
+    let hit = map
+        .cast_ray(Ray::between(v(184.0, 150.0), v(184.0, 230.0)), &filter)
+        .unwrap();
+    assert_eq!(hit.point, v(184.0, 200.0));
+    assert!(hit.normal.x < 0.0 && hit.normal.y < 0.0);
+    // Across the fence at x = 120 (rows 6-8), from either side.
+    for (from, to, x) in [(60.0, 200.0, 120.0), (200.0, 60.0, 120.0)] {
+        let hit = map
+            .cast_ray(Ray::between(v(from, 120.0), v(to, 120.0)), &filter)
+            .unwrap();
+        assert_eq!(hit.point.x, x);
+    }
+    // A circle of radius 6 dropped at x = 40 lands on the floor (y = 224) at y = 218.
+    let hit = map
+        .cast_circle(v(40.0, 40.0), 6.0, v(0.0, 300.0), &filter)
+        .unwrap();
+    assert!((hit.center.y - 218.0).abs() < 1e-3, "{hit:?}");
+    // Points: inside the floor and a block, not in the air.
+    assert!(map.is_point_solid(v(100.0, 230.0)));
+    assert!(!map.is_point_solid(v(100.0, 100.0)));
+}
+
+// ------------------------------------------------------------------ encodings
+
+const TWO_CELLS: &str = r#"<map version="1.10" orientation="orthogonal" width="2" height="1" tilewidth="16" tileheight="16">
+ <tileset firstgid="1" source="kit.tsx"/>
+ <layer name="l" width="2" height="1">
+  DATA
+ </layer>
+</map>"#;
+
+fn two_cells(data: &str) -> String {
+    TWO_CELLS.replace("DATA", data)
+}
+
+#[test]
+fn base64_layers_plain_zlib_and_gzip_decode_alike() {
+    // gids [2, 0x80000001]: the half block, and the ramp flipped H.
+    let datas = [
+        r#"<data encoding="csv">2,2147483649</data>"#,
+        r#"<data encoding="base64">AgAAAAEAAIA=</data>"#,
+        r#"<data encoding="base64" compression="zlib">eJxjYmBgYGRgaAAAAJwAhA==</data>"#,
+        r#"<data encoding="base64" compression="gzip">H4sIAAAAAAACA2NiYGBgZGBoAABRPANyCAAAAA==</data>"#,
+    ];
+    let path = scratch("encodings.tmx", b"");
+    for data in datas {
+        let map = tiled::parse_tmx(&two_cells(data), &path, &TiledOptions::default())
+            .unwrap_or_else(|e| panic!("{data}: {e}"));
+        assert_eq!(map.map.tile(Cell::new(0, 0)), Some(TileId(2)), "{data}");
+        assert_eq!(map.map.tile(Cell::new(1, 0)), Some(TileId(1 | H)), "{data}");
+    }
+}
+
+#[cfg(not(feature = "tiled-zstd"))]
+#[test]
+fn zstd_without_its_feature_is_a_clear_error() {
+    let path = scratch("zstd.tmx", b"");
+    let text = two_cells(r#"<data encoding="base64" compression="zstd">AAAA</data>"#);
+    let e = tiled::parse_tmx(&text, &path, &TiledOptions::default()).unwrap_err();
+    assert_eq!(e.location, line_col(4, 3));
+    assert!(e.to_string().contains("`tiled-zstd` cargo feature"), "{e}");
+}
+
+// ------------------------------------------------------------------ errors
+
+#[test]
+fn truncated_xml_names_the_end_and_the_open_element() {
+    let text = std::fs::read_to_string(example("cave.tmx")).unwrap();
+    let cut = &text[..text.find("<objectgroup").unwrap() + 40];
+    let e = tmx_err(cut);
+    assert_eq!(e.location, end_of(cut));
+    assert!(
+        e.to_string().contains("truncated") || e.to_string().contains("malformed"),
+        "{e}"
+    );
+    // Cut between elements: the open element is named with where it was opened.
+    let cut = &text[..text.find("</layer>").unwrap()];
+    let e = tmx_err(cut);
+    assert_eq!(e.location, end_of(cut));
+    assert!(
+        e.to_string()
+            .contains("the file ends inside <layer> (opened at 8:2): truncated XML"),
+        "{e}"
+    );
+    assert!(
+        e.to_string()
+            .starts_with(&format!("{}:", fixture("inline.tmx").display()))
+    );
+}
+
+#[test]
+fn malformed_xml_is_named_at_its_line_and_column() {
+    let e = tmx_err(&two_cells(r#"<data encoding="csv">1,2</date>"#));
+    assert!(
+        matches!(e.location, Location::LineColumn { line: 4, .. }),
+        "{e}"
+    );
+    assert!(e.to_string().contains("malformed XML"), "{e}");
+}
+
+#[test]
+fn truncated_and_malformed_json_name_line_and_column() {
+    let text = std::fs::read_to_string(example("cave.tmj")).unwrap();
+    let cut = &text[..text.len() / 2];
+    let e = tmj_err(cut);
+    assert_eq!(e.location, end_of(cut));
+    assert!(e.to_string().contains("truncated JSON"), "{e}");
+    let e = tmj_err("{\n  \"orientation\": \"orthogonal\",\n  \"tilewidth\": 16 16\n}");
+    assert_eq!(e.location, line_col(3, 19));
+    assert!(e.to_string().contains("malformed JSON"), "{e}");
+    // A value of the wrong type is named with the field and position.
+    let e = tmj_err("{\"orientation\": \"orthogonal\", \"tilewidth\": \"16\", \"tileheight\": 16}");
+    assert!(
+        e.to_string().contains("tilewidth") || e.to_string().contains("u32"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_missing_external_tile_set_is_named_with_its_path() {
+    let text = two_cells(r#"<data encoding="csv">1,1</data>"#).replace("kit.tsx", "missing.tsx");
+    let e = tmx_err(&text);
+    let missing = fixture("missing.tsx");
+    assert_eq!(e.path, fixture("inline.tmx"));
+    assert_eq!(e.location, line_col(2, 2));
+    assert!(
+        e.to_string().contains(&format!(
+            "cannot read the external tile set {}",
+            missing.display()
+        )),
+        "{e}"
+    );
+    let tmj = std::fs::read_to_string(fixture("flips.tmj"))
+        .unwrap()
+        .replace("kit.tsj", "missing.tsj");
+    let e = tmj_err(&tmj);
+    assert!(
+        e.to_string().contains(&format!(
+            "tilesets[0]: cannot read the external tile set {}",
+            fixture("missing.tsj").display()
+        )),
+        "{e}"
+    );
+    // A .tsx named by a .tmj: the same message.
+    let e = tmj_err(&tmj.replace("missing.tsj", "missing.tsx"));
+    assert!(e.to_string().contains("missing.tsx"), "{e}");
+}
+
+#[test]
+fn a_broken_external_tile_set_is_named_at_its_own_line() {
+    let kit = std::fs::read_to_string(fixture("kit.tsx")).unwrap();
+    let cut = &kit[..kit.find("<tile id=\"3\"").unwrap()];
+    let tsx = scratch("broken.tsx", cut.as_bytes());
+    let map = two_cells(r#"<data encoding="csv">1,1</data>"#).replace("kit.tsx", "broken.tsx");
+    let path = scratch("uses_broken.tmx", map.as_bytes());
+    let e = load_err(&path);
+    assert_eq!(e.path, tsx);
+    assert_eq!(e.location, end_of(cut));
+    assert!(e.to_string().contains("truncated XML"), "{e}");
+    // An absurd tilecount is refused before the tiled crate reserves room for it.
+    let huge = kit.replace("tilecount=\"8\"", "tilecount=\"4000000000\"");
+    scratch("huge.tsx", huge.as_bytes());
+    let map = two_cells(r#"<data encoding="csv">1,1</data>"#).replace("kit.tsx", "huge.tsx");
+    let e = load_err(&scratch("uses_huge.tmx", map.as_bytes()));
+    assert!(
+        matches!(
+            e.kind,
+            LoadErrorKind::BadSize {
+                field: "tilecount",
+                value: 4_000_000_000,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert_eq!(e.location, line_col(3, 1));
+    assert!(
+        e.to_string()
+            .contains(&format!("more than {MAX_TILE_COUNT} tiles"))
+    );
+}
+
+#[test]
+fn an_unknown_encoding_is_named_at_its_data_element() {
+    let e = tmx_err(&two_cells(r#"<data encoding="base32">AAAA</data>"#));
+    assert_eq!(e.location, line_col(4, 3));
+    assert!(
+        e.to_string()
+            .contains("unknown tile data encoding: encoding \"base32\""),
+        "{e}"
+    );
+    let e = tmx_err(&two_cells(
+        r#"<data encoding="base64" compression="lzma">AAAA</data>"#,
+    ));
+    assert!(e.to_string().contains("compression \"lzma\""), "{e}");
+    // The deprecated XML <tile> elements.
+    let e = tmx_err(&two_cells(r#"<data><tile gid="1"/><tile gid="1"/></data>"#));
+    assert!(e.to_string().contains("XML <tile> elements"), "{e}");
+    let tmj = std::fs::read_to_string(fixture("flips.tmj")).unwrap();
+    let tmj = tmj.replace(
+        "\"type\": \"tilelayer\",",
+        "\"type\": \"tilelayer\", \"encoding\": \"base64\", \"compression\": \"lzma\",",
+    );
+    let tmj = tmj.replacen("\"data\": [", "\"data\": \"AAAA\", \"unused\": [", 1);
+    let e = tmj_err(&tmj);
+    assert!(
+        e.to_string()
+            .contains("layers[0] (\"tiles\"): data: unknown tile data encoding"),
+        "{e}"
+    );
+}
+
+#[test]
+fn absurd_sizes_are_refused_before_allocating() {
+    let big = r#"<map version="1.10" orientation="orthogonal" width="100000" height="100000" tilewidth="16" tileheight="16">
+</map>"#;
+    let e = tmx_err(big);
+    assert_eq!(e.location, line_col(1, 1));
+    assert!(
+        matches!(
+            e.kind,
+            LoadErrorKind::BadSize {
+                field: "width × height",
+                value: 10_000_000_000,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    // A layer that says it is huge but holds two gids.
+    let text = TWO_CELLS
+        .replace("DATA", r#"<data encoding="csv">1,1</data>"#)
+        .replace(
+            "<layer name=\"l\" width=\"2\"",
+            "<layer name=\"l\" width=\"4000000000\"",
+        );
+    let e = tmx_err(&text);
+    assert_eq!(e.location, line_col(3, 2));
+    assert!(matches!(e.kind, LoadErrorKind::BadSize { .. }), "{e}");
+    // Layer data that does not match its size is refused (not read past its end).
+    let e = tmx_err(&two_cells(r#"<data encoding="csv">1</data>"#));
+    assert!(e.to_string().contains("holds 1 gids, expected 2"), "{e}");
+    // Infinite chunks spread over more than MAX_CELLS cells.
+    let chunks = r#"<map version="1.10" orientation="orthogonal" width="1" height="1" tilewidth="16" tileheight="16" infinite="1">
+ <tileset firstgid="1" source="kit.tsx"/>
+ <layer name="l" width="1" height="1"><data encoding="csv">
+  <chunk x="-100000" y="0" width="1" height="1">1</chunk>
+  <chunk x="100000" y="100000" width="1" height="1">1</chunk>
+ </data></layer>
+</map>"#;
+    let e = tmx_err(chunks);
+    assert!(
+        matches!(e.kind, LoadErrorKind::BadSize { ref reason, .. } if reason.contains(&MAX_CELLS.to_string())),
+        "{e}"
+    );
+    assert_eq!(e.location, line_col(3, 2));
+    // The same in JSON.
+    let e = tmj_err(
+        r#"{"orientation": "orthogonal", "width": 100000, "height": 100000,
+            "tilewidth": 16, "tileheight": 16}"#,
+    );
+    assert!(
+        matches!(
+            e.kind,
+            LoadErrorKind::BadSize {
+                field: "width × height",
+                ..
+            }
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn the_hexagonal_rotation_bit_is_refused() {
+    let e = tmx_err(&two_cells(r#"<data encoding="csv">1,268435457</data>"#));
+    assert_eq!(e.location, line_col(3, 2));
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "{}:3:2: layer \"l\": cell (1, 0) has gid 0x10000001 with the hexagonal 120° \
+             rotation bit (0x10000000), which orthogonal maps do not use",
+            fixture("inline.tmx").display()
+        )
+    );
+    let tmj = std::fs::read_to_string(fixture("flips.tmj")).unwrap();
+    let first = tmj.find("\"data\": [").unwrap()
+        + tmj[tmj.find("\"data\": [").unwrap()..].find('1').unwrap();
+    let tmj = format!("{}268435457{}", &tmj[..first], &tmj[first + 1..]);
+    let e = tmj_err(&tmj);
+    assert!(
+        e.to_string()
+            .contains("layers[0] (\"tiles\"): cell (0, 0) has gid 0x10000001"),
+        "{e}"
+    );
+}
+
+#[test]
+fn other_orientations_are_refused() {
+    for orientation in ["isometric", "staggered", "hexagonal"] {
+        let e = tmx_err(
+            &TWO_CELLS
+                .replace("orthogonal", orientation)
+                .replace("DATA", r#"<data encoding="csv">1,1</data>"#),
+        );
+        assert_eq!(e.location, line_col(1, 1));
+        assert!(
+            e.to_string().contains(&format!(
+                "orientation \"{orientation}\" is not supported: tileslide loads orthogonal maps only"
+            )),
+            "{e}"
+        );
+    }
+    let tmj = std::fs::read_to_string(fixture("flips.tmj"))
+        .unwrap()
+        .replace("orthogonal", "isometric");
+    assert!(
+        tmj_err(&tmj)
+            .to_string()
+            .contains("\"isometric\" is not supported")
+    );
+}
+
+#[test]
+fn gids_outside_every_tile_set_are_named() {
+    let e = tmx_err(&two_cells(r#"<data encoding="csv">1,99</data>"#));
+    assert!(
+        e.to_string()
+            .contains("cell (1, 0), gid 0x63: tile set \"kit\" has 8 tiles, so it has no tile 98"),
+        "{e}"
+    );
+    let text =
+        two_cells(r#"<data encoding="csv">1,1</data>"#).replace("firstgid=\"1\"", "firstgid=\"5\"");
+    let e = tmx_err(&text);
+    assert!(e.to_string().contains("below every first gid"), "{e}");
+}
+
+#[test]
+fn tsj_tile_sets_are_refused_in_tmx_maps_and_templates_in_tmj_maps() {
+    let e = tmx_err(&two_cells(r#"<data encoding="csv">1,1</data>"#).replace("kit.tsx", "kit.tsj"));
+    assert_eq!(e.location, line_col(2, 2));
+    assert!(e.to_string().contains("must be .tsx"), "{e}");
+    let tmj = std::fs::read_to_string(example("cave.tmj"))
+        .unwrap()
+        .replacen(
+            "\"name\": \"player\",",
+            "\"name\": \"player\", \"template\": \"spawn.tx\",",
+            1,
+        );
+    let e = tiled::parse_tmj(&tmj, example("inline.tmj"), &TiledOptions::default()).unwrap_err();
+    assert!(
+        e.to_string()
+            .contains("templates are supported in .tmx maps only"),
+        "{e}"
+    );
+}
+
+#[test]
+fn bad_properties_and_shapes_are_named_with_their_tile() {
+    // A user bit past flag23, on the kit's coin tile.
+    let kit = std::fs::read_to_string(fixture("kit.tsx"))
+        .unwrap()
+        .replace(
+            "name=\"value\" type=\"int\" value=\"5\"",
+            "name=\"flag30\" type=\"bool\" value=\"true\"",
+        );
+    scratch("flag30.tsx", kit.as_bytes());
+    let map = two_cells(r#"<data encoding="csv">8,8</data>"#).replace("kit.tsx", "flag30.tsx");
+    let e = load_err(&scratch("uses_flag30.tmx", map.as_bytes()));
+    assert!(
+        e.to_string().contains(
+            "tile set \"kit\", tile 7: property `flag30`: the user bits are `flag0` to `flag23`"
+        ),
+        "{e}"
+    );
+    // A collision object reaching outside its tile.
+    let kit = std::fs::read_to_string(fixture("kit.tsx"))
+        .unwrap()
+        .replace(
+            "x=\"0\" y=\"8\" width=\"16\" height=\"8\"",
+            "x=\"0\" y=\"8\" width=\"16\" height=\"12\"",
+        );
+    let tsx = scratch("outside.tsx", kit.as_bytes());
+    let map = two_cells(r#"<data encoding="csv">2,2</data>"#).replace("kit.tsx", "outside.tsx");
+    let e = load_err(&scratch("uses_outside.tmx", map.as_bytes()));
+    assert_eq!(e.path, tsx);
+    assert!(
+        e.to_string().contains("tile set \"kit\", tile 1: collision object 1: it reaches (16, 20), outside the tile's 16×16 pixels"),
+        "{e}"
+    );
+    // A bad hit type on an object.
+    let tmj = std::fs::read_to_string(example("cave.tmj"))
+        .unwrap()
+        .replace("\"DEATH,HIT\"", "\"DEATH,BURN\"");
+    let e = tiled::parse_tmj(&tmj, example("inline.tmj"), &TiledOptions::default()).unwrap_err();
+    assert!(
+        e.to_string().contains(
+            "object layer \"regions\", object 6: property `hit_types`: unknown hit type \"BURN\""
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn files_that_are_not_tiled_maps_are_named() {
+    let e = load_err(&example("cave.txt"));
+    assert!(
+        e.to_string().contains("expected a .tmx or .tmj file"),
+        "{e}"
+    );
+    let e = load_err(&scratch("latin1.tmx", b"<map name=\"caf\xe9\"/>"));
+    assert_eq!(
+        (e.kind, e.location),
+        (LoadErrorKind::NotText, Location::Byte(14))
+    );
+    let e = tmx_err("<tileset name=\"x\" tilewidth=\"16\" tileheight=\"16\" tilecount=\"1\"/>");
+    assert!(e.to_string().contains("root element is <tileset>"), "{e}");
+    let e = load_err(&fixture("nowhere.tmx"));
+    assert!(matches!(e.kind, LoadErrorKind::Io(_)), "{e}");
+}
