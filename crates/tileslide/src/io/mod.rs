@@ -3,6 +3,8 @@
 
 pub mod ascii;
 pub mod baked;
+#[cfg(feature = "png")]
+pub mod bitmap;
 mod bytes;
 mod error;
 pub mod replica;
