@@ -11,6 +11,7 @@ use tileslide::io::ascii;
 use tileslide::{Bodies, BodyDesc, BodyHandle, BodyShape, Circle, SegmentFlags, TileMap, Vec2};
 
 use crate::json::number;
+use crate::map_file;
 
 /// Most steps a scene may ask for (a typo of a few zeros should not run for days).
 const MAX_STEPS: u64 = 10_000_000;
@@ -19,12 +20,16 @@ const MAX_STEPS: u64 = 10_000_000;
 #[derive(Deserialize, Debug)]
 #[serde(deny_unknown_fields)]
 struct SceneFile {
-    /// An ASCII map file, relative to the scene file.
+    /// A map file, relative to the scene file: any format the other commands read.
     map: Option<String>,
-    /// Or the ASCII map itself.
+    /// Or an ASCII map itself.
     ascii: Option<String>,
-    /// Cell size (default 1).
+    /// Cell size of an ASCII map (default 1).
     cell: Option<f32>,
+    /// The tile set of a Replica Island level, relative to the scene file.
+    tileset: Option<String>,
+    /// The collision layer of a Tiled map.
+    layer: Option<String>,
     /// Steps to run, unless `--steps` says otherwise.
     steps: Option<u64>,
     bodies: Vec<BodyEntry>,
@@ -144,6 +149,12 @@ pub fn run(scene_path: &Path, steps: Option<u64>, json_out: bool) -> Result<()> 
 
 fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<TileMap> {
     let cell = scene.cell.unwrap_or(1.0);
+    if scene.map.is_none() && (scene.tileset.is_some() || scene.layer.is_some()) {
+        bail!(
+            "{}: \"tileset\" and \"layer\" go with a \"map\" file",
+            scene_path.display()
+        );
+    }
     if !(cell > 0.0 && cell.is_finite()) {
         bail!(
             "{}: cell: {cell} must be a positive number",
@@ -160,8 +171,14 @@ fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<TileMap> {
             scene_path.display()
         ),
         (Some(file), None) => {
-            let path = scene_path.parent().unwrap_or(Path::new(".")).join(file);
-            Ok(ascii::load(&path, cell)?)
+            let dir = scene_path.parent().unwrap_or(Path::new("."));
+            let args = map_file::MapArgs {
+                map: dir.join(file),
+                tileset: scene.tileset.as_ref().map(|t| dir.join(t)),
+                cell: scene.cell,
+                layer: scene.layer.clone(),
+            };
+            Ok(map_file::load(&args)?.0)
         }
         (None, Some(text)) => {
             let name = format!("{} (field \"ascii\")", scene_path.display());

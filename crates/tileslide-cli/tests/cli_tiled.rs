@@ -209,3 +209,41 @@ fn a_broken_tiled_map_is_named_with_line_and_column() {
         stderr(&o)
     );
 }
+
+#[test]
+fn simulate_runs_a_scene_on_a_tiled_map_in_either_format() {
+    let mut outputs = Vec::new();
+    for name in ["cave.tmx", "cave.tmj"] {
+        let scene = scratch(
+            &format!("scene_{name}.json"),
+            &format!(
+                r#"{{"map": {:?}, "steps": 30, "bodies": [
+                    {{"x": 40, "y": 40, "r": 5, "vx": 3, "vy": 2}},
+                    {{"x": 100, "y": 40, "r": 5, "vx": -3, "vy": 2}}]}}"#,
+                example(name)
+            ),
+        );
+        let o = tileslide(&["simulate", scene.to_str().unwrap(), "--json"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let v: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+        assert_eq!(v["audit"]["overlapping_pairs"], 0);
+        assert_eq!(v["audit"]["wall_penetrations"], 0);
+        outputs.push(v["bodies"].clone());
+    }
+    assert_eq!(outputs[0], outputs[1]);
+    // A Tiled map takes no cell size.
+    let scene = scratch(
+        "scene_cell.json",
+        &format!(
+            r#"{{"map": {:?}, "cell": 2, "bodies": []}}"#,
+            example("cave.tmx")
+        ),
+    );
+    let o = tileslide(&["simulate", scene.to_str().unwrap()]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("drop --tileset and --cell"),
+        "{}",
+        stderr(&o)
+    );
+}
