@@ -9,7 +9,7 @@ use std::sync::Arc;
 
 use proptest::prelude::*;
 use replica_support::{data_dir, level_names};
-use tileslide::io::{LoadErrorKind, Location, ascii, baked, replica};
+use tileslide::io::{Location, ascii, baked, replica};
 use tileslide::{Cell, Ray, RayFilter, TileMap, Vec2};
 
 const CAVE: &str = "\
@@ -19,8 +19,11 @@ const CAVE: &str = "\
 #.##..#=.#
 ##########";
 
-/// Every cell's tile and active segments (their bits), to compare two maps exactly.
-fn fingerprint(map: &TileMap) -> Vec<(Option<u32>, Vec<[u32; 7]>)> {
+/// An active segment's bits (end points, normal, flags, source) and its end-point links.
+type SegmentPrint = ([u32; 8], [Option<(u32, u32, u32)>; 2]);
+
+/// Every cell's tile and active segments, to compare two maps exactly.
+fn fingerprint(map: &TileMap) -> Vec<(Option<u32>, Vec<SegmentPrint>)> {
     let mut out = Vec::new();
     for row in 0..map.height() {
         for col in 0..map.width() {
@@ -28,15 +31,22 @@ fn fingerprint(map: &TileMap) -> Vec<(Option<u32>, Vec<[u32; 7]>)> {
             let segments = map
                 .active_segments(cell)
                 .map(|s| {
-                    [
-                        s.segment.a.x.to_bits(),
-                        s.segment.a.y.to_bits(),
-                        s.segment.b.x.to_bits(),
-                        s.segment.b.y.to_bits(),
-                        s.normal.x.to_bits(),
-                        s.normal.y.to_bits(),
-                        s.flags.0,
-                    ]
+                    let link = |l: Option<tileslide::SegmentRef>| {
+                        l.map(|l| (l.cell.col, l.cell.row, l.index))
+                    };
+                    (
+                        [
+                            s.segment.a.x.to_bits(),
+                            s.segment.a.y.to_bits(),
+                            s.segment.b.x.to_bits(),
+                            s.segment.b.y.to_bits(),
+                            s.normal.x.to_bits(),
+                            s.normal.y.to_bits(),
+                            s.flags.0,
+                            s.source,
+                        ],
+                        [link(s.continues[0]), link(s.continues[1])],
+                    )
                 })
                 .collect();
             out.push((map.tile(cell).map(|t| t.0), segments));
@@ -78,6 +88,26 @@ fn an_ascii_map_bakes_and_loads_unchanged() {
 }
 
 #[test]
+fn a_loaded_baked_map_takes_edits_as_its_source_does() {
+    let mut map = ascii::parse(CAVE, "cave.txt", 1.0).unwrap();
+    let mut back = baked::parse(&baked::to_bytes(&map), "cave.tsm").unwrap();
+    // Dig and build all over, growing and shrinking cells' segment blocks.
+    let kinds = [None, Some(tileslide::TileId(1)), Some(tileslide::TileId(2))];
+    for k in 0..60u32 {
+        let cell = Cell::new(k * 7 % map.width(), k * 3 % map.height());
+        let tile = map
+            .tile_set()
+            .iter()
+            .map(|(id, _)| id)
+            .nth((k % 3) as usize);
+        let tile = if k % 4 == 0 { None } else { tile.or(kinds[1]) };
+        map.set_tile(cell, tile).unwrap();
+        back.set_tile(cell, tile).unwrap();
+    }
+    assert_same(&map, &back);
+}
+
+#[test]
 fn every_replica_island_level_bakes_and_loads_unchanged() {
     let Some(dir) = data_dir() else {
         return;
@@ -95,21 +125,14 @@ fn every_replica_island_level_bakes_and_loads_unchanged() {
     assert!(count >= 40, "{count} levels");
 }
 
-/// FNV-1a 64, written here independently of the library.
-fn fnv(data: &[u8]) -> u64 {
-    data.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-    })
-}
-
 /// A baked file around `payload`, with a correct header (so the payload's own checks are
 /// reached).
 fn wrap(payload: &[u8]) -> Vec<u8> {
     let mut out = b"TSLDMAP\x1a".to_vec();
-    out.extend_from_slice(&1u32.to_le_bytes());
+    out.extend_from_slice(&2u32.to_le_bytes());
     out.extend_from_slice(&0u32.to_le_bytes());
     out.extend_from_slice(&(payload.len() as u64).to_le_bytes());
-    out.extend_from_slice(&fnv(payload).to_le_bytes());
+    out.extend_from_slice(&u64::from(crc32fast::hash(payload)).to_le_bytes());
     out.extend_from_slice(payload);
     out
 }
@@ -144,7 +167,7 @@ fn header_errors_name_the_field_and_offset() {
     assert!(error(&magic).0.contains("not a tileslide baked map"));
     assert_eq!(error(&magic).1, 0);
     let mut version = good.clone();
-    version[8] = 2;
+    version[8] = 1;
     let (text, at) = error(&version);
     assert!(
         text.contains("version") && text.contains("re-bake"),
@@ -217,23 +240,70 @@ fn bad_contents_are_errors_at_their_offset() {
     let (text, at) = error(&wrap(&payload(1, 1, &zero)));
     assert!(text.contains("tile 3"), "{text}");
     assert_eq!(at, 32 + 28);
-    // A cell holding a tile the set does not have.
-    let (text, at) = error(&wrap(&payload(2, 1, &[0, u32::MAX, 9])));
+    // A cell holding a tile the set does not have (the second cell).
+    let mut unknown = payload(2, 1, &[0, u32::MAX, 9]);
+    unknown.extend(empty_store(2));
+    let (text, at) = error(&wrap(&unknown));
     assert!(text.contains('9'), "{text}");
-    assert_eq!(at, 32 + 28);
+    assert_eq!(at, 32 + 28 + 4);
     // The same tile twice.
     let twice = [2, 4, 0, 4, 0, u32::MAX];
     let (text, _) = error(&wrap(&payload(1, 1, &twice)));
     assert!(text.contains("tile 4 is defined twice"), "{text}");
-    // Bytes after the tiles.
-    let (text, _) = error(&wrap(&payload(1, 1, &[0, u32::MAX, 5])));
-    assert!(matches!(
-        baked::parse(&wrap(&payload(1, 1, &[0, u32::MAX, 5])), "x")
-            .unwrap_err()
-            .kind,
-        LoadErrorKind::TrailingBytes(4)
-    ));
-    assert!(text.contains("unexpected bytes"), "{text}");
+    // Bytes after the segments.
+    let mut trailing = payload(1, 1, &[0, u32::MAX]);
+    trailing.extend(empty_store(1));
+    trailing.extend([1, 2, 3, 4]);
+    let (text, at) = error(&wrap(&trailing));
+    assert!(text.contains("active"), "{text}");
+    assert_eq!(at, 32 + 28 + 4 + 2 + 1);
+}
+
+/// The culled-segment section of a map of `cells` empty cells: no segments.
+fn empty_store(cells: usize) -> Vec<u8> {
+    let mut out = vec![0u8; 3 * cells];
+    out.extend(0u64.to_le_bytes());
+    out
+}
+
+/// A real baked map with its payload edited by `edit(payload, cells, active)` and the
+/// checksum made right again: the checks behind the checksum must catch it.
+fn tampered(edit: impl Fn(&mut Vec<u8>, usize, usize)) -> (String, u64) {
+    let map = ascii::parse(CAVE, "cave.txt", 1.0).unwrap();
+    let (cells, active) = (
+        (map.width() * map.height()) as usize,
+        map.active_segment_count(),
+    );
+    let mut payload = baked::to_bytes(&map)[32..].to_vec();
+    edit(&mut payload, cells, active);
+    error(&wrap(&payload))
+}
+
+#[test]
+fn culled_segments_that_do_not_hold_together_are_refused() {
+    // A cell's kind that its segments do not make.
+    let (text, _) = tampered(|p, cells, active| {
+        let kinds = p.len() - 40 * active - 8 - cells;
+        let k = (kinds..kinds + cells).find(|&i| p[i] != 0).unwrap();
+        p[k] ^= 0x0f;
+    });
+    assert!(text.contains("does not match its segments"), "{text}");
+    // A link to a segment that is not there.
+    let (text, at) = tampered(|p, _, active| {
+        let first = p.len() - 40 * active;
+        p[first + 32..first + 36].copy_from_slice(&(active as u32 + 7).to_le_bytes());
+    });
+    assert!(
+        text.contains("active segment 0") && text.contains("links to"),
+        "{text}"
+    );
+    assert!(at > 32);
+    // A NaN coordinate.
+    let (text, _) = tampered(|p, _, active| {
+        let first = p.len() - 40 * active;
+        p[first..first + 4].copy_from_slice(&f32::NAN.to_le_bytes());
+    });
+    assert!(text.contains("not finite"), "{text}");
 }
 
 proptest! {

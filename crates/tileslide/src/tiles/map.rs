@@ -140,6 +140,24 @@ pub struct TileMap {
 
 const EMPTY: u32 = u32::MAX;
 
+/// The number of cells of a `width × height` map at `origin`, or why it cannot be.
+fn checked_size(width: u32, height: u32, origin: Vec2) -> Result<u64, MapError> {
+    if width == 0 || height == 0 {
+        return Err(MapError::EmptySize { width, height });
+    }
+    let cells = u64::from(width) * u64::from(height);
+    if cells > MAX_CELLS {
+        return Err(MapError::TooLarge { width, height });
+    }
+    if !origin.is_finite() {
+        return Err(MapError::NonFiniteOrigin {
+            x: origin.x,
+            y: origin.y,
+        });
+    }
+    Ok(cells)
+}
+
 /// A number no map has had yet: every new map and every edit takes one, so two maps with the
 /// same revision hold the same tiles and temporaries (a clone keeps its original's until it
 /// is edited). Memories of a map's contents (the settled bodies of a resolve) compare it.
@@ -157,34 +175,46 @@ impl TileMap {
         height: u32,
         origin: Vec2,
     ) -> Result<Self, MapError> {
-        if width == 0 || height == 0 {
-            return Err(MapError::EmptySize { width, height });
-        }
-        let cells = width as u64 * height as u64;
-        if cells > MAX_CELLS {
-            return Err(MapError::TooLarge { width, height });
-        }
-        if !origin.is_finite() {
-            return Err(MapError::NonFiniteOrigin {
-                x: origin.x,
-                y: origin.y,
-            });
-        }
+        let cells = checked_size(width, height, origin)? as usize;
+        Ok(Self::from_parts(
+            tile_set,
+            width,
+            height,
+            origin,
+            vec![EMPTY; cells],
+            SegmentStore::new(cells),
+        ))
+    }
+
+    /// The map of these parts, with nothing checked or computed but the placed count.
+    fn from_parts(
+        tile_set: Arc<TileSet>,
+        width: u32,
+        height: u32,
+        origin: Vec2,
+        tiles: Vec<u32>,
+        store: SegmentStore,
+    ) -> Self {
         let cell_size = tile_set.tile_size();
-        Ok(Self {
+        let placed = tiles
+            .iter()
+            .filter(|&&t| t != EMPTY)
+            .map(|&t| tile_set.shape(TileId(t)).map_or(0, |s| s.segments().len()))
+            .sum();
+        Self {
             tile_set,
             width,
             height,
             origin,
             cell_size,
             inv_cell_size: cell_size.recip(),
-            tiles: vec![EMPTY; cells as usize],
-            placed: 0,
-            store: SegmentStore::new(cells as usize),
+            tiles,
+            placed,
+            store,
             temporaries: Vec::new(),
             revision: next_revision(),
             scratch: Default::default(),
-        })
+        }
     }
 
     /// A map filled from `tiles`, one entry per cell in row-major order (`row · width + col`).
@@ -212,6 +242,36 @@ impl TileMap {
         }
         map.rebuild()?;
         Ok(map)
+    }
+
+    /// A map of `tiles` (raw ids, row-major, `u32::MAX` for empty) whose culled segments
+    /// and links are already known (`store`, as a baked map holds them): nothing is
+    /// recomputed. The size and the tile ids are checked here; that `store` matches them
+    /// is the caller's to check.
+    pub(crate) fn from_store(
+        tile_set: Arc<TileSet>,
+        width: u32,
+        height: u32,
+        origin: Vec2,
+        tiles: Vec<u32>,
+        store: SegmentStore,
+    ) -> Result<Self, MapError> {
+        let cells = checked_size(width, height, origin)? as usize;
+        if tiles.len() != cells {
+            return Err(MapError::WrongTileCount {
+                expected: cells,
+                got: tiles.len(),
+            });
+        }
+        if let Some(&raw) = tiles
+            .iter()
+            .find(|&&t| t != EMPTY && tile_set.shape(TileId(t)).is_none())
+        {
+            return Err(MapError::UnknownTile { id: TileId(raw) });
+        }
+        Ok(Self::from_parts(
+            tile_set, width, height, origin, tiles, store,
+        ))
     }
 
     /// Recomputes every cell's active segments and links from the tiles.

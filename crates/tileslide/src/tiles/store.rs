@@ -22,7 +22,7 @@ pub(crate) const CAP_B: u8 = 2;
 pub(crate) const NO_SEGMENTS: u32 = u32::MAX;
 
 /// Most active segments one cell can hold (a segment's `count` is a `u16`).
-const MAX_CELL_SEGMENTS: usize = u16::MAX as usize;
+pub(crate) const MAX_CELL_SEGMENTS: usize = u16::MAX as usize;
 
 /// An active segment in world coordinates, laid out for the ray walk: `e = b − a` is
 /// precomputed so the intersection needs no subtraction of end points. 32 bytes.
@@ -71,6 +71,12 @@ fn capacity_of(len: usize) -> usize {
     } else {
         len.next_power_of_two()
     }
+}
+
+/// The block capacity a cell of `len` active segments gets (for laying out a store, see
+/// [`SegmentStore::from_layout`]).
+pub(crate) fn block_capacity(len: usize) -> usize {
+    capacity_of(len)
 }
 
 /// Free-list index of a block capacity.
@@ -153,6 +159,28 @@ impl SegmentStore {
         self.active
     }
 
+    /// A store from its arrays, laid out as [`block_capacity`] says (cell `i`'s block at
+    /// `starts[i]`, its segments' `count` set, padding up to the block's capacity), with
+    /// nothing free: what a baked map loads into. The caller has checked the layout.
+    pub fn from_layout(
+        starts: Vec<u32>,
+        kinds: Vec<u8>,
+        hot: Vec<HotSegment>,
+        links: Vec<Links>,
+        caps: Vec<u8>,
+        active: usize,
+    ) -> Self {
+        Self {
+            starts,
+            kinds,
+            hot,
+            links,
+            caps,
+            free: Vec::new(),
+            active,
+        }
+    }
+
     /// Replaces the active segments of cell `index` (their `count` is set here) and its
     /// summary `kind` (see [`kind_of`]); their links are cleared and both ends capped. The caller has checked
     /// [`has_room_for`](Self::has_room_for).
@@ -160,7 +188,12 @@ impl SegmentStore {
         self.kinds[index] = kind;
         let old = self.range(index);
         if !old.is_empty() {
-            self.free[class_of(capacity_of(old.len()))].push(old.start as u32);
+            // (A store laid out by `from_cells` has no free lists yet.)
+            let class = class_of(capacity_of(old.len()));
+            if self.free.len() <= class {
+                self.free.resize_with(class + 1, Vec::new);
+            }
+            self.free[class].push(old.start as u32);
         }
         self.active = self.active - old.len() + segments.len();
         if segments.is_empty() {
