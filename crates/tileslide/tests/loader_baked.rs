@@ -129,7 +129,7 @@ fn every_replica_island_level_bakes_and_loads_unchanged() {
 /// reached).
 fn wrap(payload: &[u8]) -> Vec<u8> {
     let mut out = b"TSLDMAP\x1a".to_vec();
-    out.extend_from_slice(&2u32.to_le_bytes());
+    out.extend_from_slice(&baked::VERSION.to_le_bytes());
     out.extend_from_slice(&0u32.to_le_bytes());
     out.extend_from_slice(&(payload.len() as u64).to_le_bytes());
     out.extend_from_slice(&u64::from(crc32fast::hash(payload)).to_le_bytes());
@@ -288,16 +288,24 @@ fn culled_segments_that_do_not_hold_together_are_refused() {
         p[k] ^= 0x0f;
     });
     assert!(text.contains("does not match its segments"), "{text}");
-    // A link to a segment that is not there.
-    let (text, at) = tampered(|p, _, active| {
-        let first = p.len() - 40 * active;
-        p[first + 32..first + 36].copy_from_slice(&(active as u32 + 7).to_le_bytes());
-    });
-    assert!(
-        text.contains("active segment 0") && text.contains("links to"),
-        "{text}"
-    );
-    assert!(at > 32);
+    // Links that name no neighbour, a cell outside the map (the first active segment is in
+    // the top row, so the row above is outside), and a segment its cell does not have.
+    let pack = |dc: u32, dr: u32, index: u32| (dr * 3 + dc) << 16 | index;
+    for (raw, reason) in [
+        (9 << 16, "names no neighbour"),
+        (pack(1, 0, 0), "not there"),
+        (pack(1, 1, 60_000), "not there"),
+    ] {
+        let (text, at) = tampered(|p, _, active| {
+            let first = p.len() - 40 * active;
+            p[first + 32..first + 36].copy_from_slice(&u32::to_le_bytes(raw));
+        });
+        assert!(
+            text.contains("active segment 0") && text.contains(reason),
+            "{raw:#x}: {text}"
+        );
+        assert!(at > 32);
+    }
     // A NaN coordinate.
     let (text, _) = tampered(|p, _, active| {
         let first = p.len() - 40 * active;

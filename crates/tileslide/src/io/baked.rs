@@ -6,7 +6,7 @@
 //! ```text
 //! offset  size  field
 //! 0       8     magic        "TSLDMAP" then 0x1A
-//! 8       4     version      u32 = 2
+//! 8       4     version      u32 = 3
 //! 12      4     reserved     u32 = 0 (checked)
 //! 16      8     payload_len  u64: bytes after the 32-byte header
 //! 24      8     checksum     u64: CRC-32 (IEEE) of the payload
@@ -20,8 +20,8 @@
 //!   width × height × u16 active segment counts, then × u8 cell kinds
 //!   u64 active, then per active segment, cell by cell (40 bytes):
 //!     f32 ax, ay, ex, ey, nx, ny; u32 flags; u16 source; u8 caps; u8 0;
-//!     u32 link_a, u32 link_b (the linked segment's rank among all active ones, or
-//!     0xFFFF_FFFF for none)
+//!     u32 link_a, u32 link_b (the linked segment: neighbour cell (dr+1)·3 + (dc+1) in
+//!     bits 16.., its index in that cell in bits 0..16; 0xFFFF_FFFF for none)
 //! ```
 //!
 //! Everything is written as the map holds it, so a baked and loaded map has the very same
@@ -51,16 +51,18 @@ use super::bytes::ByteReader;
 use super::error::read_file;
 use super::{LoadError, LoadErrorKind};
 use crate::tiles::face_kind::kind_of;
+use crate::tiles::link::Link;
+use crate::tiles::map::placed_segments;
 use crate::tiles::store::{HotSegment, NO_SEGMENTS, SegmentStore, block_capacity};
 use crate::tiles::{
-    Cell, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError, SegmentFlags, SegmentRef, TileId, TileMap,
-    TileSegment, TileSet, TileSetError, TileShape,
+    Cell, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError, SegmentFlags, TileId, TileMap, TileSegment,
+    TileSet, TileSetError, TileShape,
 };
 
 /// The first eight bytes of every baked map.
 pub const MAGIC: [u8; 8] = *b"TSLDMAP\x1a";
 /// The format version this build writes and reads.
-pub const VERSION: u32 = 2;
+pub const VERSION: u32 = 3;
 /// Bytes before the payload.
 const HEADER_LEN: usize = 32;
 /// The tile value of an empty cell.
@@ -69,8 +71,6 @@ const EMPTY: u32 = u32::MAX;
 const SEGMENT_LEN: usize = 28;
 /// Bytes of one baked active segment.
 const ACTIVE_LEN: usize = 40;
-/// A missing link.
-const NO_LINK: u32 = u32::MAX;
 
 /// The baked bytes of `map` (its tile set, size, origin and tiles; not its temporary
 /// segments, which live for a frame).
@@ -163,7 +163,7 @@ pub fn parse(data: &[u8], path: impl AsRef<Path>) -> Result<TileMap, LoadError> 
             LoadErrorKind::BadSize {
                 field: "reserved",
                 value: reserved.into(),
-                reason: "must be 0 in version 1".into(),
+                reason: format!("must be 0 in version {VERSION}"),
             },
         ));
     }
@@ -266,45 +266,30 @@ pub fn parse(data: &[u8], path: impl AsRef<Path>) -> Result<TileMap, LoadError> 
         .chunks_exact(4)
         .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
         .collect();
-    if let Some(k) = tiles
-        .iter()
-        .position(|&t| t != EMPTY && set.shape(TileId(t)).is_none())
-    {
-        return Err(r.error_at(
+    let placed = placed_segments(&set, &tiles).map_err(|k| {
+        r.error_at(
             tiles_at + 4 * k as u64,
             MapError::UnknownTile {
                 id: TileId(tiles[k]),
             }
             .into(),
-        ));
-    }
+        )
+    })?;
     let store = read_store(&mut r, width, height, tile_size, origin)?;
-    TileMap::from_store(Arc::new(set), width, height, origin, tiles, store)
+    TileMap::from_store(Arc::new(set), width, height, origin, tiles, store, placed)
         .map_err(|e| r.error_at(tiles_at, e.into()))
 }
 
 /// Appends the map's culled segments: counts, kinds, then each active segment with its
-/// links as ranks among all active segments.
+/// links as the store holds them (see [`Link`]).
 fn write_store(map: &TileMap, out: &mut Vec<u8>) {
     let store = &map.store;
     let cells = (map.width() * map.height()) as usize;
-    let mut first = Vec::with_capacity(cells);
-    let mut active = 0u32;
-    for cell in 0..cells {
-        first.push(active);
-        active += store.cell(cell).len() as u32;
-    }
     for cell in 0..cells {
         out.extend_from_slice(&(store.cell(cell).len() as u16).to_le_bytes());
     }
     out.extend_from_slice(store.kinds());
-    out.extend_from_slice(&u64::from(active).to_le_bytes());
-    let width = map.width();
-    let rank = |link: Option<SegmentRef>| {
-        link.map_or(NO_LINK, |l| {
-            first[(l.cell.row * width + l.cell.col) as usize] + l.index
-        })
-    };
+    out.extend_from_slice(&(store.active_count() as u64).to_le_bytes());
     for cell in 0..cells {
         let links = store.links(cell);
         let caps = store.caps(cell);
@@ -315,13 +300,58 @@ fn write_store(map: &TileMap, out: &mut Vec<u8>) {
             out.extend_from_slice(&s.flags.0.to_le_bytes());
             out.extend_from_slice(&s.source.to_le_bytes());
             out.extend_from_slice(&[caps[k], 0]);
-            out.extend_from_slice(&rank(links[k][0]).to_le_bytes());
-            out.extend_from_slice(&rank(links[k][1]).to_le_bytes());
+            out.extend_from_slice(&links[k][0].raw().to_le_bytes());
+            out.extend_from_slice(&links[k][1].raw().to_le_bytes());
         }
     }
 }
 
-/// Reads and checks the culled segments written by [`write_store`].
+/// One baked active segment, decoded but not yet checked.
+struct ActiveRecord {
+    hot: HotSegment,
+    caps: u8,
+    /// Its links as stored (see [`Link::raw`]).
+    links: [u32; 2],
+}
+
+impl ActiveRecord {
+    /// The record in `b` (laid out as [`write_store`] writes it), for a cell of `count`.
+    #[inline(always)]
+    fn decode(b: &[u8; ACTIVE_LEN], count: u16) -> Self {
+        let word = |at: usize| [b[at], b[at + 1], b[at + 2], b[at + 3]];
+        let f = |i: usize| f32::from_le_bytes(word(4 * i));
+        Self {
+            hot: HotSegment {
+                a: Vec2::new(f(0), f(1)),
+                e: Vec2::new(f(2), f(3)),
+                normal: Vec2::new(f(4), f(5)),
+                flags: SegmentFlags(u32::from_le_bytes(word(24))),
+                source: u16::from_le_bytes([b[28], b[29]]),
+                count,
+            },
+            caps: b[30],
+            links: [u32::from_le_bytes(word(32)), u32::from_le_bytes(word(36))],
+        }
+    }
+
+    /// Finite, and not of zero length.
+    fn is_valid(&self) -> bool {
+        let s = &self.hot;
+        s.a.is_finite() && s.e.is_finite() && s.normal.is_finite() && s.e != Vec2::ZERO
+    }
+}
+
+/// The error for active segment `k` (by rank, at `segments_at`): kept out of the load loop.
+#[cold]
+fn bad_segment(r: &ByteReader<'_>, segments_at: u64, k: usize, reason: &str) -> LoadError {
+    r.error_at(
+        segments_at + (k * ACTIVE_LEN) as u64,
+        LoadErrorKind::Invalid(format!("active segment {k}: {reason}")),
+    )
+}
+
+/// Reads and checks the culled segments written by [`write_store`], into a store laid out as
+/// edits lay one out (each cell's block at its [`block_capacity`]).
 fn read_store(
     r: &mut ByteReader<'_>,
     width: u32,
@@ -330,16 +360,17 @@ fn read_store(
     origin: Vec2,
 ) -> Result<SegmentStore, LoadError> {
     let cells = (width * height) as usize;
-    let counts: Vec<u16> = r
-        .take(cells * 2, "counts")?
-        .chunks_exact(2)
-        .map(|b| u16::from_le_bytes([b[0], b[1]]))
-        .collect();
+    let counts_raw = r.take(cells * 2, "counts")?;
+    let (counts, _) = counts_raw.as_chunks::<2>();
+    let count_of = |cell: usize| usize::from(u16::from_le_bytes(counts[cell]));
     let kinds_at = r.offset();
     let kinds = r.take(cells, "kinds")?.to_vec();
     let active_at = r.offset();
     let active = r.u64("active")?;
-    let total: u64 = counts.iter().map(|&c| u64::from(c)).sum();
+    let total: u64 = counts
+        .iter()
+        .map(|&c| u64::from(u16::from_le_bytes(c)))
+        .sum();
     if active != total || active.saturating_mul(ACTIVE_LEN as u64) != r.remaining() as u64 {
         return Err(r.error_at(
             active_at,
@@ -353,111 +384,100 @@ fn read_store(
             },
         ));
     }
-    // The store's layout: each cell's block, sized as edits size them; which cell each
-    // active segment (by rank) is in, and each cell's first rank.
-    let mut starts = Vec::with_capacity(cells);
-    let mut first = Vec::with_capacity(cells);
-    let mut cell_of = Vec::with_capacity(active as usize);
-    let mut slots = 0usize;
-    for (cell, &count) in counts.iter().enumerate() {
-        first.push(cell_of.len() as u32);
-        cell_of.extend(std::iter::repeat_n(cell as u32, count as usize));
-        if count == 0 {
-            starts.push(NO_SEGMENTS);
-        } else {
-            starts.push(slots as u32);
-            slots += block_capacity(count as usize);
-        }
-    }
-    if slots >= NO_SEGMENTS as usize {
-        return Err(r.error_at(
-            active_at,
-            LoadErrorKind::BadSize {
-                field: "active",
-                value: active as i64,
-                reason: "more segments than a map can hold".into(),
-            },
-        ));
-    }
     let segments_at = r.offset();
-    let raw = r.take(active as usize * ACTIVE_LEN, "segments")?;
-    let mut hot = Vec::with_capacity(slots);
-    let mut links = Vec::with_capacity(slots);
-    let mut caps = Vec::with_capacity(slots);
-    let mut records = raw.chunks_exact(ACTIVE_LEN).enumerate();
-    for &count in &counts {
+    let (records, _) = r
+        .take(active as usize * ACTIVE_LEN, "segments")?
+        .as_chunks::<ACTIVE_LEN>();
+    let mut records = records.iter();
+    let mut rank = 0usize;
+    let mut starts = vec![NO_SEGMENTS; cells];
+    let mut hot = Vec::with_capacity(active as usize);
+    let mut links = Vec::with_capacity(active as usize);
+    let mut caps = Vec::with_capacity(active as usize);
+    let (w, h) = (i64::from(width), i64::from(height));
+    let (mut row, mut row_start) = (0i64, 0usize);
+    let mut cell = 0;
+    loop {
+        // Most cells are empty: skip a run of them at a time, checking their kinds are 0.
+        let next = (cell + zero_bytes(&counts_raw[2 * cell..]) / 2).min(cells);
+        if kinds[cell..next].iter().fold(0, |any, &k| any | k) != 0 {
+            let bad = (cell..next).find(|&c| kinds[c] != 0).unwrap_or(cell);
+            return Err(bad_kind(r, kinds_at, bad, kinds[bad]));
+        }
+        cell = next;
+        if cell == cells {
+            break;
+        }
+        while cell >= row_start + width as usize {
+            (row, row_start) = (row + 1, row_start + width as usize);
+        }
+        let col = (cell - row_start) as i64;
+        let count = count_of(cell);
         let block = hot.len();
-        for _ in 0..count {
-            let Some((k, b)) = records.next() else {
-                break;
-            };
-            let f =
-                |i: usize| f32::from_le_bytes([b[4 * i], b[4 * i + 1], b[4 * i + 2], b[4 * i + 3]]);
-            let u = |at: usize| u32::from_le_bytes([b[at], b[at + 1], b[at + 2], b[at + 3]]);
-            let bad = |reason: &str| {
-                r.error_at(
-                    segments_at + (k * ACTIVE_LEN) as u64,
-                    LoadErrorKind::Invalid(format!("active segment {k}: {reason}")),
-                )
-            };
-            let (a, e, normal) = (
-                Vec2::new(f(0), f(1)),
-                Vec2::new(f(2), f(3)),
-                Vec2::new(f(4), f(5)),
-            );
-            if !(a.is_finite() && e.is_finite() && normal.is_finite()) || e == Vec2::ZERO {
-                return Err(bad("a coordinate is not finite, or it has zero length"));
-            }
-            let link = |rank: u32| -> Result<Option<SegmentRef>, LoadError> {
-                if rank == NO_LINK {
-                    return Ok(None);
-                }
-                let cell = *cell_of
-                    .get(rank as usize)
-                    .ok_or_else(|| bad(&format!("links to segment {rank} of {active}")))?;
-                Ok(Some(SegmentRef {
-                    cell: Cell::new(cell % width, cell / width),
-                    index: rank - first[cell as usize],
-                }))
-            };
-            links.push([link(u(32))?, link(u(36))?]);
-            hot.push(HotSegment {
-                a,
-                e,
-                normal,
-                flags: SegmentFlags(u(24)),
-                source: u16::from_le_bytes([b[28], b[29]]),
-                count,
-            });
-            caps.push(b[30]);
-        }
-        if count > 0 {
-            // Padding up to the block's capacity (never read; overwritten on reuse).
-            let capacity = block + block_capacity(count as usize);
-            let pad = hot[block];
-            hot.resize(capacity, pad);
-            links.resize(capacity, [None; 2]);
-            caps.resize(capacity, 0);
-        }
-    }
-    // Each cell's kind must be the one its segments make: the ray walk trusts it.
-    for (cell, (&count, &start)) in counts.iter().zip(&starts).enumerate() {
-        let segments = if count == 0 {
-            &[][..]
-        } else {
-            &hot[start as usize..start as usize + count as usize]
-        };
-        let col_row = Vec2::new((cell as u32 % width) as f32, (cell as u32 / width) as f32);
-        let base = origin + col_row * cell_size;
-        if kind_of(segments, base, cell_size) != kinds[cell] {
+        if block + block_capacity(count) >= NO_SEGMENTS as usize {
             return Err(r.error_at(
-                kinds_at + cell as u64,
-                LoadErrorKind::Invalid(format!(
-                    "cell {} kind {} does not match its segments",
-                    cell, kinds[cell]
-                )),
+                active_at,
+                LoadErrorKind::BadSize {
+                    field: "active",
+                    value: active as i64,
+                    reason: "more segments than a map can hold".into(),
+                },
             ));
         }
+        starts[cell] = block as u32;
+        // Links reach into the next row, which the scan has not read yet: touch its counts a
+        // little ahead so the link checks below find them in cache.
+        if let Some(ahead) = counts.get(cell + width as usize + 32) {
+            std::hint::black_box(*ahead);
+        }
+        for b in records.by_ref().take(count) {
+            let segment = ActiveRecord::decode(b, count as u16);
+            if !segment.is_valid() {
+                return Err(bad_segment(
+                    r,
+                    segments_at,
+                    rank,
+                    "a coordinate is not finite, or it has zero length",
+                ));
+            }
+            let mut ends = [Link::NONE; 2];
+            for (end, raw) in ends.iter_mut().zip(segment.links) {
+                let link = Link::from_raw(raw).ok_or_else(|| {
+                    bad_segment(r, segments_at, rank, "a link names no neighbour")
+                })?;
+                if let Some((dc, dr, index)) = link.target() {
+                    let (c, rr) = (col + dc, row + dr);
+                    let inside = c >= 0 && rr >= 0 && c < w && rr < h;
+                    if !inside || index as usize >= count_of((rr * w + c) as usize) {
+                        return Err(bad_segment(
+                            r,
+                            segments_at,
+                            rank,
+                            "a link names a segment that is not there",
+                        ));
+                    }
+                }
+                *end = link;
+            }
+            links.push(ends);
+            hot.push(segment.hot);
+            caps.push(segment.caps);
+            rank += 1;
+        }
+        // Each cell's kind must be the one its segments make: the ray walk trusts it.
+        let base = origin + Vec2::new(col as f32, row as f32) * cell_size;
+        if kind_of(&hot[block..], base, cell_size) != kinds[cell] {
+            return Err(bad_kind(r, kinds_at, cell, kinds[cell]));
+        }
+        // Padding up to the block's capacity (never read; overwritten on reuse).
+        let capacity = block + block_capacity(count);
+        if capacity > hot.len() {
+            let pad = hot[block];
+            hot.resize(capacity, pad);
+            links.resize(capacity, [Link::NONE; 2]);
+            caps.resize(capacity, 0);
+        }
+        cell += 1;
     }
     Ok(SegmentStore::from_layout(
         starts,
@@ -467,4 +487,29 @@ fn read_store(
         caps,
         active as usize,
     ))
+}
+
+/// How many bytes at the start of `bytes` are zero (eight at a time).
+fn zero_bytes(bytes: &[u8]) -> usize {
+    let mut words = bytes.chunks_exact(8);
+    let mut zeros = 0;
+    for w in words.by_ref() {
+        let w = u64::from_le_bytes([w[0], w[1], w[2], w[3], w[4], w[5], w[6], w[7]]);
+        if w != 0 {
+            return zeros + (w.trailing_zeros() / 8) as usize;
+        }
+        zeros += 8;
+    }
+    zeros + words.remainder().iter().take_while(|&&b| b == 0).count()
+}
+
+/// The error for a cell whose kind is not the one its segments make.
+#[cold]
+fn bad_kind(r: &ByteReader<'_>, kinds_at: u64, cell: usize, kind: u8) -> LoadError {
+    r.error_at(
+        kinds_at + cell as u64,
+        LoadErrorKind::Invalid(format!(
+            "cell {cell} kind {kind} does not match its segments"
+        )),
+    )
 }

@@ -11,9 +11,8 @@
 
 use glam::Vec2;
 
-use super::Cell;
 use super::SegmentFlags;
-use super::SegmentRef;
+use super::link::Link;
 use super::store::{CAP_A, CAP_B, HotSegment, SegmentStore};
 
 /// Two ends closer than this (in cells) are the same point.
@@ -43,11 +42,11 @@ pub(crate) fn link_cell(
     let tol2 = tol * tol;
     for i in 0..count {
         let seg = store.cell(index)[i];
-        let mut ends = [None; 2];
+        let mut ends = [Link::NONE; 2];
         let mut caps = CAP_A | CAP_B;
         let along = seg.e.normalize_or_zero();
         for (k, end) in [seg.a, seg.b()].into_iter().enumerate() {
-            let mut best: Option<(f32, SegmentRef, HotSegment)> = None;
+            let mut best: Option<(f32, Link, HotSegment)> = None;
             for dr in -1i64..=1 {
                 for dc in -1i64..=1 {
                     let (c, r) = (col as i64 + dc, row as i64 + dr);
@@ -67,17 +66,12 @@ pub(crate) fn link_cell(
                             continue;
                         }
                         if best.is_none_or(|(s, _, _)| score > s) {
-                            let cell = Cell::new(c as u32, r as u32);
-                            let link = SegmentRef {
-                                cell,
-                                index: j as u32,
-                            };
-                            best = Some((score, link, *other));
+                            best = Some((score, Link::new(dc, dr, j), *other));
                         }
                     }
                 }
             }
-            ends[k] = best.map(|(_, r, _)| r);
+            ends[k] = best.map_or(Link::NONE, |(_, link, _)| link);
             // The end's outward direction: back along the segment at `a`, forward at `b`.
             let outward = if k == 0 { -along } else { along };
             // The neighbour's flat side covers this end only for circles in front of it,

@@ -9,7 +9,7 @@ use super::SegmentRef;
 use super::continuity::link_cell;
 use super::culling::{Side, active_segments};
 use super::face_kind::{canonical_faces, kind_of};
-use super::store::{HotSegment, SegmentStore};
+use super::store::{HotSegment, Links, SegmentStore};
 use super::{Cell, SegmentFlags, TemporaryError, TemporarySegment, TileId, TileSet, TileShape};
 use crate::geometry::{Aabb, Segment};
 
@@ -166,6 +166,27 @@ fn next_revision() -> u64 {
     NEXT.fetch_add(1, Ordering::Relaxed)
 }
 
+/// The number of tile-shape segments `tiles` (raw ids, `u32::MAX` for empty) place, or the
+/// index of the first tile `tile_set` lacks. A tile is looked up only where it differs from
+/// the cell before (maps are mostly runs of one tile), so a million cells cost a few
+/// thousand lookups, not a million.
+pub(crate) fn placed_segments(tile_set: &TileSet, tiles: &[u32]) -> Result<usize, usize> {
+    let mut placed = 0;
+    let (mut last, mut last_count) = (EMPTY, 0);
+    for (k, &raw) in tiles.iter().enumerate() {
+        if raw != last {
+            last_count = if raw == EMPTY {
+                0
+            } else {
+                tile_set.shape(TileId(raw)).ok_or(k)?.segments().len()
+            };
+            last = raw;
+        }
+        placed += last_count;
+    }
+    Ok(placed)
+}
+
 impl TileMap {
     /// An empty map of `width × height` cells of the tile set's tile size, cell (0, 0)'s
     /// corner at `origin`.
@@ -183,10 +204,11 @@ impl TileMap {
             origin,
             vec![EMPTY; cells],
             SegmentStore::new(cells),
+            0,
         ))
     }
 
-    /// The map of these parts, with nothing checked or computed but the placed count.
+    /// The map of these parts, with nothing checked or computed.
     fn from_parts(
         tile_set: Arc<TileSet>,
         width: u32,
@@ -194,13 +216,9 @@ impl TileMap {
         origin: Vec2,
         tiles: Vec<u32>,
         store: SegmentStore,
+        placed: usize,
     ) -> Self {
         let cell_size = tile_set.tile_size();
-        let placed = tiles
-            .iter()
-            .filter(|&&t| t != EMPTY)
-            .map(|&t| tile_set.shape(TileId(t)).map_or(0, |s| s.segments().len()))
-            .sum();
         Self {
             tile_set,
             width,
@@ -246,8 +264,9 @@ impl TileMap {
 
     /// A map of `tiles` (raw ids, row-major, `u32::MAX` for empty) whose culled segments
     /// and links are already known (`store`, as a baked map holds them): nothing is
-    /// recomputed. The size and the tile ids are checked here; that `store` matches them
-    /// is the caller's to check.
+    /// recomputed. The size is checked here; the caller has checked the tiles against the
+    /// set (`placed` is what [`placed_segments`] returned for them) and that `store`
+    /// matches them.
     pub(crate) fn from_store(
         tile_set: Arc<TileSet>,
         width: u32,
@@ -255,6 +274,7 @@ impl TileMap {
         origin: Vec2,
         tiles: Vec<u32>,
         store: SegmentStore,
+        placed: usize,
     ) -> Result<Self, MapError> {
         let cells = checked_size(width, height, origin)? as usize;
         if tiles.len() != cells {
@@ -263,14 +283,8 @@ impl TileMap {
                 got: tiles.len(),
             });
         }
-        if let Some(&raw) = tiles
-            .iter()
-            .find(|&&t| t != EMPTY && tile_set.shape(TileId(t)).is_none())
-        {
-            return Err(MapError::UnknownTile { id: TileId(raw) });
-        }
         Ok(Self::from_parts(
-            tile_set, width, height, origin, tiles, store,
+            tile_set, width, height, origin, tiles, store, placed,
         ))
     }
 
@@ -300,11 +314,8 @@ impl TileMap {
                 );
             }
         }
-        self.placed = self
-            .tiles
-            .iter()
-            .map(|&t| self.shape_of_raw(t).map_or(0, |s| s.segments().len()))
-            .sum();
+        // The tiles were checked against the set as they were placed.
+        self.placed = placed_segments(&self.tile_set, &self.tiles).unwrap_or(0);
         Ok(())
     }
 
@@ -551,7 +562,7 @@ impl TileMap {
     /// The active segments of `cell` (none outside the map).
     pub fn active_segments(&self, cell: Cell) -> impl ExactSizeIterator<Item = ActiveSegment> + '_ {
         let index = self.index_of(cell).ok();
-        let (hot, links): (&[HotSegment], &[[Option<SegmentRef>; 2]]) = match index {
+        let (hot, links): (&[HotSegment], &[Links]) = match index {
             Some(i) => (self.store.cell(i), self.store.links(i)),
             None => (&[], &[]),
         };
@@ -562,7 +573,7 @@ impl TileMap {
             flags: h.flags,
             tile,
             source: h.source.into(),
-            continues: *l,
+            continues: [l[0].resolve(cell), l[1].resolve(cell)],
         })
     }
 

@@ -10,7 +10,8 @@
 
 use glam::Vec2;
 
-use super::{SegmentFlags, SegmentRef};
+use super::SegmentFlags;
+use super::link::Link;
 
 /// Cap bit of a segment's `a` end: the surface does not continue from there into a collinear
 /// or concave neighbour, so a swept circle must round it (see `continuity`).
@@ -45,7 +46,7 @@ impl HotSegment {
 }
 
 /// For each end (`a`, `b`) of an active segment, the active segment it continues into.
-pub(crate) type Links = [Option<SegmentRef>; 2];
+pub(crate) type Links = [Link; 2];
 
 #[derive(Clone, Debug, Default)]
 pub(crate) struct SegmentStore {
@@ -210,7 +211,7 @@ impl SegmentStore {
             None => {
                 let start = self.hot.len();
                 self.hot.resize(start + capacity, segments[0]);
-                self.links.resize(start + capacity, [None; 2]);
+                self.links.resize(start + capacity, [Link::NONE; 2]);
                 self.caps.resize(start + capacity, CAP_A | CAP_B);
                 start
             }
@@ -222,7 +223,7 @@ impl SegmentStore {
         {
             *slot = HotSegment { count, ..*s };
         }
-        self.links[start..start + segments.len()].fill([None; 2]);
+        self.links[start..start + segments.len()].fill([Link::NONE; 2]);
         self.caps[start..start + segments.len()].fill(CAP_A | CAP_B);
         self.starts[index] = start as u32;
     }
