@@ -52,6 +52,7 @@ mod broadphase;
 mod controller;
 mod geometry;
 pub mod io;
+mod path;
 mod query;
 mod tiles;
 mod volumes;
@@ -69,6 +70,9 @@ pub use geometry::{
     sweep_box_segment, sweep_circle_circle, sweep_circle_segment,
 };
 pub use glam::Vec2;
+pub use path::{
+    FlowField, MAX_NAV_NODES, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, Path,
+};
 pub use query::{CircleHit, Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{
     ActiveSegment, Cell, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError, Owner, SegmentFlags, SegmentRef,

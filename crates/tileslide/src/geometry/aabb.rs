@@ -60,6 +60,23 @@ impl Aabb {
         }
     }
 
+    /// The smallest box that contains both.
+    ///
+    /// ```
+    /// # use tileslide::{Aabb, Vec2};
+    /// let a = Aabb::from_corners(Vec2::ZERO, Vec2::ONE);
+    /// let b = Aabb::from_corners(Vec2::new(2.0, -1.0), Vec2::new(3.0, 0.5));
+    /// let u = a.union(&b);
+    /// assert_eq!((u.min, u.max), (Vec2::new(0.0, -1.0), Vec2::new(3.0, 1.0)));
+    /// ```
+    #[must_use]
+    pub fn union(&self, other: &Aabb) -> Self {
+        Self {
+            min: self.min.min(other.min),
+            max: self.max.max(other.max),
+        }
+    }
+
     /// Width and height.
     #[must_use]
     pub fn size(&self) -> Vec2 {

@@ -67,6 +67,39 @@ impl Segment {
         self.closest_point(p).distance_squared(p)
     }
 
+    /// Squared distance between two segments: 0 when they cross or touch, else the least of
+    /// the four end-point-to-segment distances (the closest pair of points of two
+    /// non-crossing segments always includes an end point).
+    ///
+    /// ```
+    /// # use tileslide::{Segment, Vec2};
+    /// let floor = Segment::new(Vec2::ZERO, Vec2::new(4.0, 0.0));
+    /// let above = Segment::new(Vec2::new(1.0, 2.0), Vec2::new(3.0, 1.0));
+    /// assert_eq!(floor.distance_squared_to_segment(&above), 1.0);
+    /// let across = Segment::new(Vec2::new(2.0, -1.0), Vec2::new(2.0, 1.0));
+    /// assert_eq!(floor.distance_squared_to_segment(&across), 0.0);
+    /// ```
+    #[must_use]
+    pub fn distance_squared_to_segment(&self, other: &Segment) -> f32 {
+        if self.crosses(other) {
+            return 0.0;
+        }
+        self.distance_squared_to(other.a)
+            .min(self.distance_squared_to(other.b))
+            .min(other.distance_squared_to(self.a))
+            .min(other.distance_squared_to(self.b))
+    }
+
+    /// True when the segments properly cross (each one's ends strictly on opposite sides of
+    /// the other's line). Touching and collinear overlaps are left to the end-point
+    /// distances, which are 0 for them.
+    fn crosses(&self, other: &Segment) -> bool {
+        let side = |s: &Segment, p: Vec2| s.delta().perp_dot(p - s.a);
+        let (d1, d2) = (side(self, other.a), side(self, other.b));
+        let (d3, d4) = (side(other, self.a), side(other, self.b));
+        d1 * d2 < 0.0 && d3 * d4 < 0.0
+    }
+
     /// The smallest box that contains the segment.
     #[must_use]
     pub fn aabb(&self) -> Aabb {

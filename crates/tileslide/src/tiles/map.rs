@@ -133,6 +133,9 @@ pub struct TileMap {
     pub(crate) temporaries: Vec<TemporarySegment>,
     /// Changes whenever what the map holds changes (see [`next_revision`]).
     revision: u64,
+    /// Changes whenever its tiles change (not its temporaries): what a navigation grid
+    /// built from the map compares to know it is current.
+    tiles_revision: u64,
     /// Reused buffers for the active segments of the cells an edit recomputes (the cell
     /// and its four neighbours), so an edit does not allocate once warmed up.
     scratch: [Vec<HotSegment>; 5],
@@ -231,6 +234,7 @@ impl TileMap {
             store,
             temporaries: Vec::new(),
             revision: next_revision(),
+            tiles_revision: next_revision(),
             scratch: Default::default(),
         }
     }
@@ -336,6 +340,7 @@ impl TileMap {
         }
         self.tiles[index] = raw;
         self.revision = next_revision();
+        self.tiles_revision = self.revision;
         // Recompute the cell and its four neighbours into the scratch buffers first, and
         // apply them only if the store can take them all: a refused edit changes nothing.
         let (col, row) = (cell.col as i64, cell.row as i64);
@@ -614,6 +619,11 @@ impl TileMap {
     /// they hold the same (a map and its unedited clones).
     pub(crate) fn revision(&self) -> u64 {
         self.revision
+    }
+
+    /// Changes with every edit of the tiles (not of the temporaries).
+    pub(crate) fn tiles_revision(&self) -> u64 {
+        self.tiles_revision
     }
 
     /// The temporary segments, in the order they were added.

@@ -1,0 +1,254 @@
+//! Flow fields: for one goal and one radius, every lattice node's distance to the goal and
+//! its next move there (Dijkstra from the goal over the moves the radius can make), so any
+//! number of agents sharing the goal steer by lookups instead of searches.
+//!
+//! An agent steers towards the farthest of the next few nodes on its way that it can reach
+//! in a straight line, not towards the next node: it cuts the lattice's 45° turns and
+//! never aims at a node behind a corner it would have to round, so agents moved by the
+//! resolver flow around each other and corners instead of catching on them.
+
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+
+use glam::Vec2;
+
+use super::clearance::open_moves;
+use super::lattice::MOVES;
+use super::{NavChange, NavError, NavGrid};
+use crate::tiles::TileMap;
+
+/// Distance of a node the goal cannot be reached from.
+const UNREACHED: u32 = u32::MAX;
+/// `next` of a node that joins the goal straight.
+const TO_GOAL: u8 = u8::MAX;
+/// How many next moves an agent looks ahead along its way.
+const LOOKAHEAD: usize = 8;
+
+/// Distances to one goal for circles of one radius (see the module docs).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FlowField {
+    goal: Vec2,
+    radius: f32,
+    need: u16,
+    /// Per node, cost to the goal ([`UNREACHED`] if none).
+    distance: Vec<u32>,
+    /// Per node, the move to take ([`TO_GOAL`]: go straight to the goal).
+    next: Vec<u8>,
+    /// Map units per cost unit.
+    unit: f32,
+}
+
+impl FlowField {
+    /// The field of `goal` for circles of `radius` on `map` (whose grid is `nav`). If the
+    /// circle does not fit at the goal, no node reaches it.
+    pub fn new(nav: &NavGrid, map: &TileMap, goal: Vec2, radius: f32) -> Result<Self, NavError> {
+        if !goal.is_finite() {
+            return Err(NavError::NonFinite {
+                what: "goal",
+                point: goal,
+            });
+        }
+        let need = nav.check(map, radius)?;
+        let nodes = nav.table.lattice.len();
+        let mut field = Self {
+            goal,
+            radius,
+            need,
+            distance: vec![UNREACHED; nodes],
+            next: vec![TO_GOAL; nodes],
+            unit: nav.table.lattice.unit,
+        };
+        field.fill(nav, map);
+        Ok(field)
+    }
+
+    /// Dijkstra from the nodes that join the goal straight.
+    fn fill(&mut self, nav: &NavGrid, map: &TileMap) {
+        let table = &nav.table;
+        let lattice = &table.lattice;
+        self.distance.fill(UNREACHED);
+        self.next.fill(TO_GOAL);
+        let mut open = BinaryHeap::new();
+        for a in nav.attach(map, self.goal, self.radius) {
+            let n = a.node as usize;
+            if a.cost < self.distance[n] {
+                self.distance[n] = a.cost;
+                open.push(Reverse((a.cost, a.node)));
+            }
+        }
+        while let Some(Reverse((d, node))) = open.pop() {
+            let n = node as usize;
+            if d > self.distance[n] {
+                continue;
+            }
+            let (i, j) = lattice.coords(n);
+            let mut bits = open_moves(table, n, i, j, self.need);
+            while bits != 0 {
+                let dir = bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                let (dx, dy) = MOVES[dir];
+                let m = lattice.index((i as i32 + dx) as u32, (j as i32 + dy) as u32);
+                let nd = d.saturating_add(lattice.costs[dir]);
+                if nd < self.distance[m] {
+                    self.distance[m] = nd;
+                    // From m, the way on is the opposite move.
+                    self.next[m] = ((dir + 4) % 8) as u8;
+                    open.push(Reverse((nd, m as u32)));
+                }
+            }
+        }
+    }
+
+    /// The goal.
+    #[must_use]
+    pub fn goal(&self) -> Vec2 {
+        self.goal
+    }
+
+    /// The radius the field serves.
+    #[must_use]
+    pub fn radius(&self) -> f32 {
+        self.radius
+    }
+
+    /// The best node `p` joins and the cost through it, if `p` reaches the goal.
+    fn entry(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Option<(u32, u32)> {
+        nav.attach(map, p, self.radius)
+            .into_iter()
+            .filter(|a| self.distance[a.node as usize] != UNREACHED)
+            .map(|a| {
+                (
+                    a.cost.saturating_add(self.distance[a.node as usize]),
+                    a.node,
+                )
+            })
+            .min()
+    }
+
+    /// The length of the way from `p` to the goal along the field (map units), or `None`
+    /// if a circle at `p` cannot reach it.
+    pub fn distance(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Result<Option<f32>, NavError> {
+        self.check(nav, map, p)?;
+        Ok(self
+            .entry(nav, map, p)
+            .map(|(cost, _)| cost as f32 * self.unit))
+    }
+
+    /// The unit direction a circle at `p` should move in to reach the goal: towards the
+    /// farthest of the next few points on its way that it reaches in a straight line.
+    /// `None` if it cannot reach the goal or is on it.
+    pub fn direction(
+        &self,
+        nav: &NavGrid,
+        map: &TileMap,
+        p: Vec2,
+    ) -> Result<Option<Vec2>, NavError> {
+        self.check(nav, map, p)?;
+        let Some((_, node)) = self.entry(nav, map, p) else {
+            return Ok(None);
+        };
+        let lattice = &nav.table.lattice;
+        let clear =
+            |q: Vec2| nav.table.segment_clearance(map, p, q) >= self.radius + nav.table.margin;
+        // The way on: up to LOOKAHEAD nodes, then the goal if reached.
+        let mut way = Vec::with_capacity(LOOKAHEAD + 1);
+        let mut n = node as usize;
+        way.push(lattice.position_of(n));
+        while way.len() <= LOOKAHEAD {
+            let d = self.next[n];
+            if d == TO_GOAL {
+                way.push(self.goal);
+                break;
+            }
+            let (i, j) = lattice.coords(n);
+            let (dx, dy) = MOVES[d as usize];
+            n = lattice.index((i as i32 + dx) as u32, (j as i32 + dy) as u32);
+            way.push(lattice.position_of(n));
+        }
+        // The farthest point of the way in a straight line; the entry node always is.
+        let target = way
+            .iter()
+            .rev()
+            .find(|&&q| q != p && clear(q))
+            .copied()
+            .unwrap_or(way[0]);
+        Ok((target - p).try_normalize())
+    }
+
+    /// True when `change` opened or closed, for this field's radius, a move that touches a
+    /// node the field reaches: then [`refresh`](Self::refresh) it.
+    #[must_use]
+    pub fn is_affected_by(&self, nav: &NavGrid, change: &NavChange) -> bool {
+        let lattice = &nav.table.lattice;
+        change.flips_for(self.need, |m| {
+            let n = m.node as usize;
+            let (i, j) = lattice.coords(n);
+            let other = lattice
+                .neighbour(i, j, m.dir as usize)
+                .map(|(a, b)| lattice.index(a, b));
+            self.distance[n] != UNREACHED || other.is_some_and(|o| self.distance[o] != UNREACHED)
+        })
+    }
+
+    /// Recomputes the field against the grid's current state (after [`NavGrid::update`]).
+    pub fn refresh(&mut self, nav: &NavGrid, map: &TileMap) -> Result<(), NavError> {
+        nav.check(map, self.radius)?;
+        if self.distance.len() != nav.table.lattice.len() {
+            return Err(NavError::Stale);
+        }
+        self.fill(nav, map);
+        Ok(())
+    }
+
+    fn check(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Result<(), NavError> {
+        if !p.is_finite() {
+            return Err(NavError::NonFinite {
+                what: "p",
+                point: p,
+            });
+        }
+        nav.check(map, self.radius)?;
+        if self.distance.len() != nav.table.lattice.len() {
+            return Err(NavError::Stale);
+        }
+        Ok(())
+    }
+
+    /// Per node: its distance and the node its next move reaches (tests check that every
+    /// next move goes downhill).
+    #[cfg(test)]
+    pub(crate) fn downhill_pairs(&self, nav: &NavGrid) -> Vec<(u32, u32)> {
+        let lattice = &nav.table.lattice;
+        (0..self.distance.len())
+            .filter(|&n| self.distance[n] != UNREACHED && self.next[n] != TO_GOAL)
+            .map(|n| {
+                let (i, j) = lattice.coords(n);
+                let (dx, dy) = MOVES[self.next[n] as usize];
+                let m = lattice.index((i as i32 + dx) as u32, (j as i32 + dy) as u32);
+                (self.distance[n], self.distance[m])
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::ascii;
+    use crate::path::NavConfig;
+
+    #[test]
+    fn every_next_move_goes_downhill() {
+        let map = ascii::parse(
+            "##########\n#....#...#\n#.##.#.#.#\n#.#....#.#\n#...##...#\n##########",
+            "t.txt",
+            1.0,
+        )
+        .unwrap();
+        let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let field = FlowField::new(&nav, &map, Vec2::new(8.5, 4.5), 0.3).unwrap();
+        let pairs = field.downhill_pairs(&nav);
+        assert!(pairs.len() > 40, "{}", pairs.len());
+        assert!(pairs.iter().all(|&(here, there)| there < here));
+    }
+}

@@ -1,0 +1,429 @@
+//! Pathfinding for circles of any radius, and flow fields for crowds.
+//!
+//! A [`NavGrid`] is built from a map once: for every move between neighbouring nodes of a
+//! half-cell lattice it stores how wide a circle can make the move, measured against the
+//! map's actual segments (ramps and partial tiles included, see `clearance`). Then:
+//! - [`NavGrid::find_path`] runs A* for a circle of radius `r` (8 directions; a diagonal
+//!   move is allowed only if the circle clears the corner) between any two points and
+//!   smooths the result into straight runs, each checked with the map's circle cast;
+//! - [`FlowField`] holds, for one goal and one radius, every node's distance to the goal
+//!   and the way there, for crowds that share the goal;
+//! - [`NavGrid::update`] brings the grid up to date after a tile edit, recomputing only the
+//!   moves near the edited cell, and returns a [`NavChange`] that tells which paths and
+//!   fields the edit affects.
+//!
+//! ```
+//! use tileslide::{io::ascii, NavConfig, NavGrid, Vec2};
+//! let mut map = ascii::parse("\
+//! ##########
+//! #........#
+//! #.######.#
+//! #........#
+//! ##########", "doc.txt", 1.0)?;
+//! let mut nav = NavGrid::new(&map, NavConfig::default())?;
+//! // From the bottom-left corridor to the bottom right: straight along the corridor.
+//! let path = nav.find_path(&map, Vec2::new(1.5, 3.5), Vec2::new(8.5, 3.5), 0.4)?.unwrap();
+//! assert_eq!(path.points(), &[Vec2::new(1.5, 3.5), Vec2::new(8.5, 3.5)]);
+//! // Too wide for the one-cell corridors: no path.
+//! assert!(nav.find_path(&map, Vec2::new(1.5, 3.5), Vec2::new(8.5, 1.5), 0.6)?.is_none());
+//! // Dig out the middle: the way from the top corridor to the bottom one gets shorter.
+//! map.clear_tile(tileslide::Cell::new(4, 2))?;
+//! let change = nav.update(&map, tileslide::Cell::new(4, 2))?;
+//! // It opens a way right beside the path: the path may no longer be the best one.
+//! assert!(path.is_affected_by(&change));
+//! let up = nav.find_path(&map, Vec2::new(4.5, 3.5), Vec2::new(4.5, 1.5), 0.4)?.unwrap();
+//! assert!((up.length() - 2.0).abs() < 1e-4);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+mod clearance;
+mod flow;
+mod lattice;
+mod search;
+mod smooth;
+
+use glam::Vec2;
+use thiserror::Error;
+
+pub use flow::FlowField;
+
+use crate::geometry::Aabb;
+use crate::tiles::{Cell, SegmentFlags, TileMap};
+use clearance::{ChangedMove, Clearance};
+use search::{Attach, Search};
+
+/// The eight lattice moves as (di, dj) node steps, in the order of the bits of
+/// [`NavGrid::open_moves`]: moves `d` and `d + 4` are opposite.
+pub const NAV_MOVES: [(i32, i32); 8] = lattice::MOVES;
+
+/// Most lattice nodes a navigation grid takes (about a 5,800 × 5,800-cell map): six bytes
+/// a node, so at most 400 MB.
+pub const MAX_NAV_NODES: usize = 1 << 26;
+
+/// How a [`NavGrid`] is built.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NavConfig {
+    /// The widest circle the grid serves (map units). Clearances are measured up to this,
+    /// so building costs more for larger values. At most 31 of the map's shorter cell side.
+    pub max_radius: f32,
+    /// Segments with one of these flags block (from both sides: a path never relies on a
+    /// one-way platform letting it through).
+    pub mask: SegmentFlags,
+}
+
+impl Default for NavConfig {
+    /// Circles up to one cell (of a unit-cell map) wide; solid segments block.
+    fn default() -> Self {
+        Self {
+            max_radius: 1.0,
+            mask: SegmentFlags::SOLID,
+        }
+    }
+}
+
+/// What a navigation call refuses.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum NavError {
+    /// `max_radius` is not positive and finite, or too large for the cell size.
+    #[error("max_radius {max_radius} must be positive, finite and at most {limit} (31 cells)")]
+    BadMaxRadius {
+        /// The value given.
+        max_radius: f32,
+        /// The largest allowed for this map.
+        limit: f32,
+    },
+    /// The map has more lattice nodes than [`MAX_NAV_NODES`].
+    #[error("a {width} × {height} map has {nodes} navigation nodes, more than {MAX_NAV_NODES}")]
+    TooLarge {
+        /// Map width in cells.
+        width: u32,
+        /// Map height in cells.
+        height: u32,
+        /// Its lattice nodes.
+        nodes: u64,
+    },
+    /// A radius that is not positive and finite, or above the grid's `max_radius`.
+    #[error(
+        "radius {radius} must be positive, finite and at most the grid's max_radius {max_radius}"
+    )]
+    BadRadius {
+        /// The radius asked for.
+        radius: f32,
+        /// The grid's `max_radius`.
+        max_radius: f32,
+    },
+    /// A point with a NaN or infinite coordinate.
+    #[error("the {what} point {point} is not finite")]
+    NonFinite {
+        /// Which point (`from`, `to`, `goal`, …).
+        what: &'static str,
+        /// Its value.
+        point: Vec2,
+    },
+    /// The map is not the one the grid was built for, or its tiles changed since without
+    /// [`NavGrid::update`].
+    #[error(
+        "the navigation grid is out of date: the map's tiles changed since it was built or updated (call NavGrid::update after each edit)"
+    )]
+    Stale,
+    /// A cell outside the map.
+    #[error("cell ({}, {}) is outside the map", .0.col, .0.row)]
+    CellOutside(Cell),
+}
+
+/// Navigation data for one map: move clearances on a half-cell lattice and search scratch.
+#[derive(Clone, Debug)]
+pub struct NavGrid {
+    table: Clearance,
+    max_radius: f32,
+    search: Search,
+    /// The map's tiles revision this grid matches.
+    tiles_revision: u64,
+    size: (u32, u32),
+}
+
+/// A path found by [`NavGrid::find_path`]: straight runs from the start point to the goal
+/// point, each clear for the radius it was found for.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Path {
+    points: Vec<Vec2>,
+    length: f32,
+    radius: f32,
+    /// Clearance steps the radius needs (for [`Path::is_affected_by`]).
+    need: u16,
+    bounds: Aabb,
+}
+
+impl Path {
+    fn new(points: Vec<Vec2>, radius: f32, need: u16) -> Self {
+        let length = points.windows(2).map(|w| w[0].distance(w[1])).sum();
+        let mut bounds = Aabb::from_corners(points[0], points[0]);
+        for &p in &points {
+            bounds = bounds.union(&Aabb::from_corners(p, p));
+        }
+        Self {
+            points,
+            length,
+            radius,
+            need,
+            bounds: bounds.expand(radius),
+        }
+    }
+
+    /// The corners, from the start point to the goal point.
+    #[must_use]
+    pub fn points(&self) -> &[Vec2] {
+        &self.points
+    }
+
+    /// Total length (map units).
+    #[must_use]
+    pub fn length(&self) -> f32 {
+        self.length
+    }
+
+    /// The radius the path was found for.
+    #[must_use]
+    pub fn radius(&self) -> f32 {
+        self.radius
+    }
+
+    /// True when `change` may have blocked this path or opened a shorter way near it: a
+    /// move within reach of the path opened or closed for its radius. Far-away edits and
+    /// edits that only change clearances no circle of this radius notices do not affect it.
+    #[must_use]
+    pub fn is_affected_by(&self, change: &NavChange) -> bool {
+        change.region.is_some_and(|r| r.overlaps(&self.bounds))
+            && change.flips_for(self.need, |_| true)
+    }
+}
+
+/// What a tile edit changed in a [`NavGrid`] (from [`NavGrid::update`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct NavChange {
+    moves: Vec<ChangedMove>,
+    /// The moves' extent (map units), `None` if nothing changed.
+    region: Option<Aabb>,
+}
+
+impl NavChange {
+    /// True when no move's clearance changed.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.moves.is_empty()
+    }
+
+    /// The region whose moves changed, if any.
+    #[must_use]
+    pub fn region(&self) -> Option<Aabb> {
+        self.region
+    }
+
+    /// Number of moves whose clearance changed.
+    #[must_use]
+    pub fn changed_moves(&self) -> usize {
+        self.moves.len()
+    }
+
+    /// True when some move from a node `node_filter` accepts opened or closed for a circle
+    /// needing `need` clearance steps.
+    fn flips_for(&self, need: u16, mut touches: impl FnMut(&ChangedMove) -> bool) -> bool {
+        self.moves
+            .iter()
+            .any(|m| (m.before >= need) != (m.after >= need) && touches(m))
+    }
+}
+
+impl NavGrid {
+    /// The navigation grid of `map` for circles up to `config.max_radius`.
+    pub fn new(map: &TileMap, config: NavConfig) -> Result<Self, NavError> {
+        let limit = map.cell_size().min_element() * 31.0;
+        if !(config.max_radius > 0.0 && config.max_radius <= limit) {
+            return Err(NavError::BadMaxRadius {
+                max_radius: config.max_radius,
+                limit,
+            });
+        }
+        let nodes = (2 * u64::from(map.width()) + 1) * (2 * u64::from(map.height()) + 1);
+        if nodes > MAX_NAV_NODES as u64 {
+            return Err(NavError::TooLarge {
+                width: map.width(),
+                height: map.height(),
+                nodes,
+            });
+        }
+        Ok(Self {
+            table: Clearance::build(map, config.max_radius, config.mask),
+            max_radius: config.max_radius,
+            search: Search::default(),
+            tiles_revision: map.tiles_revision(),
+            size: (map.width(), map.height()),
+        })
+    }
+
+    /// The widest circle this grid serves.
+    #[must_use]
+    pub fn max_radius(&self) -> f32 {
+        self.max_radius
+    }
+
+    /// Brings the grid up to date after `map.set_tile(cell, …)` (or `clear_tile`), in time
+    /// independent of the map's size. Call it once per edited cell, in any order; the grid
+    /// is then what [`NavGrid::new`] would build.
+    pub fn update(&mut self, map: &TileMap, cell: Cell) -> Result<NavChange, NavError> {
+        if (map.width(), map.height()) != self.size
+            || map.cell_size() * 0.5 != self.table.lattice.step
+        {
+            return Err(NavError::Stale);
+        }
+        if cell.col >= map.width() || cell.row >= map.height() {
+            return Err(NavError::CellOutside(cell));
+        }
+        let moves = self.table.update_cell(map, cell);
+        self.tiles_revision = map.tiles_revision();
+        let lattice = &self.table.lattice;
+        let region = moves.iter().fold(None, |acc: Option<Aabb>, m| {
+            let p = lattice.position_of(m.node as usize);
+            let q = p + lattice.step
+                * Vec2::new(
+                    lattice::MOVES[m.dir as usize].0 as f32,
+                    lattice::MOVES[m.dir as usize].1 as f32,
+                );
+            let b = Aabb::from_corners(p, q);
+            Some(acc.map_or(b, |a| a.union(&b)))
+        });
+        Ok(NavChange { moves, region })
+    }
+
+    pub(crate) fn check(&self, map: &TileMap, radius: f32) -> Result<u16, NavError> {
+        if map.tiles_revision() != self.tiles_revision {
+            return Err(NavError::Stale);
+        }
+        if !(radius > 0.0 && radius <= self.max_radius) {
+            return Err(NavError::BadRadius {
+                radius,
+                max_radius: self.max_radius,
+            });
+        }
+        Ok(self.table.need(radius))
+    }
+
+    /// The nodes around `p` a circle of `radius` reaches from `p` in a straight line, with
+    /// the line's cost; empty if the circle does not fit at `p`.
+    pub(crate) fn attach(&self, map: &TileMap, p: Vec2, radius: f32) -> Vec<Attach> {
+        let lattice = &self.table.lattice;
+        let need = radius + self.table.margin;
+        if self.table.segment_clearance(map, p, p) < need {
+            return Vec::new();
+        }
+        let base = lattice.local(p).floor();
+        let mut out = Vec::new();
+        for dj in -1..=2 {
+            for di in -1..=2 {
+                let (i, j) = (base.x as i64 + di, base.y as i64 + dj);
+                if i < 0 || j < 0 || i >= i64::from(lattice.nx) || j >= i64::from(lattice.ny) {
+                    continue;
+                }
+                let q = lattice.position(i as u32, j as u32);
+                if self.table.segment_clearance(map, p, q) >= need {
+                    out.push(Attach {
+                        node: lattice.index(i as u32, j as u32) as u32,
+                        cost: lattice.cost_of_length(p.distance(q)),
+                    });
+                }
+            }
+        }
+        out
+    }
+
+    /// The shortest path this grid finds for a circle of `radius` from `from` to `to`,
+    /// smoothed into straight runs; `None` when the circle does not fit at either end or
+    /// cannot get from one to the other. Every run is clear by the map's circle cast with
+    /// `radius`, so a body following it never touches a wall.
+    pub fn find_path(
+        &mut self,
+        map: &TileMap,
+        from: Vec2,
+        to: Vec2,
+        radius: f32,
+    ) -> Result<Option<Path>, NavError> {
+        for (what, point) in [("from", from), ("to", to)] {
+            if !point.is_finite() {
+                return Err(NavError::NonFinite { what, point });
+            }
+        }
+        let need = self.check(map, radius)?;
+        let mask = self.table.mask;
+        let starts = self.attach(map, from, radius);
+        let goals = self.attach(map, to, radius);
+        if starts.is_empty() || goals.is_empty() {
+            return Ok(None);
+        }
+        // Near ends joined straight: no search needed.
+        let cells = from.distance(to) / map.cell_size().min_element();
+        if cells <= 4.0 && self.table.segment_clearance(map, from, to) >= radius + self.table.margin
+        {
+            return Ok(Some(Path::new(vec![from, to], radius, need)));
+        }
+        let Some(nodes) = self.search.find(&self.table, need, &starts, &goals) else {
+            return Ok(None);
+        };
+        let lattice = &self.table.lattice;
+        let mut points = Vec::with_capacity(nodes.len() + 2);
+        points.push(from);
+        points.extend(nodes.iter().map(|&n| lattice.position_of(n as usize)));
+        points.push(to);
+        let smoothed = smooth::smooth(map, &points, radius, mask);
+        Ok(Some(Path::new(smoothed, radius, need)))
+    }
+
+    /// Lattice nodes per row and per column (`2 · width + 1`, `2 · height + 1`): a node
+    /// every half cell, on every cell corner, edge midpoint and centre.
+    #[must_use]
+    pub fn nodes(&self) -> (u32, u32) {
+        (self.table.lattice.nx, self.table.lattice.ny)
+    }
+
+    /// Where node (`i`, `j`) is: the map's origin plus (`i`, `j`) half cells.
+    #[must_use]
+    pub fn node_position(&self, i: u32, j: u32) -> Vec2 {
+        self.table.lattice.position(i, j)
+    }
+
+    /// The cost the searches give move `d` of [`NAV_MOVES`]: its length in units of 1/1024
+    /// of the shorter half-cell side, rounded.
+    #[must_use]
+    pub fn move_cost(&self, d: usize) -> u32 {
+        self.table.lattice.costs[d % 8]
+    }
+
+    /// The moves (bit `d` for move `d` of [`NAV_MOVES`]) a circle of `radius` can make
+    /// from node (`i`, `j`) without coming nearer a wall than its radius plus the grid's
+    /// margin: the graph every search here runs on. 0 for a node off the lattice.
+    pub fn open_moves(&self, map: &TileMap, i: u32, j: u32, radius: f32) -> Result<u8, NavError> {
+        let need = self.check(map, radius)?;
+        let lattice = &self.table.lattice;
+        if i >= lattice.nx || j >= lattice.ny {
+            return Ok(0);
+        }
+        Ok(clearance::open_moves(
+            &self.table,
+            lattice.index(i, j),
+            i,
+            j,
+            need,
+        ))
+    }
+
+    /// True when a circle of `radius` fits at `p` (clear of walls by the grid's margin).
+    pub fn fits(&self, map: &TileMap, p: Vec2, radius: f32) -> Result<bool, NavError> {
+        if !p.is_finite() {
+            return Err(NavError::NonFinite {
+                what: "p",
+                point: p,
+            });
+        }
+        self.check(map, radius)?;
+        Ok(self.table.segment_clearance(map, p, p) >= radius + self.table.margin)
+    }
+}
