@@ -38,7 +38,9 @@
 
 mod clearance;
 mod flow;
+mod landmarks;
 mod lattice;
+mod radius_class;
 mod search;
 mod smooth;
 
@@ -50,14 +52,20 @@ pub use flow::FlowField;
 use crate::geometry::Aabb;
 use crate::tiles::{Cell, SegmentFlags, TileMap};
 use clearance::{ChangedMove, Clearance};
+use radius_class::RadiusClass;
 use search::{Attach, Search};
+
+/// Radius classes a grid keeps moves and parts for (the least recently used goes first).
+const CACHED_CLASSES: usize = 8;
 
 /// The eight lattice moves as (di, dj) node steps, in the order of the bits of
 /// [`NavGrid::open_moves`]: moves `d` and `d + 4` are opposite.
 pub const NAV_MOVES: [(i32, i32); 8] = lattice::MOVES;
 
-/// Most lattice nodes a navigation grid takes (about a 5,800 × 5,800-cell map): six bytes
-/// a node, so at most 400 MB.
+/// Most lattice nodes a navigation grid takes (about a 4,096 × 4,096-cell map). A grid
+/// keeps about 22 bytes a node (clearances and search scratch), and 37 more for each radius
+/// class searched (moves, parts and landmark distances), so a 256 × 256 map takes about
+/// 6 MB, plus 10 MB a radius.
 pub const MAX_NAV_NODES: usize = 1 << 26;
 
 /// How a [`NavGrid`] is built.
@@ -137,6 +145,8 @@ pub struct NavGrid {
     table: Clearance,
     max_radius: f32,
     search: Search,
+    /// Moves and parts per radius class, most recently used last.
+    classes: Vec<RadiusClass>,
     /// The map's tiles revision this grid matches.
     tiles_revision: u64,
     size: (u32, u32),
@@ -256,6 +266,7 @@ impl NavGrid {
             table: Clearance::build(map, config.max_radius, config.mask),
             max_radius: config.max_radius,
             search: Search::default(),
+            classes: Vec::new(),
             tiles_revision: map.tiles_revision(),
             size: (map.width(), map.height()),
         })
@@ -280,6 +291,9 @@ impl NavGrid {
             return Err(NavError::CellOutside(cell));
         }
         let moves = self.table.update_cell(map, cell);
+        for class in &mut self.classes {
+            class.apply(&self.table, &moves);
+        }
         self.tiles_revision = map.tiles_revision();
         let lattice = &self.table.lattice;
         let region = moves.iter().fold(None, |acc: Option<Aabb>, m| {
@@ -365,7 +379,19 @@ impl NavGrid {
         {
             return Ok(Some(Path::new(vec![from, to], radius, need)));
         }
-        let Some(nodes) = self.search.find(&self.table, need, &starts, &goals) else {
+        let k = self.class(need);
+        let class = &mut self.classes[k];
+        let lattice = &self.table.lattice;
+        let (parts, landmarks, moves) = class.parts(lattice);
+        let joined = starts.iter().any(|s| {
+            goals
+                .iter()
+                .any(|g| parts[s.node as usize] == parts[g.node as usize])
+        });
+        if !joined {
+            return Ok(None);
+        }
+        let Some(nodes) = self.search.find(lattice, moves, landmarks, &starts, &goals) else {
             return Ok(None);
         };
         let lattice = &self.table.lattice;
@@ -375,6 +401,23 @@ impl NavGrid {
         points.push(to);
         let smoothed = smooth::smooth(map, &points, radius, mask);
         Ok(Some(Path::new(smoothed, radius, need)))
+    }
+
+    /// The index in `classes` of the radius class `need`, built on first use.
+    fn class(&mut self, need: u16) -> usize {
+        match self.classes.iter().position(|c| c.need == need) {
+            Some(k) => {
+                let class = self.classes.remove(k);
+                self.classes.push(class);
+            }
+            None => {
+                if self.classes.len() == CACHED_CLASSES {
+                    self.classes.remove(0);
+                }
+                self.classes.push(RadiusClass::build(&self.table, need));
+            }
+        }
+        self.classes.len() - 1
     }
 
     /// Lattice nodes per row and per column (`2 · width + 1`, `2 · height + 1`): a node

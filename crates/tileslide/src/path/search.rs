@@ -12,8 +12,8 @@
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-use super::clearance::{Clearance, open_moves};
-use super::lattice::MOVES;
+use super::landmarks::Landmarks;
+use super::lattice::{Lattice, MOVES};
 
 /// `parent` of a node the search started from.
 const START: u8 = u8::MAX;
@@ -66,17 +66,17 @@ impl Search {
         self.open.clear();
     }
 
-    /// The cheapest lattice path for a circle needing `need` clearance steps, from any of
-    /// `starts` to any of `goals` (each with its joining cost): the nodes from the start
-    /// side to the goal side, or `None` if no path exists.
+    /// The cheapest lattice path over the open `moves` (per node, see `RadiusClass`) from
+    /// any of `starts` to any of `goals` (each with its joining cost): the nodes from the
+    /// start side to the goal side, or `None` if no path exists.
     pub fn find(
         &mut self,
-        table: &Clearance,
-        need: u16,
+        lattice: &Lattice,
+        moves: &[u8],
+        landmarks: &Landmarks,
         starts: &[Attach],
         goals: &[Attach],
     ) -> Option<Vec<u32>> {
-        let lattice = &table.lattice;
         self.begin(lattice.len());
         let generation = self.generation;
         let goal_at = |attach: &Attach| lattice.coords(attach.node as usize);
@@ -86,10 +86,12 @@ impl Search {
             .map(|a| lattice.octile(goal_at(a), centre))
             .max()
             .unwrap_or(0);
+        let bounds = landmarks.goal_bounds(goals.iter().map(|a| a.node));
         let h = |index: usize| {
-            lattice
+            let octile = lattice
                 .octile(lattice.coords(index), centre)
-                .saturating_sub(slack)
+                .saturating_sub(slack);
+            octile.max(landmarks.lower_bound(index, &bounds))
         };
         for a in goals {
             self.target[a.node as usize] = generation;
@@ -123,7 +125,7 @@ impl Search {
                 }
             }
             let (i, j) = lattice.coords(n);
-            let mut bits = open_moves(table, n, i, j, need);
+            let mut bits = moves[n];
             while bits != 0 {
                 let d = bits.trailing_zeros() as usize;
                 bits &= bits - 1;

@@ -1,0 +1,112 @@
+//! What a navigation grid keeps per radius class (per clearance need): every node's open
+//! moves as one byte, and the connected parts of that graph.
+//!
+//! The moves byte turns a search's eight clearance comparisons per node into one load. The
+//! parts answer "is the goal reachable at all?" before any search: A* proves a goal
+//! unreachable only by exhausting the start's whole part, which on a dungeon map is most
+//! of the map, so an unreachable query would cost more than any reachable one.
+
+use std::collections::VecDeque;
+
+use super::clearance::{ChangedMove, Clearance, open_moves};
+use super::landmarks::Landmarks;
+use super::lattice::{Lattice, MOVES};
+
+/// The moves and parts for circles needing `need` clearance steps.
+#[derive(Clone, Debug)]
+pub(crate) struct RadiusClass {
+    pub need: u16,
+    /// Per node, bit `d` set when move `d` is open.
+    pub moves: Vec<u8>,
+    /// Per node, the smallest node index of its part; valid when `parts_current`.
+    parts: Vec<u32>,
+    parts_current: bool,
+    /// Landmark distances (see `landmarks`), built with the parts; `None` after a move
+    /// opened (closing moves keep their bounds valid).
+    landmarks: Option<Landmarks>,
+}
+
+impl RadiusClass {
+    pub fn build(table: &Clearance, need: u16) -> Self {
+        let lattice = &table.lattice;
+        let mut moves = vec![0u8; lattice.len()];
+        for j in 0..lattice.ny {
+            for i in 0..lattice.nx {
+                let n = lattice.index(i, j);
+                moves[n] = open_moves(table, n, i, j, need);
+            }
+        }
+        Self {
+            need,
+            moves,
+            parts: Vec::new(),
+            parts_current: false,
+            landmarks: None,
+        }
+    }
+
+    /// Brings the moves up to date after the clearances of `changed` moves changed (both
+    /// of each move's nodes see it); the parts are recomputed when next asked for, if a
+    /// move opened or closed for this class.
+    pub fn apply(&mut self, table: &Clearance, changed: &[ChangedMove]) {
+        let lattice = &table.lattice;
+        for m in changed {
+            if (m.before >= self.need) == (m.after >= self.need) {
+                continue;
+            }
+            self.parts_current = false;
+            if m.after >= self.need {
+                self.landmarks = None;
+            }
+            let n = m.node as usize;
+            let (i, j) = lattice.coords(n);
+            self.moves[n] = open_moves(table, n, i, j, self.need);
+            if let Some((a, b)) = lattice.neighbour(i, j, m.dir as usize) {
+                let o = lattice.index(a, b);
+                self.moves[o] = open_moves(table, o, a, b, self.need);
+            }
+        }
+    }
+
+    /// Per node, an id shared exactly by the nodes connected to it; the landmarks; and the
+    /// moves.
+    pub fn parts(&mut self, lattice: &Lattice) -> (&[u32], &Landmarks, &[u8]) {
+        if !self.parts_current {
+            self.parts = label_parts(lattice, &self.moves);
+            self.parts_current = true;
+        }
+        let landmarks = self
+            .landmarks
+            .get_or_insert_with(|| Landmarks::build(lattice, &self.moves, &self.parts));
+        (&self.parts, landmarks, &self.moves)
+    }
+}
+
+/// Breadth-first labelling of the graph's connected parts.
+fn label_parts(lattice: &Lattice, moves: &[u8]) -> Vec<u32> {
+    const UNLABELLED: u32 = u32::MAX;
+    let mut parts = vec![UNLABELLED; moves.len()];
+    let mut queue = VecDeque::new();
+    for start in 0..moves.len() {
+        if parts[start] != UNLABELLED {
+            continue;
+        }
+        parts[start] = start as u32;
+        queue.push_back(start);
+        while let Some(n) = queue.pop_front() {
+            let (i, j) = lattice.coords(n);
+            let mut bits = moves[n];
+            while bits != 0 {
+                let d = bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                let (dx, dy) = MOVES[d];
+                let m = lattice.index((i as i32 + dx) as u32, (j as i32 + dy) as u32);
+                if parts[m] == UNLABELLED {
+                    parts[m] = start as u32;
+                    queue.push_back(m);
+                }
+            }
+        }
+    }
+    parts
+}
