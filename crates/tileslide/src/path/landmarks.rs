@@ -58,13 +58,9 @@ impl Landmarks {
                 .max_by_key(|&n| (nearest[n], Reverse(n)))
                 .unwrap_or(part as usize);
             dijkstra(lattice, moves, next, &mut scratch);
-            for n in 0..nodes {
-                distance[n][k] = scratch[n];
-                if k == 0 {
-                    nearest[n] = scratch[n];
-                } else {
-                    nearest[n] = nearest[n].min(scratch[n]);
-                }
+            for ((row, near), &d) in distance.iter_mut().zip(&mut nearest).zip(&scratch) {
+                row[k] = d;
+                *near = if k == 0 { d } else { (*near).min(d) };
             }
         }
         Self { distance }
