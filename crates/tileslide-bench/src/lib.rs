@@ -2,5 +2,6 @@
 
 pub mod broad;
 pub mod crowd;
+pub mod paths;
 pub mod peers;
 pub mod rays;

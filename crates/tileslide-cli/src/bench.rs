@@ -9,10 +9,16 @@ use tileslide_bench::crowd::{
     CrowdContender, CrowdResult, ParrySegmentsCrowd, ParryVoxelsCrowd, RapierCrowd, TileslideCrowd,
     run_crowd,
 };
+use tileslide_bench::paths::{
+    PATHS_QUERIES, PATHS_RADII, PathScene, PathsResult, contenders as path_contenders,
+    count_mismatches, run_paths,
+};
 use tileslide_bench::rays::{RaysConfig, RaysReport, run_rays};
 use tileslide_scenes::{
     BROAD_RADIUS, CROWD_RADIUS, CrowdBody, Scene, SolidGrid, dungeon256, scene_crowd,
 };
+
+use crate::json::number;
 
 #[derive(Subcommand, Debug)]
 pub enum BenchCommand {
@@ -58,6 +64,17 @@ pub enum BenchCommand {
         #[arg(long)]
         json: bool,
     },
+    /// The "paths" scene: paths for circles of radius 0.3 and 0.8 between random free
+    /// nodes of dungeon256's navigation lattice; tileslide's find_path (A* and smoothing)
+    /// vs the pathfinding crate's A* on the same graph.
+    Paths {
+        /// Queries per radius.
+        #[arg(long, default_value_t = PATHS_QUERIES as u64, value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+        queries: u64,
+        /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 fn parse_scene(name: &str) -> Result<Scene, String> {
@@ -74,6 +91,7 @@ pub fn run(which: BenchCommand) -> Result<()> {
     match which {
         BenchCommand::Crowd { n, steps, json } => crowd(n as usize, steps, json),
         BenchCommand::Broad { n, updates, json } => broad(n as usize, updates as usize, json),
+        BenchCommand::Paths { queries, json } => paths(queries as usize, json),
         BenchCommand::Rays {
             scene,
             n,
@@ -217,6 +235,71 @@ fn broad(n: usize, updates: usize, json: bool) -> Result<()> {
         );
     }
     print_ratio(&results, |r| 1.0 / r.ms_per_update, |r| r.name.as_str());
+    Ok(())
+}
+
+fn paths(n: usize, json: bool) -> Result<()> {
+    let scene = PathScene::dungeon256().map_err(|e| anyhow!("dungeon256: {e}"))?;
+    let mut runs = Vec::new();
+    for radius in PATHS_RADII {
+        let queries = scene.queries(radius, n).map_err(|e| anyhow!("{e}"))?;
+        for contender in path_contenders(&scene) {
+            runs.push((radius, contender, queries.clone()));
+        }
+    }
+    let mut results: Vec<PathsResult> =
+        with_progress(runs, |(radius, mut contender, queries), bar| {
+            bar.set_message(format!("bench paths r = {radius}: {}", contender.name()));
+            run_paths(contender.as_mut(), &scene, radius, &queries).map_err(|e| anyhow!("{e}"))
+        })?;
+    count_mismatches(&mut results);
+    if json {
+        let list: Vec<_> = results
+            .iter()
+            .map(|r| {
+                json!({
+                    "radius": number(r.radius),
+                    "name": r.name,
+                    "ms_total": r.ms_total,
+                    "us_per_query": r.us_per_query,
+                    "found": r.found,
+                    "mean_length": r.mean_length,
+                    "mismatches": r.mismatches,
+                })
+            })
+            .collect();
+        println!(
+            "{}",
+            json!({"scene": "paths", "queries": n, "results": list})
+        );
+        return Ok(());
+    }
+    println!(
+        "paths on dungeon256: {n} queries per radius between random free lattice nodes, single thread"
+    );
+    println!(
+        "{:<6} {:<18} {:>10} {:>9} {:>7} {:>12} {:>10}",
+        "radius", "engine", "ms total", "µs/query", "found", "mean length", "mismatches"
+    );
+    for r in &results {
+        println!(
+            "{:<6} {:<18} {:>10.3} {:>9.2} {:>7} {:>12.3} {:>10}",
+            r.radius, r.name, r.ms_total, r.us_per_query, r.found, r.mean_length, r.mismatches
+        );
+    }
+    println!(
+        "mean length: tileslide's paths smoothed into straight runs, the peer's as found on the lattice"
+    );
+    if results.iter().any(|r| r.mismatches > 0) {
+        println!(
+            "mismatches: queries on which a contender and tileslide disagree about whether a path exists; they must be 0"
+        );
+    }
+    for radius in PATHS_RADII {
+        let group: Vec<&PathsResult> = results.iter().filter(|r| r.radius == radius).collect();
+        print!("radius {radius}: ");
+        print_ratio(&group, |r| 1.0 / r.ms_total, |r| r.name);
+    }
     Ok(())
 }
 

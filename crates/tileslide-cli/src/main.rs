@@ -1,5 +1,5 @@
-//! The `tileslide` command-line tool: inspect maps, cast rays, simulate crowds, run the
-//! standard benchmarks.
+//! The `tileslide` command-line tool: inspect maps, cast rays, find paths, simulate crowds,
+//! run the standard benchmarks.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -10,6 +10,8 @@ mod bench;
 mod info;
 mod json;
 mod map_file;
+mod path;
+mod point_arg;
 mod raycast;
 mod simulate;
 
@@ -59,6 +61,25 @@ enum Command {
         #[arg(long)]
         both_sides: bool,
         /// Print one JSON object per ray, one per line, in input order.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Find the way for a circle of radius R from one point to another: the shortest path
+    /// on the navigation grid, smoothed into straight runs that keep clear of every wall.
+    Path {
+        #[command(flatten)]
+        map: map_file::MapArgs,
+        /// Start point `X,Y` in map coordinates.
+        #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+        from: String,
+        /// Goal point `X,Y` in map coordinates.
+        #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+        to: String,
+        /// The circle's radius, in map units (positive).
+        #[arg(long, value_name = "R", allow_hyphen_values = true)]
+        radius: String,
+        /// Print one JSON object: `{"found":true,"length":L,"points":[[X,Y],...]}` or
+        /// `{"found":false}`.
         #[arg(long)]
         json: bool,
     },
@@ -120,6 +141,13 @@ fn main() -> ExitCode {
             both_sides,
             json,
         } => raycast::run(&map, from.zip(to), rays, both_sides, json),
+        Command::Path {
+            map,
+            from,
+            to,
+            radius,
+            json,
+        } => path::run(&map, &from, &to, &radius, json),
         Command::Simulate { scene, steps, json } => simulate::run(&scene, steps, json),
         Command::Bake { map, output } => bake(&map, &output),
         Command::Bench { which } => bench::run(which),

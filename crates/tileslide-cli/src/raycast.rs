@@ -8,6 +8,7 @@ use tileslide::{Ray, RayFilter, RayHit, SegmentFlags, Vec2};
 
 use crate::json::number;
 use crate::map_file::{self, MapArgs};
+use crate::point_arg::parse_point;
 
 pub fn run(
     args: &MapArgs,
@@ -83,25 +84,6 @@ fn describe(hit: Option<&RayHit>) -> String {
     }
 }
 
-/// Parses `X,Y` into a finite point; errors name the argument.
-fn parse_point(text: &str, what: &str) -> Result<Vec2> {
-    let parts: Vec<&str> = text.split(',').collect();
-    let [x, y] = parts.as_slice() else {
-        bail!("{what} {text:?}: expected X,Y (two numbers separated by a comma)");
-    };
-    let parse = |s: &str, axis: &str| -> Result<f32> {
-        let v: f32 = s
-            .trim()
-            .parse()
-            .map_err(|_| anyhow!("{what} {text:?}: {axis} = {s:?} is not a number"))?;
-        if !v.is_finite() {
-            bail!("{what} {text:?}: {axis} = {s:?} is not finite");
-        }
-        Ok(v)
-    };
-    Ok(Vec2::new(parse(x, "x")?, parse(y, "y")?))
-}
-
 /// Reads a CSV ray file: `x0,y0,x1,y1` per line; blank lines and lines starting with `#`
 /// are skipped. Errors name the file, line and column.
 fn read_rays(path: &Path) -> Result<Vec<(Vec2, Vec2)>> {
@@ -152,23 +134,4 @@ fn read_rays(path: &Path) -> Result<Vec<(Vec2, Vec2)>> {
         ));
     }
     Ok(rays)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn points_parse_and_errors_name_the_argument() {
-        assert_eq!(
-            parse_point("1.5,-2", "--from").unwrap(),
-            Vec2::new(1.5, -2.0)
-        );
-        let e = parse_point("1.5", "--from").unwrap_err().to_string();
-        assert!(e.contains("--from") && e.contains("X,Y"), "{e}");
-        let e = parse_point("1,NaN", "--to").unwrap_err().to_string();
-        assert!(e.contains("--to") && e.contains("not finite"), "{e}");
-        let e = parse_point("1,abc", "--to").unwrap_err().to_string();
-        assert!(e.contains("not a number"), "{e}");
-    }
 }
