@@ -1,0 +1,1124 @@
+//! Proves the navigation grid of issue 7 (`NavGrid`, `Path`, `FlowField`) against
+//! references built without `tileslide::path` (see `path_support`):
+//!
+//! - the moves it opens and the points it connects equal a brute-force lattice whose
+//!   clearances are measured against every wall of the map;
+//! - every run of every found path is clear by the map's own circle cast;
+//! - found paths are never shorter than a lower bound of the exact any-angle shortest path
+//!   (a visibility graph among inscribed polygons), and at most 8 % longer;
+//! - flow fields lead every point to the goal, lowering the distance at every step and
+//!   never nearer a wall than the radius, and a crowd moved by the resolver along one
+//!   reaches the goal through a door and past pillars;
+//! - local updates after random digs and fills equal a full rebuild, and the
+//!   `is_affected_by` answers never miss a change;
+//! - bad input is refused with the error naming it.
+//!
+//! Three of these fail today and are `#[ignore]`d with the reason (the 8 %, the crowd,
+//! and `FlowField::is_affected_by` after a goal is dug out), each with a small regression
+//! test that pins the cause; run them with `cargo test -p tileslide --test path --
+//! --ignored`.
+
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+mod path_support;
+
+use glam::DVec2;
+use proptest::prelude::*;
+use tileslide::io::ascii;
+use tileslide::{
+    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, NavConfig, NavError, NavGrid,
+    Path, RayFilter, TileMap, Vec2,
+};
+
+use path_support::any_angle::{InflatedScene, room_and_blocks};
+use path_support::lattice_reference::{LatticeReference, QUANTISATION, Verdict};
+use path_support::split_mix::SplitMix64;
+use path_support::walls::Walls;
+
+/// The grid's margin on unit cells: a circle needs clearance `r + MARGIN`.
+const MARGIN: f64 = 1e-3;
+
+/// How far a body may overlap a wall or another body (the resolver's skin, in cells).
+const SKIN: f32 = 1e-4;
+
+fn v(x: f32, y: f32) -> Vec2 {
+    Vec2::new(x, y)
+}
+
+fn map(text: &str) -> TileMap {
+    ascii::parse(text, "path.txt", 1.0).unwrap()
+}
+
+fn both_faces() -> RayFilter {
+    RayFilter {
+        faces: Faces::Both,
+        ..RayFilter::default()
+    }
+}
+
+// ----------------------------------------------------------------------------------------
+// Random maps
+// ----------------------------------------------------------------------------------------
+
+/// A random ASCII map, `width × height`, with a solid border ring unless `open_border`.
+#[derive(Clone, Debug)]
+struct RandomMap {
+    width: usize,
+    height: usize,
+    open_border: bool,
+    chars: Vec<char>,
+}
+
+impl RandomMap {
+    fn text(&self) -> String {
+        let mut text = String::new();
+        for row in 0..self.height {
+            for col in 0..self.width {
+                let ring = row == 0 || col == 0 || row == self.height - 1 || col == self.width - 1;
+                text.push(if ring && !self.open_border {
+                    '#'
+                } else {
+                    self.chars[row * self.width + col]
+                });
+            }
+            text.push('\n');
+        }
+        text
+    }
+
+    fn build(&self) -> TileMap {
+        ascii::parse(&self.text(), "random.txt", 1.0).unwrap()
+    }
+}
+
+/// Mostly empty cells, some solid squares and a few ramps (partial tiles with sloped faces).
+fn cell_char() -> impl Strategy<Value = char> {
+    prop_oneof![14 => Just('.'), 5 => Just('#'), 1 => Just('/'), 1 => Just('\\')]
+}
+
+fn random_map(width: usize, height: usize) -> impl Strategy<Value = RandomMap> {
+    (
+        prop::collection::vec(cell_char(), width * height),
+        prop::bool::weighted(0.25),
+    )
+        .prop_map(move |(chars, open_border)| RandomMap {
+            width,
+            height,
+            open_border,
+            chars,
+        })
+}
+
+/// A random point of `map` where a circle of radius `r` fits, if one turns up.
+fn fitting_point(nav: &NavGrid, map: &TileMap, rng: &mut SplitMix64, r: f32) -> Option<Vec2> {
+    let size = map.bounds().size();
+    (0..40)
+        .map(|_| map.origin() + v(rng.range(0.0, size.x), rng.range(0.0, size.y)))
+        .find(|&p| nav.fits(map, p, r).unwrap())
+}
+
+// ----------------------------------------------------------------------------------------
+// 1. Reachability and open moves equal a brute-force lattice
+// ----------------------------------------------------------------------------------------
+
+const REACH_RADII: [f32; 4] = [0.2, 0.3, 0.45, 0.7];
+const PAIRS_PER_RADIUS: usize = 24;
+
+/// Whether `b` can be reached from `a` (both nodes of `reference`) when each end may also
+/// join any node within two lattice steps, or the other end, by a straight line clear for
+/// `need` (what `find_path` does with its end points, taken generously), borderline moves
+/// open: an upper bound of what `find_path` may connect.
+fn reachable_with_straight_joins(
+    map: &TileMap,
+    walls: &Walls,
+    reference: &LatticeReference,
+    (a, b): (usize, usize),
+    need: f64,
+) -> bool {
+    let joins = |n: usize| -> Vec<usize> {
+        let (i, j) = reference.coords(n);
+        let mut out = vec![n];
+        for dj in -2i64..=2 {
+            for di in -2i64..=2 {
+                let (qi, qj) = (i64::from(i) + di, i64::from(j) + dj);
+                if qi < 0
+                    || qj < 0
+                    || qi >= i64::from(reference.nx)
+                    || qj >= i64::from(reference.ny)
+                {
+                    continue;
+                }
+                let q = reference.index(qi as u32, qj as u32);
+                let clear = walls.clearance(map, reference.positions[n], reference.positions[q]);
+                if clear >= need - QUANTISATION {
+                    out.push(q);
+                }
+            }
+        }
+        out
+    };
+    let (pa, pb) = (reference.positions[a], reference.positions[b]);
+    if pa.distance(pb) <= 4.0 && walls.clearance(map, pa, pb) >= need - QUANTISATION {
+        return true;
+    }
+    let seen = reference.flood(&joins(a), need, true);
+    joins(b).into_iter().any(|q| seen[q])
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 8, ..ProptestConfig::default() })]
+
+    /// (a) `open_moves` at every node equals the brute-force verdict for each radius
+    /// (except within the grid's quantisation of the threshold); (b) between random pairs
+    /// of nodes where the circle fits, `find_path` finds a path whenever the brute-force
+    /// lattice connects them, and only when it does, give or take the straight lines its
+    /// end points join the lattice by.
+    #[test]
+    fn open_moves_and_reachability_equal_a_brute_force_lattice(
+        random in random_map(12, 10),
+        seed in any::<u64>(),
+    ) {
+        let map = random.build();
+        let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let walls = Walls::of(&map);
+        let reference = LatticeReference::build(&map, &walls);
+        prop_assert_eq!(nav.nodes(), (reference.nx, reference.ny));
+        for n in 0..reference.len() {
+            let (i, j) = reference.coords(n);
+            prop_assert_eq!(nav.node_position(i, j), reference.positions[n]);
+        }
+        let mut rng = SplitMix64::new(seed);
+        for r in REACH_RADII {
+            let need = f64::from(r) + MARGIN;
+            for n in 0..reference.len() {
+                let (i, j) = reference.coords(n);
+                let bits = nav.open_moves(&map, i, j, r).unwrap();
+                for d in 0..8 {
+                    let open = bits >> d & 1 == 1;
+                    let verdict = reference.verdict(n, d, need);
+                    let expected = match verdict {
+                        Verdict::Borderline => continue,
+                        Verdict::Open => true,
+                        Verdict::Closed | Verdict::Missing => false,
+                    };
+                    prop_assert_eq!(
+                        open, expected,
+                        "r {}: move {} from node ({}, {}) at {}: brute-force clearance {:?}\n{}",
+                        r, d, i, j, reference.positions[n], reference.moves[n][d], random.text()
+                    );
+                }
+            }
+            let free: Vec<usize> = (0..reference.len())
+                .filter(|&n| reference.point[n] >= need + QUANTISATION)
+                .collect();
+            if free.len() < 2 {
+                continue;
+            }
+            for _ in 0..PAIRS_PER_RADIUS {
+                let (a, b) = (rng.pick(&free), rng.pick(&free));
+                let (pa, pb) = (reference.positions[a], reference.positions[b]);
+                let found = nav.find_path(&map, pa, pb, r).unwrap().is_some();
+                let by_lattice = reference.flood(&[a], need, false)[b];
+                let at_most = reachable_with_straight_joins(&map, &walls, &reference, (a, b), need);
+                prop_assert!(
+                    !by_lattice || found,
+                    "r {}: {} and {} are connected on the lattice but no path was found\n{}",
+                    r, pa, pb, random.text()
+                );
+                prop_assert!(
+                    !found || at_most,
+                    "r {}: a path from {} to {} was found but the lattice does not connect them\n{}",
+                    r, pa, pb, random.text()
+                );
+            }
+        }
+    }
+}
+
+// ----------------------------------------------------------------------------------------
+// 2. Every smoothed path is clear
+// ----------------------------------------------------------------------------------------
+
+/// Checks the promises of a path found from `from` to `to` for `r`: its ends, its length,
+/// and every straight run clear by the map's circle cast (both faces) and, independently,
+/// at least `r` from every wall.
+fn check_path(
+    map: &TileMap,
+    walls: &Walls,
+    path: &Path,
+    (from, to): (Vec2, Vec2),
+    r: f32,
+) -> Result<(), TestCaseError> {
+    let points = path.points();
+    prop_assert!(points.len() >= 2, "{:?}", points);
+    prop_assert_eq!(points[0], from);
+    prop_assert_eq!(points[points.len() - 1], to);
+    prop_assert_eq!(path.radius(), r);
+    let mut sum = 0.0;
+    for run in points.windows(2) {
+        let (a, b) = (run[0], run[1]);
+        let hit = map.cast_circle(a, r, b - a, &both_faces());
+        prop_assert!(
+            hit.is_none(),
+            "r {}: the run {} -> {} of {:?} hits a wall: {:?}",
+            r,
+            a,
+            b,
+            points,
+            hit
+        );
+        let clear = walls.distance_to_move(a, b);
+        prop_assert!(
+            clear >= f64::from(r - SKIN),
+            "r {}: the run {} -> {} passes {} from a wall",
+            r,
+            a,
+            b,
+            clear
+        );
+        sum += a.distance(b);
+    }
+    prop_assert!(
+        (path.length() - sum).abs() <= 1e-4 * sum.max(1.0),
+        "length {} but the runs add up to {}",
+        path.length(),
+        sum
+    );
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 12, ..ProptestConfig::default() })]
+
+    /// Random queries between points where the circle fits, for radii up to 0.9 cell: every
+    /// found path starts at the start, ends at the goal, is as long as its runs, and every
+    /// run is clear by `cast_circle` with both faces.
+    #[test]
+    fn every_run_of_a_smoothed_path_is_clear_by_circle_cast(
+        random in random_map(12, 10),
+        seed in any::<u64>(),
+    ) {
+        let map = random.build();
+        let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let walls = Walls::of(&map);
+        let mut rng = SplitMix64::new(seed);
+        for _ in 0..20 {
+            let r = rng.pick(&[0.2f32, 0.35, 0.5, 0.7, 0.9]);
+            let (Some(from), Some(to)) = (
+                fitting_point(&nav, &map, &mut rng, r),
+                fitting_point(&nav, &map, &mut rng, r),
+            ) else {
+                continue;
+            };
+            if let Some(path) = nav.find_path(&map, from, to, r).unwrap() {
+                check_path(&map, &walls, &path, (from, to), r)?;
+            }
+        }
+    }
+}
+
+// ----------------------------------------------------------------------------------------
+// 3. Path length within 8 % of the exact any-angle shortest path
+// ----------------------------------------------------------------------------------------
+
+/// Blocks of different sizes in an open room.
+const BLOCKS: &str = "\
+####################
+#..................#
+#..####............#
+#..####.....##.....#
+#...........##.....#
+#.......#####......#
+#..................#
+#...##.........###.#
+#...##.........###.#
+#...##.............#
+#.........####.....#
+#.........####.....#
+#..###.............#
+#..###.......##....#
+#............##....#
+####################";
+
+/// A corridor two cells wide winding back and forth.
+const SERPENTINE: &str = "\
+####################
+#..................#
+#..................#
+#################..#
+#..................#
+#..................#
+#..#################
+#..................#
+#..................#
+#################..#
+#..................#
+####################";
+
+/// Pillars of one cell and a wall with a gap.
+const PILLARS: &str = "\
+##################
+#................#
+#..#...#...#..#..#
+#................#
+#.....#....#.....#
+#.#..............#
+#######...########
+#................#
+#..#....#....#...#
+#................#
+##################";
+
+/// The longest a found path may be over the exact shortest (issue 7).
+const LENGTH_RATIO: f64 = 1.08;
+
+/// One query of [`lengths_against_any_angle`]: a found path and the lower bound of the
+/// exact shortest path between its ends.
+struct LengthCheck {
+    what: String,
+    path: Path,
+    bound: f64,
+}
+
+impl LengthCheck {
+    fn ratio(&self) -> f64 {
+        f64::from(self.path.length()) / self.bound
+    }
+}
+
+/// For each test map and radius 0.3 and 0.8: the farthest-apart nodes where the circle
+/// fits and random pairs of them at least 3 cells apart, `pairs` queries in all whose ends
+/// the lower bound connects, each with the lower bound of its exact shortest path (corner
+/// arcs sampled at 8 edges per quarter circle) and the path found. Asserts that every
+/// query finds a path and that the bound is sane: at least the straight line and at most
+/// the found path (which is a real path of the disc).
+fn lengths_against_any_angle(pairs: usize, seed: u64) -> Vec<LengthCheck> {
+    let mut rng = SplitMix64::new(seed);
+    let mut checks = Vec::new();
+    for (name, text) in [
+        ("blocks", BLOCKS),
+        ("serpentine", SERPENTINE),
+        ("pillars", PILLARS),
+    ] {
+        let map = map(text);
+        let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let (room, blocks) = room_and_blocks(&map);
+        for r in [0.3f32, 0.8] {
+            let scene = InflatedScene::new(room, &blocks, f64::from(r), 8);
+            let (nx, ny) = nav.nodes();
+            let nodes: Vec<Vec2> = (0..ny)
+                .flat_map(|j| (0..nx).map(move |i| (i, j)))
+                .map(|(i, j)| nav.node_position(i, j))
+                .filter(|&p| nav.fits(&map, p, r).unwrap())
+                .collect();
+            let random = std::iter::repeat_with(|| (rng.pick(&nodes), rng.pick(&nodes)))
+                .filter(|(a, b)| a.distance(*b) > 3.0);
+            let queries = std::iter::once((nodes[0], nodes[nodes.len() - 1])).chain(random);
+            let mut asked = 0;
+            for (from, to) in queries {
+                if asked == pairs {
+                    break;
+                }
+                let what = format!("{name}, r {r}: {from} -> {to}");
+                let Some(bound) = scene.lower_bound(from.as_dvec2(), to.as_dvec2()) else {
+                    continue;
+                };
+                asked += 1;
+                let path = nav.find_path(&map, from, to, r).unwrap();
+                let path = path.unwrap_or_else(|| panic!("{what}: no path found"));
+                let straight = from.as_dvec2().distance(to.as_dvec2());
+                let length = f64::from(path.length());
+                assert!(
+                    bound >= straight - 1e-9,
+                    "{what}: the lower bound {bound} is shorter than the straight line {straight}"
+                );
+                assert!(
+                    bound <= length + 1e-3,
+                    "{what}: the lower bound {bound} exceeds the found path {length}: {:?}",
+                    path.points()
+                );
+                checks.push(LengthCheck { what, path, bound });
+            }
+        }
+    }
+    checks
+}
+
+/// The part of the length requirement that holds today: the lower bound is sane and never
+/// above a found path (so found paths never cut through the inflated obstacles).
+#[test]
+fn found_paths_are_never_shorter_than_the_exact_any_angle_shortest_path() {
+    let checks = lengths_against_any_angle(10, 7);
+    assert_eq!(checks.len(), 60);
+}
+
+/// Issue 7: "path length within 8 % of the exact any-angle shortest path on test maps".
+#[test]
+#[ignore = "src bug: smoothed paths turn only at lattice nodes, so a wide circle rounds a corner along the half-cell line instead of hugging it: up to 17 % over the exact shortest at r 0.8 (serpentine (3, 5) -> (3.5, 8): 4.825 against 4.132)"]
+fn found_paths_are_within_8_percent_of_the_exact_any_angle_shortest_path() {
+    let checks = lengths_against_any_angle(40, 7);
+    let over: Vec<String> = checks
+        .iter()
+        .filter(|c| c.ratio() > LENGTH_RATIO)
+        .map(|c| {
+            format!(
+                "{}: path {} is {:.1} % over the shortest (at least {:.4}): {:?}",
+                c.what,
+                c.path.length(),
+                (c.ratio() - 1.0) * 100.0,
+                c.bound,
+                c.path.points()
+            )
+        })
+        .collect();
+    assert!(
+        over.is_empty(),
+        "{} of {} paths are more than 8 % over the exact shortest:\n{}",
+        over.len(),
+        checks.len(),
+        over.join("\n")
+    );
+}
+
+/// The serpentine's first bend for r = 0.8, worked out by hand (tangent 0.6, arc 0.742,
+/// straight 1.0, arc 1.009, tangent 0.781: 4.132): the lower bound converges to it from
+/// below as the arcs are sampled more finely.
+#[test]
+fn the_any_angle_lower_bound_matches_a_bend_worked_out_by_hand() {
+    let map = map(SERPENTINE);
+    let (room, blocks) = room_and_blocks(&map);
+    let (from, to) = (DVec2::new(3.0, 5.0), DVec2::new(3.5, 8.0));
+    let (half_pi, r) = (std::f64::consts::FRAC_PI_2, 0.8f64);
+    // From (3, 5), 1 from the corner (3, 6): tangent, arc to the corner's left, straight
+    // down to the corner (3, 7), arc round it, tangent to (3.5, 8), √1.25 from it.
+    let exact = (1.0 - r * r).sqrt()
+        + r * (half_pi - r.acos())
+        + 1.0
+        + r * (half_pi + 0.5f64.atan() - (r / 1.25f64.sqrt()).acos())
+        + (1.25 - r * r).sqrt();
+    let mut last = 0.0;
+    for arc_segments in [4, 8, 32] {
+        let bound = InflatedScene::new(room, &blocks, 0.8, arc_segments)
+            .lower_bound(from, to)
+            .unwrap();
+        assert!(bound <= exact + 1e-9, "{arc_segments}: {bound} > {exact}");
+        assert!(bound >= last, "{arc_segments}: {bound} < {last}");
+        last = bound;
+    }
+    assert!(exact - last < 1e-3, "{last} vs {exact}");
+}
+
+// ----------------------------------------------------------------------------------------
+// 4. Flow fields
+// ----------------------------------------------------------------------------------------
+
+/// Rooms, a dead end, pillars and a narrow door.
+const FLOW: &str = "\
+################
+#......#.......#
+#.##...#...#...#
+#.##.......#...#
+#......##......#
+#..#...##..#...#
+#..#.......#...#
+################";
+
+/// How far an agent moves per step (cells).
+const STEP: f32 = 0.05;
+
+/// From every cell centre where the circle fits and the goal is reachable,
+/// steps of 0.05 along `direction` reach the goal within 1.1 × the field's distance, every
+/// step lowers the field's distance, and no point on the way is nearer a wall than the
+/// radius (plus the grid's margin).
+#[test]
+fn following_a_flow_field_reaches_the_goal_and_never_nears_a_wall() {
+    let map = map(FLOW);
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    for (goal, r) in [(v(14.0, 6.0), 0.3f32), (v(1.5, 1.5), 0.45)] {
+        let field = FlowField::new(&nav, &map, goal, r).unwrap();
+        let (nx, ny) = nav.nodes();
+        let mut followed = 0;
+        let centres = (1..ny)
+            .step_by(2)
+            .flat_map(|j| (1..nx).step_by(2).map(move |i| (i, j)));
+        for (i, j) in centres {
+            let start = nav.node_position(i, j);
+            if !nav.fits(&map, start, r).unwrap() {
+                continue;
+            }
+            let Some(d0) = field.distance(&nav, &map, start).unwrap() else {
+                continue;
+            };
+            followed += 1;
+            let limit = (d0 / STEP * 1.1) as usize + 1;
+            let (mut p, mut d, mut steps) = (start, d0, 0);
+            while p.distance(goal) > 1e-3 {
+                assert!(
+                    steps < limit,
+                    "r {r}: from {start} (distance {d0}), still {d} away at {p} after {steps} steps"
+                );
+                let dir = field.direction(&nav, &map, p).unwrap();
+                let dir = dir.unwrap_or_else(|| panic!("r {r}: from {start}, no direction at {p}"));
+                p += dir * STEP.min(p.distance(goal));
+                steps += 1;
+                assert!(
+                    nav.fits(&map, p, r).unwrap(),
+                    "r {r}: from {start}, the way leads to {p}, nearer a wall than {r}"
+                );
+                let next = field.distance(&nav, &map, p).unwrap().unwrap();
+                assert!(
+                    next < d,
+                    "r {r}: from {start}, the distance went from {d} to {next} at {p}"
+                );
+                d = next;
+            }
+        }
+        assert!(followed > 30, "r {r}: only {followed} starts");
+    }
+}
+
+/// A room with pillars two cells apart, a door two cells wide, a hall with blocks and a
+/// corridor back under the room.
+const CROWD: &str = "\
+########################
+#........#.............#
+#..#..#..#.............#
+#........#....##.......#
+#........#....##.......#
+#..#..#................#
+#......................#
+#........#.............#
+#..#..#..#.......##....#
+#........#.......##....#
+##########.............#
+#......................#
+#......................#
+########################";
+
+/// Issue 7: 30 agents of radius 0.3 in a room with pillars steer by one flow field, are
+/// moved 0.05 a step by `Bodies`, and leave through the goal (removed within 1.5 cells of
+/// it) within 2,500 steps; no two overlap and none touches a wall closer than its radius at
+/// any step.
+#[test]
+#[ignore = "src bugs: FlowField::direction is None for an agent the resolver left against a wall (closer than r + margin), and Bodies cuts oblique moves into a touching body to zero instead of sliding; see the two regression tests below"]
+fn a_crowd_following_a_flow_field_reaches_the_goal_without_overlapping_or_sticking() {
+    const R: f32 = 0.3;
+    const AGENTS: usize = 30;
+    const EXIT: f32 = 1.5;
+    const MAX_STEPS: usize = 2500;
+    let map = map(CROWD);
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let walls = Walls::of(&map);
+    let goal = v(2.0, 12.0);
+    let field = FlowField::new(&nav, &map, goal, R).unwrap();
+    let mut bodies = Bodies::new();
+    // Every other free cell centre of the room with pillars.
+    let mut agents: Vec<BodyHandle> = (1..10)
+        .flat_map(|row| (1..9).map(move |col| v(col as f32 + 0.5, row as f32 + 0.5)))
+        .filter(|&p| nav.fits(&map, p, R).unwrap())
+        .step_by(2)
+        .take(AGENTS)
+        .map(|p| {
+            bodies
+                .add(BodyDesc::new(p, BodyShape::circle(R).unwrap()))
+                .unwrap()
+        })
+        .collect();
+    assert_eq!(agents.len(), AGENTS);
+    for step in 1..=MAX_STEPS {
+        for &h in &agents {
+            let p = bodies.get(h).unwrap().position();
+            let dir = field.direction(&nav, &map, p).unwrap();
+            bodies.propose(h, dir.unwrap_or(Vec2::ZERO) * STEP).unwrap();
+        }
+        bodies.step(&map);
+        let positions: Vec<Vec2> = agents
+            .iter()
+            .map(|&h| bodies.get(h).unwrap().position())
+            .collect();
+        for (k, &p) in positions.iter().enumerate() {
+            let wall = walls.distance_to_point(p);
+            assert!(
+                !map.is_point_solid(p) && wall >= f64::from(R - SKIN),
+                "step {step}: agent at {p} is {wall} from a wall"
+            );
+            for &q in &positions[k + 1..] {
+                assert!(
+                    p.distance(q) >= 2.0 * R - SKIN,
+                    "step {step}: agents at {p} and {q} overlap"
+                );
+            }
+        }
+        // Agents at the goal leave through it.
+        for (&h, &p) in agents.iter().zip(&positions) {
+            if p.distance(goal) <= EXIT {
+                bodies.remove(h).unwrap();
+            }
+        }
+        agents.retain(|&h| bodies.contains(h));
+        if agents.is_empty() {
+            return;
+        }
+    }
+    let stuck: Vec<String> = agents
+        .iter()
+        .map(|&h| {
+            let p = bodies.get(h).unwrap().position();
+            let dir = field.direction(&nav, &map, p).unwrap();
+            format!(
+                "{p} (direction {dir:?}, {:.4} from a wall)",
+                walls.distance_to_point(p)
+            )
+        })
+        .collect();
+    panic!(
+        "{} agents still out after {MAX_STEPS} steps:\n{}",
+        agents.len(),
+        stuck.join("\n")
+    );
+}
+
+/// Regression (FlowField): the resolver keeps bodies between r + gap/2 and r + gap from
+/// walls (`ResolveConfig::gap`, 1e-3 cell), but `FlowField::direction` (and `distance`,
+/// and `NavGrid::fits`) need r + the grid's margin (also 1e-3 cell): a body pushed against
+/// a wall gets no direction, proposes no move and stays there for good, a plug for others.
+#[test]
+#[ignore = "src bug: FlowField::direction is None within the grid's margin of a wall, where the resolver leaves bodies"]
+fn a_body_the_resolver_left_against_a_wall_still_gets_a_flow_direction() {
+    let map = map(ROOM);
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let field = FlowField::new(&nav, &map, v(6.0, 2.0), 0.3).unwrap();
+    let mut bodies = Bodies::new();
+    let h = bodies
+        .add(BodyDesc::new(v(2.0, 2.0), BodyShape::circle(0.3).unwrap()))
+        .unwrap();
+    // Into the left wall (x = 1), as a crowd pushes its members.
+    for _ in 0..6 {
+        bodies.propose(h, v(-0.2, 0.0)).unwrap();
+        bodies.step(&map);
+    }
+    let p = bodies.get(h).unwrap().position();
+    assert!(p.x >= 1.3 && p.x < 1.301, "{p}");
+    assert!(
+        field.direction(&nav, &map, p).unwrap().is_some(),
+        "a body at {p}, {} from the wall, gets no direction to the goal",
+        p.x - 1.0
+    );
+}
+
+/// Regression (Bodies): a body touching another (as the resolver leaves them, within the
+/// gap band) and moving obliquely into it is cut to a zero move instead of sliding round it
+/// along the contact tangent, for some directions: crowds lock up in open space. Found by
+/// the crowd test; the first case is two of its agents as it left them.
+#[test]
+#[ignore = "src bug (bodies): an oblique move into a touching body is cut to zero instead of sliding"]
+fn a_body_touching_another_slides_round_it_when_moving_obliquely_into_it() {
+    let map = map(TWO_ROOMS);
+    let v = Vec2::new;
+    let at_angle = |k: f32, separation: f32| {
+        let a = k / 64.0 * std::f32::consts::TAU;
+        let dir = v(a.cos(), a.sin());
+        let mover = v(10.0, 6.5) + dir * separation;
+        (mover, v(10.0, 6.5), (dir.perp() - dir).normalize() * 0.05)
+    };
+    for (mover, still, motion) in [
+        (
+            v(10.041976, 7.06332),
+            v(9.649439, 7.517759),
+            v(0.0077051776, 0.049402736),
+        ),
+        at_angle(2.0, 0.6005),
+        at_angle(3.0, 0.6003),
+    ] {
+        let mut bodies = Bodies::new();
+        let a = bodies
+            .add(BodyDesc::new(mover, BodyShape::circle(0.3).unwrap()))
+            .unwrap();
+        bodies
+            .add(BodyDesc::new(still, BodyShape::circle(0.3).unwrap()))
+            .unwrap();
+        bodies.propose(a, motion).unwrap();
+        let report = bodies.resolve(&map);
+        let moved = bodies.get(a).unwrap().resolved_move();
+        assert!(
+            moved.length() > 0.025,
+            "a body at {mover}, {} from one at {still}, moving {motion} ({:.0}° into it) moved {moved}: {report:?}",
+            mover.distance(still),
+            (motion.normalize().dot((still - mover).normalize()))
+                .acos()
+                .to_degrees()
+        );
+    }
+}
+
+// ----------------------------------------------------------------------------------------
+// 5. Updates equal a full recompute
+// ----------------------------------------------------------------------------------------
+
+/// A tile for an edit: `None` digs (`clear_tile`), `Some` fills.
+fn edit_tile() -> impl Strategy<Value = Option<char>> {
+    prop_oneof![5 => Just(None), 4 => Just(Some('#')), 1 => Just(Some('/')), 1 => Just(Some('\\'))]
+}
+
+const UPDATE_RADII: [f32; 4] = [0.2, 0.45, 0.8, 1.0];
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+    /// After random digs and fills anywhere (border included), each followed by
+    /// `nav.update`: the grid opens the same moves as one built from scratch at every node
+    /// for every radius; a flow field refreshed after the edits equals a new one; one
+    /// refreshed only when `is_affected_by` says so equals it too; and a path that
+    /// `is_affected_by` calls unaffected is still clear by circle cast.
+    #[test]
+    fn updates_after_random_digs_and_fills_equal_a_full_recompute(
+        random in random_map(10, 8),
+        edits in prop::collection::vec((0u32..10, 0u32..8, edit_tile()), 1..12),
+        seed in any::<u64>(),
+    ) {
+        let mut map = random.build();
+        let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let mut rng = SplitMix64::new(seed);
+        let r = 0.4;
+        let goal = fitting_point(&nav, &map, &mut rng, r).unwrap_or(v(5.0, 4.0));
+        let mut field = FlowField::new(&nav, &map, goal, r).unwrap();
+        let mut lazy = field.clone();
+        let from = fitting_point(&nav, &map, &mut rng, r).unwrap_or(v(1.0, 1.0));
+        let mut path = nav.find_path(&map, from, goal, r).unwrap();
+        for &(col, row, tile) in &edits {
+            let cell = Cell::new(col, row);
+            let goal_fitted = nav.fits(&map, goal, r).unwrap();
+            match tile {
+                None => map.clear_tile(cell).unwrap(),
+                Some(c) => map.set_tile(cell, ascii::tile_for_char(c).unwrap()).unwrap(),
+            }
+            let change = nav.update(&map, cell).unwrap();
+            // An edit that walls the goal in or frees it is missed by `is_affected_by`
+            // (see `a_field_whose_goal_was_walled_in_is_affected_when_it_is_dug_out`):
+            // refresh then regardless, and hold it to everything else.
+            let goal_fits = nav.fits(&map, goal, r).unwrap();
+            if lazy.is_affected_by(&nav, &change) || goal_fits != goal_fitted {
+                lazy.refresh(&nav, &map).unwrap();
+            }
+            if let Some(p) = &path {
+                if p.is_affected_by(&change) {
+                    path = nav.find_path(&map, from, goal, r).unwrap();
+                } else {
+                    for run in p.points().windows(2) {
+                        prop_assert!(
+                            map.cast_circle(run[0], r, run[1] - run[0], &both_faces()).is_none(),
+                            "editing {} blocked the run {} -> {} of a path it does not affect\n{}",
+                            cell, run[0], run[1], random.text()
+                        );
+                    }
+                }
+            }
+        }
+        let fresh = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let (nx, ny) = fresh.nodes();
+        prop_assert_eq!(nav.nodes(), (nx, ny));
+        for r in UPDATE_RADII {
+            for j in 0..ny {
+                for i in 0..nx {
+                    prop_assert_eq!(
+                        nav.open_moves(&map, i, j, r).unwrap(),
+                        fresh.open_moves(&map, i, j, r).unwrap(),
+                        "r {}: node ({}, {}) after edits {:?}\n{}",
+                        r, i, j, edits, random.text()
+                    );
+                }
+            }
+        }
+        field.refresh(&nav, &map).unwrap();
+        let new = FlowField::new(&fresh, &map, goal, r).unwrap();
+        prop_assert!(field == new, "a refreshed field differs from a new one");
+        prop_assert!(
+            lazy == new,
+            "a field refreshed only when affected differs from a new one: edits {:?}\n{}",
+            edits, random.text()
+        );
+    }
+}
+
+/// Two rooms joined by a corridor, and a closet far from it.
+const TWO_ROOMS: &str = "\
+####################
+#.....#......#.....#
+#.....#......#.....#
+#..................#
+#.....#......#.....#
+#######......#######
+#....#.............#
+#....#.............#
+####################";
+
+#[test]
+fn a_far_edit_does_not_affect_a_path_and_filling_a_cell_on_it_does() {
+    let mut map = map(TWO_ROOMS);
+    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let (from, to) = (v(2.5, 3.5), v(17.5, 3.5));
+    let path = nav.find_path(&map, from, to, 0.4).unwrap().unwrap();
+    assert_eq!(path.points(), &[from, to], "a straight run along row 3");
+    let field = FlowField::new(&nav, &map, to, 0.4).unwrap();
+
+    // Dig in the closet at the bottom left, far from the path.
+    map.clear_tile(Cell::new(5, 7)).unwrap();
+    let far = nav.update(&map, Cell::new(5, 7)).unwrap();
+    assert!(!far.is_empty(), "digging opens moves in the closet");
+    assert!(!path.is_affected_by(&far));
+    // Fill a cell of the corridor the path runs through.
+    map.set_tile(Cell::new(9, 3), Some(ascii::SOLID)).unwrap();
+    let near = nav.update(&map, Cell::new(9, 3)).unwrap();
+    assert!(path.is_affected_by(&near));
+    assert!(field.is_affected_by(&nav, &near));
+    let around = nav.find_path(&map, from, to, 0.4).unwrap().unwrap();
+    assert!(
+        around.length() > path.length() + 0.5,
+        "{:?}",
+        around.points()
+    );
+}
+
+/// Regression (FlowField::is_affected_by): it only looks at moves touching nodes the field
+/// reaches, so a field whose goal was walled in (it reaches no node) is never told that
+/// digging the goal out changed it. Found by the update property test.
+#[test]
+#[ignore = "src bug: FlowField::is_affected_by ignores the goal's own joins, so digging out a walled-in goal is reported as not affecting the field"]
+fn a_field_whose_goal_was_walled_in_is_affected_when_it_is_dug_out() {
+    let mut map = map(ROOM);
+    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let (goal, far) = (v(2.5, 1.5), v(5.5, 4.5));
+    let mut field = FlowField::new(&nav, &map, goal, 0.3).unwrap();
+    assert!(field.distance(&nav, &map, far).unwrap().is_some());
+    let cell = Cell::new(2, 1);
+    map.set_tile(cell, Some(ascii::SOLID)).unwrap();
+    let change = nav.update(&map, cell).unwrap();
+    assert!(field.is_affected_by(&nav, &change));
+    field.refresh(&nav, &map).unwrap();
+    assert_eq!(
+        field.distance(&nav, &map, far),
+        Ok(None),
+        "the goal is in a wall"
+    );
+    map.clear_tile(cell).unwrap();
+    let change = nav.update(&map, cell).unwrap();
+    assert!(
+        field.is_affected_by(&nav, &change),
+        "digging the goal out lets every node reach it again, but the field is told it is unaffected"
+    );
+}
+
+// ----------------------------------------------------------------------------------------
+// 6. Errors
+// ----------------------------------------------------------------------------------------
+
+const ROOM: &str = "\
+########
+#......#
+#......#
+#..##..#
+#......#
+########";
+
+/// True when `result` is a `NonFinite` error naming `what` and the point `bad` (bit for
+/// bit, so NaN matches NaN).
+fn names_non_finite<T>(result: Result<T, NavError>, what: &str, bad: Vec2) -> bool {
+    match result {
+        Err(NavError::NonFinite { what: w, point }) => {
+            w == what && point.to_array().map(f32::to_bits) == bad.to_array().map(f32::to_bits)
+        }
+        _ => false,
+    }
+}
+
+#[test]
+fn non_finite_points_are_refused_naming_the_point() {
+    let map = map(ROOM);
+    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let ok = v(1.5, 1.5);
+    let field = FlowField::new(&nav, &map, ok, 0.3).unwrap();
+    for bad in [
+        v(f32::NAN, 1.5),
+        v(1.5, f32::INFINITY),
+        v(f32::NEG_INFINITY, 1.0),
+    ] {
+        assert!(names_non_finite(
+            nav.find_path(&map, bad, ok, 0.3),
+            "from",
+            bad
+        ));
+        assert!(names_non_finite(
+            nav.find_path(&map, ok, bad, 0.3),
+            "to",
+            bad
+        ));
+        assert!(names_non_finite(
+            FlowField::new(&nav, &map, bad, 0.3),
+            "goal",
+            bad
+        ));
+        assert!(names_non_finite(nav.fits(&map, bad, 0.3), "p", bad));
+        assert!(names_non_finite(field.direction(&nav, &map, bad), "p", bad));
+        assert!(names_non_finite(field.distance(&nav, &map, bad), "p", bad));
+    }
+}
+
+#[test]
+fn radii_that_are_not_positive_or_above_max_radius_are_refused() {
+    let map = map(ROOM);
+    let mut nav = NavGrid::new(
+        &map,
+        NavConfig {
+            max_radius: 0.6,
+            ..NavConfig::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(nav.max_radius(), 0.6);
+    let (a, b) = (v(1.7, 1.7), v(6.3, 4.3));
+    for radius in [0.0, -0.3, 0.61, f32::NAN, f32::INFINITY] {
+        let bad = NavError::BadRadius {
+            radius,
+            max_radius: 0.6,
+        };
+        let same = |e: NavError| match e {
+            NavError::BadRadius {
+                radius: got,
+                max_radius,
+            } => (got == radius || got.is_nan() && radius.is_nan()) && max_radius == 0.6,
+            _ => false,
+        };
+        assert!(
+            same(nav.find_path(&map, a, b, radius).unwrap_err()),
+            "{bad}"
+        );
+        assert!(
+            same(nav.open_moves(&map, 3, 3, radius).unwrap_err()),
+            "{bad}"
+        );
+        assert!(same(nav.fits(&map, a, radius).unwrap_err()), "{bad}");
+        assert!(
+            same(FlowField::new(&nav, &map, b, radius).unwrap_err()),
+            "{bad}"
+        );
+    }
+    // The largest radius is served.
+    assert!(nav.find_path(&map, a, b, 0.6).unwrap().is_some());
+}
+
+#[test]
+fn max_radius_that_is_not_positive_finite_or_is_over_31_cells_is_refused() {
+    let map = map(ROOM);
+    for max_radius in [f32::NAN, 0.0, -1.0, f32::INFINITY, 31.5] {
+        let err = NavGrid::new(
+            &map,
+            NavConfig {
+                max_radius,
+                ..NavConfig::default()
+            },
+        )
+        .unwrap_err();
+        assert!(
+            matches!(err, NavError::BadMaxRadius { limit, .. } if limit == 31.0),
+            "{max_radius}: {err:?}"
+        );
+    }
+    assert!(
+        NavGrid::new(
+            &map,
+            NavConfig {
+                max_radius: 31.0,
+                ..NavConfig::default()
+            }
+        )
+        .is_ok()
+    );
+}
+
+#[test]
+fn a_map_edited_without_update_makes_every_query_stale() {
+    let mut map = map(ROOM);
+    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let field = FlowField::new(&nav, &map, v(5.5, 4.5), 0.3).unwrap();
+    let (a, b) = (v(1.5, 1.5), v(5.5, 4.5));
+    map.clear_tile(Cell::new(3, 3)).unwrap();
+    assert_eq!(nav.find_path(&map, a, b, 0.3), Err(NavError::Stale));
+    assert_eq!(nav.open_moves(&map, 2, 2, 0.3), Err(NavError::Stale));
+    assert_eq!(nav.fits(&map, a, 0.3), Err(NavError::Stale));
+    assert_eq!(field.direction(&nav, &map, a), Err(NavError::Stale));
+    assert_eq!(field.distance(&nav, &map, a), Err(NavError::Stale));
+    assert_eq!(
+        FlowField::new(&nav, &map, b, 0.3).unwrap_err(),
+        NavError::Stale
+    );
+    let mut refreshed = field.clone();
+    assert_eq!(refreshed.refresh(&nav, &map), Err(NavError::Stale));
+    // Another map of the same size is not the grid's either.
+    let other = self::map(ROOM);
+    assert_eq!(nav.fits(&other, a, 0.3), Err(NavError::Stale));
+    // After the update everything answers again.
+    nav.update(&map, Cell::new(3, 3)).unwrap();
+    assert!(nav.find_path(&map, a, b, 0.3).unwrap().is_some());
+    refreshed.refresh(&nav, &map).unwrap();
+    assert!(field.direction(&nav, &map, a).unwrap().is_some());
+}
+
+#[test]
+fn an_update_for_a_cell_outside_the_map_or_another_map_size_is_refused() {
+    let map = map(ROOM);
+    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    for cell in [
+        Cell::new(8, 0),
+        Cell::new(0, 6),
+        Cell::new(u32::MAX, u32::MAX),
+    ] {
+        assert_eq!(nav.update(&map, cell), Err(NavError::CellOutside(cell)));
+    }
+    let wider = self::map("#########\n#.......#\n#########");
+    assert_eq!(nav.update(&wider, Cell::new(1, 1)), Err(NavError::Stale));
+}
+
+#[test]
+fn unreachable_goals_and_ends_inside_walls_give_no_path() {
+    let map = map("\
+##########
+#...#....#
+#...#....#
+#...#....#
+##########");
+    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let (left, right) = (v(2.0, 2.0), v(7.0, 2.0));
+    assert_eq!(
+        nav.find_path(&map, left, right, 0.3),
+        Ok(None),
+        "walled off"
+    );
+    assert_eq!(
+        nav.find_path(&map, v(4.5, 2.0), left, 0.3),
+        Ok(None),
+        "start in a wall"
+    );
+    assert_eq!(
+        nav.find_path(&map, left, v(4.5, 2.0), 0.3),
+        Ok(None),
+        "goal in a wall"
+    );
+    assert_eq!(
+        nav.find_path(&map, v(1.1, 2.0), left, 0.3),
+        Ok(None),
+        "start too near a wall"
+    );
+    assert_eq!(
+        nav.find_path(&map, left, v(2.0, 2.0), 1.0),
+        Ok(None),
+        "too wide to fit"
+    );
+    // A goal in a wall reaches nothing; neither does a point in the other room.
+    let field = FlowField::new(&nav, &map, v(4.5, 2.0), 0.3).unwrap();
+    assert_eq!(field.distance(&nav, &map, left), Ok(None));
+    assert_eq!(field.direction(&nav, &map, left), Ok(None));
+    let field = FlowField::new(&nav, &map, right, 0.3).unwrap();
+    assert_eq!(field.distance(&nav, &map, left), Ok(None));
+    assert_eq!(field.direction(&nav, &map, left), Ok(None));
+    assert!(field.distance(&nav, &map, v(6.0, 3.0)).unwrap().is_some());
+}
