@@ -2,10 +2,10 @@
 //! name what and where.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use serde_json::Value;
-use support::{stderr, stdout, tileslide};
+use support::{replica_dir, stderr, stdout, tileslide};
 
 mod support;
 
@@ -25,20 +25,6 @@ const ROOM: &str = "\
 #...../#
 ########
 ";
-
-fn replica_dir() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/replica-island");
-    if dir.is_dir() {
-        return Some(dir);
-    }
-    assert!(
-        std::env::var_os("CI").is_none(),
-        "CI is set but the Replica Island data is missing at {}",
-        dir.display()
-    );
-    eprintln!("skipping: no Replica Island data at {}", dir.display());
-    None
-}
 
 #[test]
 fn info_json_reports_size_tiles_and_segments() {

@@ -2,28 +2,15 @@
 //! on ASCII and Tiled maps, no path, and arguments refused with errors that name them.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use serde_json::Value;
-use support::{stderr, stdout, tileslide};
+use support::{example, replica_dir, scratch_in, stderr, stdout, tileslide};
 
 mod support;
 
-fn example(name: &str) -> String {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples/maps")
-        .join(name)
-        .to_str()
-        .unwrap()
-        .to_owned()
-}
-
 fn scratch(name: &str, contents: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli_path");
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, contents).unwrap();
-    path
+    scratch_in("cli_path", name, contents)
 }
 
 /// Two rooms joined by a corridor one cell wide (row 3, x in [5, 6]): a circle of radius
@@ -176,20 +163,6 @@ fn path_on_a_baked_map_is_its_sources() {
         assert_eq!(source["found"], true, "{source}");
         assert_eq!(path_json(baked.to_str().unwrap(), from, to, "0.4"), source);
     }
-}
-
-fn replica_dir() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/replica-island");
-    if dir.is_dir() {
-        return Some(dir);
-    }
-    assert!(
-        std::env::var_os("CI").is_none(),
-        "CI is set but the Replica Island data is missing at {}",
-        dir.display()
-    );
-    eprintln!("skipping: no Replica Island data at {}", dir.display());
-    None
 }
 
 #[test]

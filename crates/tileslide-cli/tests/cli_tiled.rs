@@ -5,25 +5,12 @@
 use std::path::{Path, PathBuf};
 
 use serde_json::Value;
-use support::{stderr, stdout, tileslide};
+use support::{example, scratch_in, stderr, stdout, tileslide};
 
 mod support;
 
-fn example(name: &str) -> String {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples/maps")
-        .join(name)
-        .to_str()
-        .unwrap()
-        .to_owned()
-}
-
 fn scratch(name: &str, contents: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli_tiled");
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, contents).unwrap();
-    path
+    scratch_in("cli_tiled", name, contents)
 }
 
 /// `info --json`, without the fields that name the file and its format.
