@@ -13,10 +13,10 @@
 //!   `is_affected_by` answers never miss a change;
 //! - bad input is refused with the error naming it.
 //!
-//! Three of these fail today and are `#[ignore]`d with the reason (the 8 %, the crowd,
-//! and `FlowField::is_affected_by` after a goal is dug out), each with a small regression
-//! test that pins the cause; run them with `cargo test -p tileslide --test path --
-//! --ignored`.
+//! Five tests are `#[ignore]`d, each naming the bug it is failing on (the 8 %, the crowd,
+//! flow directions at the wall margin, an oblique move into a touching body, and
+//! `FlowField::is_affected_by` after a goal is dug out); run them with
+//! `cargo test -p tileslide --test path -- --ignored`.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 

@@ -82,12 +82,7 @@ impl FlowField {
                 continue;
             }
             let (i, j) = lattice.coords(n);
-            let mut bits = open_moves(table, n, i, j, self.need);
-            while bits != 0 {
-                let dir = bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                let (dx, dy) = MOVES[dir];
-                let m = lattice.index((i as i32 + dx) as u32, (j as i32 + dy) as u32);
+            for (dir, m) in lattice.neighbours(n, open_moves(table, n, i, j, self.need)) {
                 let nd = d.saturating_add(lattice.costs[dir]);
                 if nd < self.distance[m] {
                     self.distance[m] = nd;

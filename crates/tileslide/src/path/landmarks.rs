@@ -14,7 +14,7 @@
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-use super::lattice::{Lattice, MOVES};
+use super::lattice::Lattice;
 
 /// Landmarks per radius class.
 pub(crate) const LANDMARKS: usize = 8;
@@ -104,13 +104,7 @@ fn dijkstra(lattice: &Lattice, moves: &[u8], source: usize, out: &mut [u32]) {
         if d > out[n] {
             continue;
         }
-        let (i, j) = lattice.coords(n);
-        let mut bits = moves[n];
-        while bits != 0 {
-            let dir = bits.trailing_zeros() as usize;
-            bits &= bits - 1;
-            let (dx, dy) = MOVES[dir];
-            let m = lattice.index((i as i32 + dx) as u32, (j as i32 + dy) as u32);
+        for (dir, m) in lattice.neighbours(n, moves[n]) {
             let nd = d.saturating_add(lattice.costs[dir]);
             if nd < out[m] {
                 out[m] = nd;

@@ -95,6 +95,26 @@ impl Lattice {
             .then_some((ni as u32, nj as u32))
     }
 
+    /// The node each move set in `bits` (bit `d` for move `d`) reaches from node `index`,
+    /// with the move. The moves must stay on the lattice (open moves always do).
+    #[inline]
+    pub fn neighbours(&self, index: usize, bits: u8) -> impl Iterator<Item = (usize, usize)> {
+        let (i, j) = self.coords(index);
+        let mut bits = bits;
+        std::iter::from_fn(move || {
+            if bits == 0 {
+                return None;
+            }
+            let d = bits.trailing_zeros() as usize;
+            bits &= bits - 1;
+            let (dx, dy) = MOVES[d];
+            Some((
+                d,
+                self.index((i as i32 + dx) as u32, (j as i32 + dy) as u32),
+            ))
+        })
+    }
+
     /// The lattice coordinates of `p`, fractional (node (i, j) at (i, j)).
     pub fn local(&self, p: Vec2) -> Vec2 {
         (p - self.origin) / self.step

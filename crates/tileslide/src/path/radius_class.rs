@@ -10,7 +10,7 @@ use std::collections::VecDeque;
 
 use super::clearance::{ChangedMove, Clearance, open_moves};
 use super::landmarks::Landmarks;
-use super::lattice::{Lattice, MOVES};
+use super::lattice::Lattice;
 
 /// The moves and parts for circles needing `need` clearance steps.
 #[derive(Clone, Debug)]
@@ -94,13 +94,7 @@ fn label_parts(lattice: &Lattice, moves: &[u8]) -> Vec<u32> {
         parts[start] = start as u32;
         queue.push_back(start);
         while let Some(n) = queue.pop_front() {
-            let (i, j) = lattice.coords(n);
-            let mut bits = moves[n];
-            while bits != 0 {
-                let d = bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                let (dx, dy) = MOVES[d];
-                let m = lattice.index((i as i32 + dx) as u32, (j as i32 + dy) as u32);
+            for (_, m) in lattice.neighbours(n, moves[n]) {
                 if parts[m] == UNLABELLED {
                     parts[m] = start as u32;
                     queue.push_back(m);

@@ -124,13 +124,7 @@ impl Search {
                     best = Some((total, node));
                 }
             }
-            let (i, j) = lattice.coords(n);
-            let mut bits = moves[n];
-            while bits != 0 {
-                let d = bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                let (dx, dy) = MOVES[d];
-                let m = lattice.index((i as i32 + dx) as u32, (j as i32 + dy) as u32);
+            for (d, m) in lattice.neighbours(n, moves[n]) {
                 if self.closed[m] == generation {
                     continue;
                 }
