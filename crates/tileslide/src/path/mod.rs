@@ -41,6 +41,7 @@ mod flow;
 mod landmarks;
 mod lattice;
 mod radius_class;
+mod radix_heap;
 mod search;
 mod smooth;
 

@@ -1,6 +1,7 @@
-//! A* over the lattice for one radius (Hart, Nilsson & Raphael 1968), with dense per-node
-//! arrays stamped by a search number, so a query touches only the nodes it reaches and
-//! nothing is cleared between queries.
+//! A* over the lattice for one radius (Hart, Nilsson & Raphael 1968), with a dense per-node
+//! record stamped by a search number, so a query touches only the nodes it reaches and
+//! nothing is cleared between queries, and a radix heap for the open list (f never
+//! decreases under a consistent heuristic).
 //!
 //! The query's end points are off the lattice: the start joins the search through the
 //! nodes around it it can reach in a straight line (each with the cost of that line), and
@@ -9,31 +10,38 @@
 //! never overestimates and stays consistent; the search stops when nothing left in the open
 //! list can beat the best way found to the goal.
 
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
-
 use super::landmarks::Landmarks;
 use super::lattice::{Lattice, MOVES};
+use super::radix_heap::RadixHeap;
 
 /// `parent` of a node the search started from.
 const START: u8 = u8::MAX;
 
+/// What a search knows of one node; valid when `stamp` is the search's number, so
+/// nothing is cleared between searches. One 16-byte record, so a node costs one cache
+/// line touch, not one per array.
+#[derive(Clone, Copy, Debug, Default)]
+struct NodeState {
+    stamp: u32,
+    /// Cheapest cost found from the start side.
+    g: u32,
+    /// The heuristic, computed once when the node is first seen.
+    h: u32,
+    /// The move that reached the node, or [`START`].
+    parent: u8,
+    closed: bool,
+    /// The goal is joined from this node.
+    target: bool,
+}
+
 /// Scratch for searches, reused between queries.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Search {
-    /// Number of the current search; a node's `g` and `parent` are valid when its `seen`
-    /// equals it, and it is closed when its `closed` equals it.
+    /// Number of the current search.
     generation: u32,
-    seen: Vec<u32>,
-    closed: Vec<u32>,
-    /// Search numbers marking the nodes the goal is reached from.
-    target: Vec<u32>,
-    g: Vec<u32>,
-    /// The move that reached the node.
-    parent: Vec<u8>,
-    /// Open nodes by (f, h) then node: among equal f the one nearest the goal first,
-    /// which keeps open ground from being expanded row after row.
-    open: BinaryHeap<Reverse<(u64, u32)>>,
+    nodes: Vec<NodeState>,
+    /// Open nodes by f = g + h (a consistent heuristic makes f pop in order).
+    open: RadixHeap,
 }
 
 /// A node an end point joins the lattice through, with the cost of the straight line.
@@ -45,22 +53,14 @@ pub(crate) struct Attach {
 
 impl Search {
     fn begin(&mut self, nodes: usize) {
-        if self.seen.len() != nodes {
-            *self = Self {
-                seen: vec![0; nodes],
-                closed: vec![0; nodes],
-                target: vec![0; nodes],
-                g: vec![0; nodes],
-                parent: vec![START; nodes],
-                ..Self::default()
-            };
+        if self.nodes.len() != nodes {
+            self.nodes = vec![NodeState::default(); nodes];
+            self.generation = 0;
         }
         self.generation = self.generation.wrapping_add(1);
         if self.generation == 0 {
             // After 2³² searches the stamps wrap: forget them all once.
-            self.seen.fill(0);
-            self.closed.fill(0);
-            self.target.fill(0);
+            self.nodes.fill(NodeState::default());
             self.generation = 1;
         }
         self.open.clear();
@@ -87,72 +87,92 @@ impl Search {
             .max()
             .unwrap_or(0);
         let bounds = landmarks.goal_bounds(goals.iter().map(|a| a.node));
-        let h = |index: usize| {
-            let octile = lattice
-                .octile(lattice.coords(index), centre)
-                .saturating_sub(slack);
+        let h = |index: usize, at: (u32, u32)| {
+            let octile = lattice.octile(at, centre).saturating_sub(slack);
             octile.max(landmarks.lower_bound(index, &bounds))
         };
+        let state = &mut self.nodes;
+        // A node seen for the first time in this search: not reached yet, heuristic known.
+        let fresh = |state: &mut [NodeState], n: usize, at: (u32, u32)| {
+            let s = &mut state[n];
+            if s.stamp != generation {
+                *s = NodeState {
+                    stamp: generation,
+                    g: u32::MAX,
+                    h: h(n, at),
+                    parent: START,
+                    closed: false,
+                    target: false,
+                };
+            }
+        };
         for a in goals {
-            self.target[a.node as usize] = generation;
+            let n = a.node as usize;
+            fresh(state, n, lattice.coords(n));
+            state[n].target = true;
         }
         for a in starts {
             let n = a.node as usize;
-            if self.seen[n] != generation || a.cost < self.g[n] {
-                self.seen[n] = generation;
-                self.g[n] = a.cost;
-                self.parent[n] = START;
-                self.open.push(key(a.cost, h(n), a.node));
+            fresh(state, n, lattice.coords(n));
+            let s = &mut state[n];
+            if a.cost < s.g {
+                s.g = a.cost;
+                s.parent = START;
+                self.open.push(a.cost.saturating_add(s.h), a.node);
             }
         }
+        // Index step of each move, so a neighbour costs an add, not a multiplication.
+        let nx = lattice.nx as isize;
+        let offsets = MOVES.map(|(dx, dy)| dy as isize * nx + dx as isize);
         let mut best: Option<(u32, u32)> = None;
-        while let Some(Reverse((k, node))) = self.open.pop() {
-            let f = (k >> 32) as u32;
+        while let Some((f, node)) = self.open.pop() {
             if best.is_some_and(|(cost, _)| f >= cost) {
                 break;
             }
             let n = node as usize;
-            if self.closed[n] == generation {
+            let s = &mut state[n];
+            if s.closed {
                 continue;
             }
-            self.closed[n] = generation;
-            let g = self.g[n];
-            if self.target[n] == generation {
+            s.closed = true;
+            let g = s.g;
+            if s.target {
                 let join = goals.iter().find(|a| a.node == node).map_or(0, |a| a.cost);
                 let total = g.saturating_add(join);
                 if best.is_none_or(|(cost, _)| total < cost) {
                     best = Some((total, node));
                 }
             }
-            for (d, m) in lattice.neighbours(n, moves[n]) {
-                if self.closed[m] == generation {
-                    continue;
-                }
+            let (i, j) = lattice.coords(n);
+            let mut bits = moves[n];
+            while bits != 0 {
+                let d = bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                // Open moves stay on the lattice.
+                let m = n.wrapping_add_signed(offsets[d]);
+                let (dx, dy) = MOVES[d];
+                fresh(
+                    state,
+                    m,
+                    (i.wrapping_add_signed(dx), j.wrapping_add_signed(dy)),
+                );
+                let t = &mut state[m];
                 let ng = g.saturating_add(lattice.costs[d]);
-                if self.seen[m] != generation || ng < self.g[m] {
-                    self.seen[m] = generation;
-                    self.g[m] = ng;
-                    self.parent[m] = d as u8;
-                    self.open.push(key(ng, h(m), m as u32));
+                if !t.closed && ng < t.g {
+                    t.g = ng;
+                    t.parent = d as u8;
+                    self.open.push(ng.saturating_add(t.h), m as u32);
                 }
             }
         }
         let (_, mut node) = best?;
         let mut nodes = vec![node];
-        while self.parent[node as usize] != START {
-            let d = self.parent[node as usize] as usize;
-            let (i, j) = lattice.coords(node as usize);
-            let (dx, dy) = MOVES[d];
-            node = lattice.index((i as i32 - dx) as u32, (j as i32 - dy) as u32) as u32;
+        while state[node as usize].parent != START {
+            let d = state[node as usize].parent as usize;
+            node = (node as usize).wrapping_add_signed(-offsets[d]) as u32;
             nodes.push(node);
         }
         nodes.reverse();
         Some(nodes)
     }
-}
-
-/// The open list's order: f, then h (nearest the goal first), then the node.
-fn key(g: u32, h: u32, node: u32) -> Reverse<(u64, u32)> {
-    let f = u64::from(g.saturating_add(h));
-    Reverse((f << 32 | u64::from(h), node))
 }
