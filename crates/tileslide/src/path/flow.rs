@@ -7,13 +7,11 @@
 //! never aims at a node behind a corner it would have to round, so agents moved by the
 //! resolver flow around each other and corners instead of catching on them.
 
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
-
 use glam::Vec2;
 
 use super::clearance::open_moves;
 use super::lattice::MOVES;
+use super::radix_heap::RadixHeap;
 use super::{NavChange, NavError, NavGrid};
 use crate::tiles::TileMap;
 
@@ -68,15 +66,15 @@ impl FlowField {
         let lattice = &table.lattice;
         self.distance.fill(UNREACHED);
         self.next.fill(TO_GOAL);
-        let mut open = BinaryHeap::new();
+        let mut open = RadixHeap::default();
         for a in nav.attach(map, self.goal, self.radius) {
             let n = a.node as usize;
             if a.cost < self.distance[n] {
                 self.distance[n] = a.cost;
-                open.push(Reverse((a.cost, a.node)));
+                open.push(a.cost, a.node);
             }
         }
-        while let Some(Reverse((d, node))) = open.pop() {
+        while let Some((d, node)) = open.pop() {
             let n = node as usize;
             if d > self.distance[n] {
                 continue;
@@ -88,7 +86,7 @@ impl FlowField {
                     self.distance[m] = nd;
                     // From m, the way on is the opposite move.
                     self.next[m] = ((dir + 4) % 8) as u8;
-                    open.push(Reverse((nd, m as u32)));
+                    open.push(nd, m as u32);
                 }
             }
         }

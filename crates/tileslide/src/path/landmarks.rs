@@ -12,9 +12,9 @@
 //! stay valid; opening a move can shorten them, so then the landmarks are recomputed.
 
 use std::cmp::Reverse;
-use std::collections::BinaryHeap;
 
 use super::lattice::Lattice;
+use super::radix_heap::RadixHeap;
 
 /// Landmarks per radius class.
 pub(crate) const LANDMARKS: usize = 8;
@@ -93,13 +93,14 @@ impl Landmarks {
     }
 }
 
-/// Distances from `source` over the open `moves` into `out`.
+/// Distances from `source` over the open `moves` into `out` (Dijkstra, with a radix heap:
+/// distances pop in order, so the monotone queue applies).
 fn dijkstra(lattice: &Lattice, moves: &[u8], source: usize, out: &mut [u32]) {
     out.fill(FAR);
     out[source] = 0;
-    let mut open = BinaryHeap::new();
-    open.push(Reverse((0u32, source as u32)));
-    while let Some(Reverse((d, node))) = open.pop() {
+    let mut open = RadixHeap::default();
+    open.push(0, source as u32);
+    while let Some((d, node)) = open.pop() {
         let n = node as usize;
         if d > out[n] {
             continue;
@@ -108,7 +109,7 @@ fn dijkstra(lattice: &Lattice, moves: &[u8], source: usize, out: &mut [u32]) {
             let nd = d.saturating_add(lattice.costs[dir]);
             if nd < out[m] {
                 out[m] = nd;
-                open.push(Reverse((nd, m as u32)));
+                open.push(nd, m as u32);
             }
         }
     }
