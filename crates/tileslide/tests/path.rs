@@ -13,9 +13,8 @@
 //!   `is_affected_by` answers never miss a change;
 //! - bad input is refused with the error naming it.
 //!
-//! Four tests are `#[ignore]`d, each naming the bug it is failing on (the crowd, flow
-//! directions at the wall margin, an oblique move into a touching body, and
-//! `FlowField::is_affected_by` after a goal is dug out); run them with
+//! Two tests are `#[ignore]`d, each naming the bug it is failing on (the crowd and an
+//! oblique move into a touching body); run them with
 //! `cargo test -p tileslide --test path -- --ignored`.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -682,10 +681,9 @@ fn a_crowd_following_a_flow_field_reaches_the_goal_without_overlapping_or_sticki
 /// and `NavGrid::fits`) need r + the grid's margin (also 1e-3 cell): a body pushed against
 /// a wall gets no direction, proposes no move and stays there for good, a plug for others.
 #[test]
-#[ignore = "src bug: FlowField::direction is None within the grid's margin of a wall, where the resolver leaves bodies"]
 fn a_body_the_resolver_left_against_a_wall_still_gets_a_flow_direction() {
     let map = map(ROOM);
-    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
     let field = FlowField::new(&nav, &map, v(6.0, 2.0), 0.3).unwrap();
     let mut bodies = Bodies::new();
     let h = bodies
@@ -703,6 +701,23 @@ fn a_body_the_resolver_left_against_a_wall_still_gets_a_flow_direction() {
         "a body at {p}, {} from the wall, gets no direction to the goal",
         p.x - 1.0
     );
+    assert!(field.distance(&nav, &map, p).unwrap().is_some());
+    assert!(nav.fits(&map, p, 0.3).unwrap());
+    // A path from there, along the wall and away, is clear by the circle cast.
+    let path = nav.find_path(&map, p, v(6.0, 2.0), 0.3).unwrap().unwrap();
+    for w in path.points().windows(2) {
+        let hit = map.cast_circle(w[0], 0.3, w[1] - w[0], &both_faces());
+        assert!(hit.is_none(), "{w:?}: {hit:?}");
+    }
+    // Where fitting ends: half the resolver's gap from the wall fits, an eighth of the
+    // grid's margin does not, nor does overlapping it.
+    for (x, fits) in [
+        (1.3 + 5e-4, true),
+        (1.3 + 1.25e-4, false),
+        (1.3 - 1e-2, false),
+    ] {
+        assert_eq!(nav.fits(&map, v(x, 2.0), 0.3).unwrap(), fits, "x {x}");
+    }
 }
 
 /// Regression (Bodies): a body touching another (as the resolver leaves them, within the
@@ -895,7 +910,6 @@ fn a_far_edit_does_not_affect_a_path_and_filling_a_cell_on_it_does() {
 /// reaches, so a field whose goal was walled in (it reaches no node) is never told that
 /// digging the goal out changed it. Found by the update property test.
 #[test]
-#[ignore = "src bug: FlowField::is_affected_by ignores the goal's own joins, so digging out a walled-in goal is reported as not affecting the field"]
 fn a_field_whose_goal_was_walled_in_is_affected_when_it_is_dug_out() {
     let mut map = map(ROOM);
     let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();

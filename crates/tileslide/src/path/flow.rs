@@ -141,8 +141,10 @@ impl FlowField {
             return Ok(None);
         };
         let lattice = &nav.table.lattice;
-        let clear =
-            |q: Vec2| nav.table.segment_clearance(map, p, q) >= self.radius + nav.table.margin;
+        let Some(need) = nav.end_clearance(map, p, self.radius) else {
+            return Ok(None);
+        };
+        let clear = |q: Vec2| nav.table.segment_clearance(map, p, q) >= need;
         // The way on: up to LOOKAHEAD nodes, then the goal if reached.
         let mut way = Vec::with_capacity(LOOKAHEAD + 1);
         let mut n = node as usize;
@@ -169,10 +171,19 @@ impl FlowField {
     }
 
     /// True when `change` opened or closed, for this field's radius, a move that touches a
-    /// node the field reaches: then [`refresh`](Self::refresh) it.
+    /// node the field reaches, or changed walls near enough to the goal to change how it
+    /// joins the lattice (a goal walled in and dug out again): then
+    /// [`refresh`](Self::refresh) it.
     #[must_use]
     pub fn is_affected_by(&self, nav: &NavGrid, change: &NavChange) -> bool {
         let lattice = &nav.table.lattice;
+        // The goal joins nodes up to a cell away (`NavGrid::attach`), by lines that walls
+        // within the radius and margin of them block.
+        let joins = crate::geometry::Aabb::from_corners(self.goal, self.goal)
+            .expand(lattice.step.max_element() * 2.0 + self.radius + nav.table.margin);
+        if change.edited.overlaps(&joins) {
+            return true;
+        }
         change.flips_for(self.need, |m| {
             let n = m.node as usize;
             let (i, j) = lattice.coords(n);

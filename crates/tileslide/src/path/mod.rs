@@ -56,6 +56,10 @@ use clearance::{ChangedMove, Clearance};
 use radius_class::RadiusClass;
 use search::{Attach, Search};
 
+/// The share of the grid's margin an end point must be clear of walls by (see
+/// [`NavGrid::end_clearance`]).
+const END_MARGIN: f32 = 0.25;
+
 /// Radius classes a grid keeps moves and parts for (the least recently used goes first).
 const CACHED_CLASSES: usize = 8;
 
@@ -215,6 +219,9 @@ pub struct NavChange {
     moves: Vec<ChangedMove>,
     /// The moves' extent (map units), `None` if nothing changed.
     region: Option<Aabb>,
+    /// Where walls may have changed: the edited cell's 3 × 3 block (seam culling changes
+    /// the segments of its neighbours too).
+    edited: Aabb,
 }
 
 impl NavChange {
@@ -307,7 +314,15 @@ impl NavGrid {
             let b = Aabb::from_corners(p, q);
             Some(acc.map_or(b, |a| a.union(&b)))
         });
-        Ok(NavChange { moves, region })
+        let corner =
+            |c: i64, r: i64| map.origin() + Vec2::new(c as f32, r as f32) * map.cell_size();
+        let (c, r) = (i64::from(cell.col), i64::from(cell.row));
+        let edited = Aabb::from_corners(corner(c - 1, r - 1), corner(c + 2, r + 2));
+        Ok(NavChange {
+            moves,
+            region,
+            edited,
+        })
     }
 
     pub(crate) fn check(&self, map: &TileMap, radius: f32) -> Result<u16, NavError> {
@@ -323,14 +338,30 @@ impl NavGrid {
         Ok(self.table.need(radius))
     }
 
+    /// How clear of walls a straight line from the end point `p` must stay for a circle of
+    /// `radius`, or `None` if the circle does not fit at `p`.
+    ///
+    /// Lattice moves keep the grid's whole margin from walls, but end points are where
+    /// bodies are, and the resolver leaves a body closer than that to a wall it was pushed
+    /// against (`ResolveConfig::gap`). So an end point fits when it is clear of walls by a
+    /// quarter of the margin ([`END_MARGIN`]), and a line from it must stay clear by the
+    /// margin or, if `p` itself is closer, by `p`'s own clearance less an eighth of the
+    /// margin: it may run along the wall or away from it, never towards it. Either way it
+    /// stays more than the radius from every wall, so the circle cast finds it clear.
+    pub(crate) fn end_clearance(&self, map: &TileMap, p: Vec2, radius: f32) -> Option<f32> {
+        let margin = self.table.margin;
+        let own = self.table.segment_clearance(map, p, p);
+        (own >= radius + margin * END_MARGIN)
+            .then(|| (radius + margin).min(own - margin * END_MARGIN * 0.5))
+    }
+
     /// The nodes around `p` a circle of `radius` reaches from `p` in a straight line, with
     /// the line's cost; empty if the circle does not fit at `p`.
     pub(crate) fn attach(&self, map: &TileMap, p: Vec2, radius: f32) -> Vec<Attach> {
         let lattice = &self.table.lattice;
-        let need = radius + self.table.margin;
-        if self.table.segment_clearance(map, p, p) < need {
+        let Some(need) = self.end_clearance(map, p, radius) else {
             return Vec::new();
-        }
+        };
         let base = lattice.local(p).floor();
         let mut out = Vec::new();
         for dj in -1..=2 {
@@ -376,8 +407,11 @@ impl NavGrid {
         }
         // Near ends joined straight: no search needed.
         let cells = from.distance(to) / map.cell_size().min_element();
-        if cells <= 4.0 && self.table.segment_clearance(map, from, to) >= radius + self.table.margin
-        {
+        let ends = self
+            .end_clearance(map, from, radius)
+            .zip(self.end_clearance(map, to, radius))
+            .map(|(a, b)| a.min(b));
+        if cells <= 4.0 && ends.is_some_and(|e| self.table.segment_clearance(map, from, to) >= e) {
             return Ok(Some(Path::new(vec![from, to], radius, need)));
         }
         let k = self.class(need);
@@ -459,7 +493,9 @@ impl NavGrid {
         ))
     }
 
-    /// True when a circle of `radius` fits at `p` (clear of walls by the grid's margin).
+    /// True when a circle of `radius` fits at `p`: clear of walls by a quarter of the
+    /// grid's margin (2.5·10⁻⁴ of a cell), which takes in every place the resolver leaves
+    /// a body of that radius (at least half its default gap, 5·10⁻⁴ of a cell, from walls).
     pub fn fits(&self, map: &TileMap, p: Vec2, radius: f32) -> Result<bool, NavError> {
         if !p.is_finite() {
             return Err(NavError::NonFinite {
@@ -468,6 +504,6 @@ impl NavGrid {
             });
         }
         self.check(map, radius)?;
-        Ok(self.table.segment_clearance(map, p, p) >= radius + self.table.margin)
+        Ok(self.end_clearance(map, p, radius).is_some())
     }
 }
