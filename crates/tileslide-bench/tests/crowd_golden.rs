@@ -9,7 +9,7 @@ use tileslide_bench::crowd::{CrowdContender, TileslideCrowd, run_crowd};
 use tileslide_scenes::{CROWD_RADIUS, dungeon256, scene_crowd};
 
 /// FNV-1a 64 of the final positions' bits, x then y, body by body.
-const GOLDEN: u64 = 0x77dd_8e41_39a7_e572;
+const GOLDEN: u64 = 0x8584_2b31_c9d3_e773;
 
 fn fnv(positions: &[glam::Vec2]) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;

@@ -12,10 +12,6 @@
 //! - local updates after random digs and fills equal a full rebuild, and the
 //!   `is_affected_by` answers never miss a change;
 //! - bad input is refused with the error naming it.
-//!
-//! Two tests are `#[ignore]`d, each naming the bug it is failing on (the crowd and an
-//! oblique move into a touching body); run them with
-//! `cargo test -p tileslide --test path -- --ignored`.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -598,7 +594,6 @@ const CROWD: &str = "\
 /// it) within 2,500 steps; no two overlap and none touches a wall closer than its radius at
 /// any step.
 #[test]
-#[ignore = "src bugs: FlowField::direction is None for an agent the resolver left against a wall (closer than r + margin), and Bodies cuts oblique moves into a touching body to zero instead of sliding; see the two regression tests below"]
 fn a_crowd_following_a_flow_field_reaches_the_goal_without_overlapping_or_sticking() {
     const R: f32 = 0.3;
     const AGENTS: usize = 30;
@@ -725,7 +720,6 @@ fn a_body_the_resolver_left_against_a_wall_still_gets_a_flow_direction() {
 /// along the contact tangent, for some directions: crowds lock up in open space. Found by
 /// the crowd test; the first case is two of its agents as it left them.
 #[test]
-#[ignore = "src bug (bodies): an oblique move into a touching body is cut to zero instead of sliding"]
 fn a_body_touching_another_slides_round_it_when_moving_obliquely_into_it() {
     let map = map(TWO_ROOMS);
     let v = Vec2::new;

@@ -19,6 +19,10 @@
 //! stops at the radius plus the gap, and a body already inside that band may still close in
 //! to half the gap. So rounding never leaves anything overlapping, and a circle sliding along
 //! a wall with a remainder that leans into it by a rounding error is not stopped ("snag").
+//! Against a round obstacle (another body, a wall's rounded end) a body already inside the
+//! band is still free to move along the contact tangent, to within rounding: that is where
+//! its slide goes, and taking rounding for an approach would block the slide at `t = 0` on
+//! every pass (see `grazes`).
 
 use glam::Vec2;
 
@@ -34,6 +38,13 @@ use crate::tiles::TileMap;
 /// Relative size below which the remainder's projection on the tangent counts as zero (the
 /// write-up's `EPS`, relative to the remainder's length for `f32`).
 const TIE_EPSILON: f32 = 1e-5;
+
+/// Largest lean into a round obstacle (another circle, a wall's rounded end) that a move
+/// starting within its contact radius may have and still count as running along the
+/// contact tangent, as a fraction of the move's length (see `grazes`). The slide off such a
+/// contact leans by rounding, about 1e-7 of its length; and a move leaning in by `ε` brings
+/// the centres at most `ε²/2` of their distance closer, far below a float's spacing.
+const TANGENT_EPSILON: f32 = 1e-5;
 
 /// Shortest safe part of a move that is taken, as a fraction of the gap (see
 /// `collide_and_slide`).
@@ -349,6 +360,23 @@ fn band(distance2: f32, radius: f32, gap: f32) -> f32 {
     }
 }
 
+/// Whether `hit` is the start of a move by `motion` from within the contact radius of a
+/// round obstacle that only runs along it: the contact normal, which is then the direction
+/// between the centres, and the move are perpendicular to within [`TANGENT_EPSILON`].
+///
+/// The slide off a contact met at `t = 0` is perpendicular to its normal, but only to
+/// within rounding (the normal is rounded when normalized): the exact sweep
+/// (`sweep_circle_circle`) counts any move with a negative projection on the centres'
+/// direction as an approach, and for about half the slides the projection rounds negative.
+/// Such a slide would be blocked at `t = 0` by the very contact it slides off, on every pass,
+/// and the body would not move at all. A move this close to the tangent cannot come closer
+/// than `1 − TANGENT_EPSILON²/2` of the centres' distance anywhere along it, so it is not a
+/// contact. Only for round obstacles: along a flat side a lean adds up with the length of
+/// the move, so the same tolerance would let a body creep into the wall.
+fn grazes(hit: SweepHit, motion: Vec2) -> bool {
+    hit.t == 0.0 && hit.normal.dot(motion) >= -TANGENT_EPSILON * motion.length()
+}
+
 fn sweep_wall(
     wall: &Capsule,
     center: Vec2,
@@ -357,7 +385,23 @@ fn sweep_wall(
     toi: TimeOfImpact,
 ) -> Option<SweepHit> {
     match toi {
-        TimeOfImpact::Exact => wall.sweep(center, radius, motion),
+        TimeOfImpact::Exact => {
+            let hit = wall.sweep(center, radius, motion)?;
+            // The flat side reports the wall's own normal; any other comes from a rounded
+            // end (a shortcut only: the sweep below would return the flat hit unchanged).
+            if hit.normal == wall.normal || !grazes(hit, motion) {
+                return Some(hit);
+            }
+            // A rounded end only grazed from within its radius is not a contact, but the
+            // flat side or the other end may still be met further on: sweep again without
+            // the ends the move only grazes.
+            let mut caps = wall.caps;
+            for (cap, end) in caps.iter_mut().zip([wall.segment.a, wall.segment.b]) {
+                *cap &= !sweep_circle_circle(center, motion, end, radius)
+                    .is_some_and(|end_hit| grazes(end_hit, motion));
+            }
+            Capsule { caps, ..*wall }.sweep(center, radius, motion)
+        }
         TimeOfImpact::Bisection { halvings } => {
             // The write-up's check at sampled positions: inside the capsule, on the front.
             let at = |t: f32| center + motion * t;
@@ -384,7 +428,9 @@ fn sweep_circle(
     toi: TimeOfImpact,
 ) -> Option<SweepHit> {
     match toi {
-        TimeOfImpact::Exact => sweep_circle_circle(center, motion, other, radius),
+        TimeOfImpact::Exact => {
+            sweep_circle_circle(center, motion, other, radius).filter(|&hit| !grazes(hit, motion))
+        }
         TimeOfImpact::Bisection { halvings } => {
             let at = |t: f32| center + motion * t;
             let t = bisect(halvings, |t| {

@@ -1,0 +1,229 @@
+//! Bodies slide round what they touch. A body left in the gap band of a round obstacle
+//! (another body, or a wall's rounded convex corner), as `resolve` leaves it after a contact,
+//! and moving obliquely into it, slides along the contact tangent instead of stopping: the
+//! write-up's slide, from any approach angle. Until this was fixed, the slide itself was
+//! blocked at `t = 0` by the contact it slid off, whenever its projection on the centres'
+//! direction rounded negative (5–15 % of approach angles), and crowds locked up.
+//!
+//! ```text
+//!           motion (α into the normal)
+//!             ↘
+//!      ( mover )  ← within the gap band of →  ( still ) / ▛ corner
+//!             ↓ slide along the tangent: at least |motion|·sin α
+//! ```
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use proptest::prelude::*;
+use tileslide::io::ascii;
+use tileslide::{Bodies, BodyDesc, BodyShape, ResolveConfig, SlideMode, TileMap, Vec2};
+
+/// A room with nothing in it: the still body stands at its centre, (6, 6).
+const OPEN: &str = "\
+############
+#..........#
+#..........#
+#..........#
+#..........#
+#..........#
+#..........#
+#..........#
+#..........#
+#..........#
+#..........#
+############";
+
+/// A room with one solid tile in the middle, x and y in [6, 7]: four convex corners.
+const PILLAR: &str = "\
+#############
+#...........#
+#...........#
+#...........#
+#...........#
+#...........#
+#.....#.....#
+#...........#
+#...........#
+#...........#
+#...........#
+#...........#
+#############";
+
+fn map(text: &str) -> TileMap {
+    ascii::parse(text, "bodies_slide.txt", 1.0).unwrap()
+}
+
+/// The gap band's width on these maps (cells of side 1).
+fn gap() -> f32 {
+    ResolveConfig::default().gap
+}
+
+/// The shortest resolved move a slide round the obstacle allows: the blocked move's part
+/// along the tangent, `|motion|·sin α`, less what the resolver may leave out on the way. A
+/// safe part before the contact shorter than an eighth of the gap is not taken (see
+/// `MIN_STEP` in `bodies/resolve.rs`), and rounding.
+fn least_slide(motion: Vec2, into: f32) -> f32 {
+    motion.length() * into.sin() * (1.0 - 1e-4) - gap() / 8.0
+}
+
+/// A move of `length` leaning `into` radians into the contact normal `normal` (pointing
+/// from the obstacle to the mover), to the left or right of it.
+fn oblique(normal: Vec2, into: f32, left: bool, length: f32) -> Vec2 {
+    let side = if left { normal.perp() } else { -normal.perp() };
+    (-normal * into.cos() + side * into.sin()) * length
+}
+
+fn slide_mode() -> impl Strategy<Value = SlideMode> {
+    prop_oneof![Just(SlideMode::FullLength), Just(SlideMode::Tangential)]
+}
+
+/// Distance from `p` to the pillar's tile, the square [6, 7]².
+fn distance_to_pillar(p: Vec2) -> f32 {
+    p.distance(p.clamp(Vec2::splat(6.0), Vec2::splat(7.0)))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2_000, ..ProptestConfig::default() })]
+
+    /// Two bodies within the gap band of each other (from a quarter of it to all of it),
+    /// at any approach angle, either slot order, and the mover leaning 20°–80° into the
+    /// other: it moves at least `|motion|·sin α`, and they do not overlap afterwards (nor
+    /// close in beyond the band's inner edge).
+    #[test]
+    fn a_body_moving_obliquely_into_one_it_touches_slides_round_it(
+        approach in 0.0f32..std::f32::consts::TAU,
+        (r_mover, r_still) in (0.1f32..0.5, 0.1f32..0.5),
+        band in 0.25f32..=1.0,
+        into_degrees in 20.0f32..=80.0,
+        left: bool,
+        length in 0.02f32..0.3,
+        mover_first: bool,
+        slide in slide_mode(),
+    ) {
+        let map = map(OPEN);
+        let normal = Vec2::new(approach.cos(), approach.sin());
+        let still = Vec2::new(6.0, 6.0);
+        let contact = r_mover + r_still;
+        let mover = still + normal * (contact + band * gap());
+        let into = into_degrees.to_radians();
+        let motion = oblique(normal, into, left, length);
+
+        let mut bodies = Bodies::new();
+        bodies.set_config(ResolveConfig { slide, ..ResolveConfig::default() });
+        let mover_desc = BodyDesc::new(mover, BodyShape::circle(r_mover).unwrap());
+        let still_desc = BodyDesc::new(still, BodyShape::circle(r_still).unwrap());
+        let (a, b) = if mover_first {
+            let a = bodies.add(mover_desc).unwrap();
+            (a, bodies.add(still_desc).unwrap())
+        } else {
+            let b = bodies.add(still_desc).unwrap();
+            (bodies.add(mover_desc).unwrap(), b)
+        };
+        bodies.propose(a, motion).unwrap();
+        let report = bodies.resolve(&map);
+        let moved = bodies.get(a).unwrap().resolved_move();
+        prop_assert!(
+            moved.length() >= least_slide(motion, into),
+            "a body {} from one it touches, moving {motion} ({into_degrees}° into it), moved \
+             {moved}, less than {}: {report:?}",
+            mover.distance(still),
+            least_slide(motion, into)
+        );
+        bodies.integrate();
+        let (end, still_end) = (bodies.get(a).unwrap().position(), bodies.get(b).unwrap().position());
+        prop_assert_eq!(still_end, still, "a body without a move moved");
+        let apart = end.distance(still_end);
+        prop_assert!(apart >= contact, "overlap: {apart} < {contact}");
+        let floor = mover.distance(still).min(contact + gap() / 2.0) - 1e-5;
+        prop_assert!(apart >= floor, "closed in to {apart}, under {floor}");
+    }
+
+    /// The same at a wall's rounded end: a body within the gap band of a convex corner of a
+    /// pillar, seen from any direction in which the corner is the nearest point, leaning
+    /// 20°–80° into it, moves at least `|motion|·sin α` and stays out of the pillar.
+    #[test]
+    fn a_body_moving_obliquely_into_a_convex_corner_it_touches_slides_round_it(
+        corner in 0usize..4,
+        around_degrees in 5.0f32..=85.0,
+        radius in 0.1f32..0.5,
+        band in 0.25f32..=1.0,
+        into_degrees in 20.0f32..=80.0,
+        left: bool,
+        length in 0.02f32..0.3,
+        slide in slide_mode(),
+    ) {
+        let map = map(PILLAR);
+        // The corner's outward quadrant: (sx, sy) from the pillar's centre.
+        let (sx, sy) = [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)][corner];
+        let corner_at = Vec2::new(6.5 + 0.5 * sx, 6.5 + 0.5 * sy);
+        let around = around_degrees.to_radians();
+        let normal = Vec2::new(sx * around.cos(), sy * around.sin());
+        let start = corner_at + normal * (radius + band * gap());
+        let into = into_degrees.to_radians();
+        let motion = oblique(normal, into, left, length);
+
+        let mut bodies = Bodies::new();
+        bodies.set_config(ResolveConfig { slide, ..ResolveConfig::default() });
+        let a = bodies.add(BodyDesc::new(start, BodyShape::circle(radius).unwrap())).unwrap();
+        bodies.propose(a, motion).unwrap();
+        let report = bodies.resolve(&map);
+        let moved = bodies.get(a).unwrap().resolved_move();
+        prop_assert!(
+            moved.length() >= least_slide(motion, into),
+            "a body {} from a corner, moving {motion} ({into_degrees}° into it), moved \
+             {moved}, less than {}: {report:?}",
+            start.distance(corner_at),
+            least_slide(motion, into)
+        );
+        bodies.integrate();
+        let end = bodies.get(a).unwrap().position();
+        let clear = distance_to_pillar(end);
+        prop_assert!(clear >= radius, "in the pillar: {clear} < {radius}");
+        let floor = distance_to_pillar(start).min(radius + gap() / 2.0) - 1e-5;
+        prop_assert!(clear >= floor, "closed in to {clear}, under {floor}");
+    }
+}
+
+/// The crowd's pair and the two approach angles of `tests/path.rs`
+/// (`a_body_touching_another_slides_round_it_when_moving_obliquely_into_it`), pinned here
+/// with the resolver's own tests.
+#[test]
+fn the_crowd_pair_that_locked_up_slides_round() {
+    let map = map(OPEN);
+    let v = Vec2::new;
+    let at_angle = |k: f32, separation: f32| {
+        let a = k / 64.0 * std::f32::consts::TAU;
+        let dir = v(a.cos(), a.sin());
+        let still = v(6.0, 6.0);
+        (
+            still + dir * separation,
+            still,
+            (dir.perp() - dir).normalize() * 0.05,
+        )
+    };
+    for (mover, still, motion) in [
+        (
+            // Shifted from (10.041976, 7.06332) and (9.649439, 7.517759) in the path test's
+            // map, by a whole number of cells: the same float spacing.
+            v(6.041976, 5.06332),
+            v(5.649439, 5.517759),
+            v(0.0077051776, 0.049402736),
+        ),
+        at_angle(2.0, 0.6005),
+        at_angle(3.0, 0.6003),
+    ] {
+        let mut bodies = Bodies::new();
+        let a = bodies
+            .add(BodyDesc::new(mover, BodyShape::circle(0.3).unwrap()))
+            .unwrap();
+        bodies
+            .add(BodyDesc::new(still, BodyShape::circle(0.3).unwrap()))
+            .unwrap();
+        bodies.propose(a, motion).unwrap();
+        let report = bodies.resolve(&map);
+        let moved = bodies.get(a).unwrap().resolved_move();
+        assert!(
+            moved.length() > 0.025,
+            "a body at {mover} moving {motion} moved {moved}: {report:?}"
+        );
+    }
+}
