@@ -1,5 +1,5 @@
 //! The `tileslide` command-line tool: inspect maps, cast rays, find paths, simulate crowds,
-//! run the standard benchmarks.
+//! draw maps, run the standard benchmarks.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -13,9 +13,10 @@ mod map_file;
 mod path;
 mod point_arg;
 mod raycast;
+mod render;
 mod simulate;
 
-/// Collision detection for tile-based 2D games: inspect maps, cast rays, benchmark.
+/// Collision detection for tile-based 2D games: inspect maps, cast rays, draw, benchmark.
 #[derive(Parser, Debug)]
 #[command(name = "tileslide", version, about)]
 struct Cli {
@@ -95,6 +96,32 @@ enum Command {
         /// Print one JSON object.
         #[arg(long)]
         json: bool,
+        /// Also write an animated GIF of the bodies over the map: a frame at the start,
+        /// every `--every` steps, and at the end.
+        #[arg(long, value_name = "OUT.gif")]
+        gif: Option<PathBuf>,
+        /// Steps between GIF frames (default 1).
+        #[arg(long, value_name = "N", requires = "gif")]
+        every: Option<u64>,
+        /// Pixels per cell in the GIF (default 16).
+        #[arg(long, value_name = "PX", requires = "gif", allow_hyphen_values = true)]
+        scale: Option<f32>,
+    },
+    /// Draw a map to a PNG: solid cells filled, active segments (one-way platforms in
+    /// orange) with their normals. Replica Island levels are drawn y up, others y down.
+    Render {
+        #[command(flatten)]
+        map: map_file::MapArgs,
+        /// Pixels per cell.
+        #[arg(long, value_name = "PX", default_value_t = tileslide_render::DEFAULT_PIXELS_PER_CELL, allow_hyphen_values = true)]
+        scale: f32,
+        /// Draw y up (row 0 at the bottom), for a baked Replica Island level.
+        #[arg(long)]
+        y_up: bool,
+        /// Where to write the PNG (default: the map's name with `.png`, in the current
+        /// directory).
+        #[arg(short, long, value_name = "OUT.png")]
+        output: Option<PathBuf>,
     },
     /// Bake a map into tileslide's binary format (`.tsm`), which loads without parsing
     /// text: its tile set, size, origin and tiles, checksummed.
@@ -148,7 +175,27 @@ fn main() -> ExitCode {
             radius,
             json,
         } => path::run(&map, &from, &to, &radius, json),
-        Command::Simulate { scene, steps, json } => simulate::run(&scene, steps, json),
+        Command::Simulate {
+            scene,
+            steps,
+            json,
+            gif,
+            every,
+            scale,
+        } => {
+            let gif = gif.map(|path| simulate::GifArgs {
+                path,
+                every: every.unwrap_or(1),
+                scale: scale.unwrap_or(tileslide_render::DEFAULT_PIXELS_PER_CELL),
+            });
+            simulate::run(&scene, steps, json, gif.as_ref())
+        }
+        Command::Render {
+            map,
+            scale,
+            y_up,
+            output,
+        } => render::run(&map, scale, output, y_up),
         Command::Bake { map, output } => bake(&map, &output),
         Command::Bench { which } => bench::run(which),
     };

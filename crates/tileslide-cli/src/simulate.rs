@@ -1,7 +1,7 @@
 //! `tileslide simulate SCENE.json`: circles with constant proposed moves, stepped with the
-//! resolver, audited at the end.
+//! resolver, audited at the end; with `--gif`, recorded as an animated GIF.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
@@ -9,12 +9,28 @@ use serde::Deserialize;
 use serde_json::json;
 use tileslide::io::ascii;
 use tileslide::{Bodies, BodyDesc, BodyHandle, BodyShape, Circle, SegmentFlags, TileMap, Vec2};
+use tileslide_render::{Animation, Canvas, Picture};
 
 use crate::json::number;
-use crate::map_file;
+use crate::map_file::{self, MapFormat};
+use crate::render;
 
 /// Most steps a scene may ask for (a typo of a few zeros should not run for days).
 const MAX_STEPS: u64 = 10_000_000;
+
+/// Most frames a GIF may have (each a full picture of the map).
+const MAX_GIF_FRAMES: u64 = 10_000;
+
+/// `--gif OUT.gif [--every N] [--scale PX]`.
+#[derive(Clone, Debug)]
+pub struct GifArgs {
+    /// Where to write the GIF.
+    pub path: PathBuf,
+    /// Steps between frames.
+    pub every: u64,
+    /// Pixels per cell.
+    pub scale: f32,
+}
 
 /// The scene file.
 #[derive(Deserialize, Debug)]
@@ -56,12 +72,23 @@ pub struct Audit {
     pub max_penetration: f32,
 }
 
-pub fn run(scene_path: &Path, steps: Option<u64>, json_out: bool) -> Result<()> {
+pub fn run(
+    scene_path: &Path,
+    steps: Option<u64>,
+    json_out: bool,
+    gif: Option<&GifArgs>,
+) -> Result<()> {
+    if let Some(gif) = gif {
+        render::check_scale(gif.scale)?;
+        if gif.every == 0 {
+            bail!("--every 0: steps between frames must be at least 1");
+        }
+    }
     let text = std::fs::read_to_string(scene_path)
         .with_context(|| format!("{}: cannot read the scene", scene_path.display()))?;
     let scene: SceneFile = serde_json::from_str(&text)
         .with_context(|| format!("{}: not a valid scene", scene_path.display()))?;
-    let map = load_map(scene_path, &scene)?;
+    let (map, format) = load_map(scene_path, &scene)?;
     let steps = steps.or(scene.steps).unwrap_or(100);
     if steps > MAX_STEPS {
         bail!(
@@ -69,6 +96,14 @@ pub fn run(scene_path: &Path, steps: Option<u64>, json_out: bool) -> Result<()> 
             scene_path.display()
         );
     }
+    let canvas = gif
+        .map(|g| gif_canvas(g, steps, &map, format, scene_path))
+        .transpose()?;
+    let mut recording = canvas
+        .as_ref()
+        .zip(gif)
+        .map(|(c, g)| Recording::new(c, g.every))
+        .transpose()?;
     let mut bodies = Bodies::new();
     let mut crowd: Vec<(BodyHandle, Vec2)> = Vec::with_capacity(scene.bodies.len());
     for (i, b) in scene.bodies.iter().enumerate() {
@@ -89,13 +124,21 @@ pub fn run(scene_path: &Path, steps: Option<u64>, json_out: bool) -> Result<()> 
         crowd.push((handle, velocity));
     }
     let mut elapsed = 0.0f64;
-    for _ in 0..steps {
+    if let Some(r) = &mut recording {
+        r.record(&bodies, &crowd)?;
+    }
+    for step in 1..=steps {
         for &(h, v) in &crowd {
             bodies.propose(h, v)?;
         }
         let start = Instant::now();
         bodies.step(&map);
         elapsed += start.elapsed().as_secs_f64();
+        if let Some(r) = &mut recording
+            && (step.is_multiple_of(r.every) || step == steps)
+        {
+            r.record(&bodies, &crowd)?;
+        }
     }
     let circles: Vec<Circle> = crowd
         .iter()
@@ -144,10 +187,80 @@ pub fn run(scene_path: &Path, steps: Option<u64>, json_out: bool) -> Result<()> 
             audit.max_penetration
         );
     }
+    if let (Some(r), Some(gif)) = (recording, gif) {
+        r.save(&gif.path, json_out)?;
+    }
     Ok(())
 }
 
-fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<TileMap> {
+/// The canvas of `--gif`, once the frames it would take are known to be allowed.
+fn gif_canvas(
+    gif: &GifArgs,
+    steps: u64,
+    map: &TileMap,
+    format: MapFormat,
+    scene_path: &Path,
+) -> Result<Canvas> {
+    let frames = steps / gif.every + 1 + u64::from(!steps.is_multiple_of(gif.every));
+    if frames > MAX_GIF_FRAMES {
+        bail!(
+            "--gif: {steps} steps with a frame every {} make {frames} frames, more than the {MAX_GIF_FRAMES} allowed; raise --every",
+            gif.every
+        );
+    }
+    render::canvas(map, format, scene_path, gif.scale, false)
+}
+
+/// The GIF being recorded: the bodies over the map, one frame at a time.
+struct Recording<'c> {
+    animation: Animation<'c>,
+    picture: Picture,
+    /// Steps between frames.
+    every: u64,
+}
+
+impl<'c> Recording<'c> {
+    fn new(canvas: &'c Canvas, every: u64) -> Result<Self> {
+        Ok(Self {
+            animation: Animation::new(canvas)?,
+            picture: Picture::new(),
+            every,
+        })
+    }
+
+    /// Writes the GIF and says so (on stderr under `--json`, so stdout stays one object).
+    fn save(self, path: &Path, json_out: bool) -> Result<()> {
+        let (width, height) = (self.animation.width(), self.animation.height());
+        let frames = self.animation.frame_count();
+        self.animation.save_gif(path)?;
+        let note = format!(
+            "{}: {width} × {height} pixels, {frames} frames",
+            path.display()
+        );
+        if json_out {
+            eprintln!("{note}");
+        } else {
+            println!("{note}");
+        }
+        Ok(())
+    }
+
+    /// Appends a frame of every body where it is now.
+    fn record(&mut self, bodies: &Bodies, crowd: &[(BodyHandle, Vec2)]) -> Result<()> {
+        self.picture.clear();
+        for &(h, _) in crowd {
+            let body = bodies.get(h)?;
+            for c in body.shape().circles() {
+                self.picture
+                    .body(Circle::new(body.position() + c.center, c.radius));
+            }
+        }
+        self.animation.push(&self.picture)?;
+        Ok(())
+    }
+}
+
+fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<(TileMap, MapFormat)> {
     let cell = scene.cell.unwrap_or(1.0);
     if scene.map.is_none() && (scene.tileset.is_some() || scene.layer.is_some()) {
         bail!(
@@ -178,11 +291,11 @@ fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<TileMap> {
                 cell: scene.cell,
                 layer: scene.layer.clone(),
             };
-            Ok(map_file::load(&args)?.0)
+            map_file::load(&args)
         }
         (None, Some(text)) => {
             let name = format!("{} (field \"ascii\")", scene_path.display());
-            Ok(ascii::parse(text, &name, cell)?)
+            Ok((ascii::parse(text, &name, cell)?, MapFormat::Ascii))
         }
     }
 }

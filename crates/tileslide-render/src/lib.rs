@@ -1,0 +1,47 @@
+//! # tileslide-render
+//!
+//! Pictures of [`tileslide`] maps and what happens in them, for documentation, bug reports
+//! and eyeballing a simulation: solid material, active segments with their normals,
+//! bodies, rays with their hits, paths, attack and vulnerability volumes, hit events —
+//! as PNG images or animated GIFs. Text-free.
+//!
+//! ## How it fits together
+//!
+//! - A [`Canvas`] is a map drawn once at a scale ([`RenderOptions::pixels_per_cell`],
+//!   default 16) and orientation ([`YAxis`]).
+//! - A [`Picture`] collects what to draw over it, in world coordinates.
+//! - [`Canvas::render`] gives an [`Image`], which encodes as PNG; an [`Animation`] renders a
+//!   picture per frame into an animated GIF.
+//!
+//! ## Conventions
+//!
+//! - Colours come from a [`Style`]: solid fill grey, solid segments near-black, one-way
+//!   platforms orange, temporary segments purple, normal ticks teal, bodies green, rays
+//!   magenta, paths amber, attack volumes red, vulnerability volumes blue.
+//! - [`YAxis::Down`] (the default) draws row 0 at the top, for maps whose "up" is −y (ASCII
+//!   and Tiled maps); [`YAxis::Up`] draws it at the bottom, for Replica Island levels.
+//! - Images are refused above [`MAX_PIXELS`] pixels ([`RenderError::TooLarge`]), and a scale
+//!   that is not a positive finite number is refused ([`RenderError::BadScale`]).
+//! - Overlays with a NaN or infinite coordinate are skipped and counted
+//!   ([`Picture::skipped`]); nothing panics.
+//!
+//! See [`Picture`] for an example, and `docs/render.md` in the repository.
+
+mod animation;
+mod canvas;
+mod color;
+mod error;
+mod image;
+mod options;
+mod palette;
+mod pen;
+mod picture;
+mod view;
+
+pub use animation::{Animation, DEFAULT_FRAME_DELAY};
+pub use canvas::Canvas;
+pub use color::{Rgba, Style};
+pub use error::RenderError;
+pub use image::Image;
+pub use options::{DEFAULT_PIXELS_PER_CELL, MAX_PIXELS, RenderOptions, YAxis};
+pub use picture::{Picture, VolumeKind};

@@ -1,0 +1,68 @@
+//! How a map is turned into pixels: scale, which way is up, colours.
+
+use crate::Style;
+
+/// The most pixels an image may have: 32 Mi (128 MiB of RGBA), so a huge map or a typo in
+/// the scale is refused instead of allocating gigabytes.
+pub const MAX_PIXELS: u64 = 1 << 25;
+
+/// The scale used unless told otherwise: 16 pixels per cell.
+pub const DEFAULT_PIXELS_PER_CELL: f32 = 16.0;
+
+/// Which way the map's y axis points in the picture.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum YAxis {
+    /// y grows down the image: row 0 at the top. For maps whose "up" is −y (ASCII maps,
+    /// Tiled maps).
+    #[default]
+    Down,
+    /// y grows up the image: row 0 at the bottom. For maps whose "up" is +y (Replica Island
+    /// levels).
+    Up,
+}
+
+/// The scale, orientation and colours of a picture.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RenderOptions {
+    /// Pixels per cell along x (positive, finite; need not be whole). A map with
+    /// non-square cells keeps its proportions: a cell is `pixels_per_cell × h / w` pixels
+    /// tall.
+    pub pixels_per_cell: f32,
+    /// Which way y points in the picture.
+    pub y_axis: YAxis,
+    /// The colours.
+    pub style: Style,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        Self {
+            pixels_per_cell: DEFAULT_PIXELS_PER_CELL,
+            y_axis: YAxis::Down,
+            style: Style::default(),
+        }
+    }
+}
+
+impl RenderOptions {
+    /// These options with another scale.
+    #[must_use]
+    pub fn with_pixels_per_cell(self, pixels_per_cell: f32) -> Self {
+        Self {
+            pixels_per_cell,
+            ..self
+        }
+    }
+
+    /// These options with another orientation.
+    #[must_use]
+    pub fn with_y_axis(self, y_axis: YAxis) -> Self {
+        Self { y_axis, ..self }
+    }
+
+    /// These options with other colours.
+    #[must_use]
+    pub fn with_style(self, style: Style) -> Self {
+        Self { style, ..self }
+    }
+}
