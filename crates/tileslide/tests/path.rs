@@ -1083,6 +1083,54 @@ fn a_map_edited_without_update_makes_every_query_stale() {
     assert!(field.direction(&nav, &map, a).unwrap().is_some());
 }
 
+/// The grid is current again only when every edited cell has been updated, in any order;
+/// updating some other cell, or another map's edit, does not count.
+#[test]
+fn a_grid_is_stale_until_every_edited_cell_is_updated() {
+    let mut map = map(ROOM);
+    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let a = v(1.5, 1.5);
+    let (c1, c2, c3) = (Cell::new(3, 3), Cell::new(4, 1), Cell::new(2, 4));
+    map.clear_tile(c1).unwrap();
+    map.set_tile(c2, Some(ascii::SOLID)).unwrap();
+    map.clear_tile(c1).unwrap(); // no change: not an edit
+    map.set_tile(c3, Some(ascii::SOLID)).unwrap();
+    nav.update(&map, c3).unwrap();
+    assert_eq!(
+        nav.fits(&map, a, 0.3),
+        Err(NavError::Stale),
+        "c1, c2 missed"
+    );
+    nav.update(&map, Cell::new(1, 1)).unwrap();
+    assert_eq!(
+        nav.fits(&map, a, 0.3),
+        Err(NavError::Stale),
+        "not an edited cell"
+    );
+    nav.update(&map, c1).unwrap();
+    assert_eq!(nav.fits(&map, a, 0.3), Err(NavError::Stale), "c2 missed");
+    nav.update(&map, c2).unwrap();
+    assert!(nav.fits(&map, a, 0.3).unwrap());
+    // Equal to a grid built now, for every node's moves.
+    let fresh = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let (nx, ny) = nav.nodes();
+    for j in 0..ny {
+        for i in 0..nx {
+            assert_eq!(
+                nav.open_moves(&map, i, j, 0.3),
+                fresh.open_moves(&map, i, j, 0.3)
+            );
+        }
+    }
+    // A clone shares the history up to now: updated with the clone's edit, the grid is
+    // the clone's, and the original (without that edit) is not its map any more.
+    let mut other = map.clone();
+    other.clear_tile(c2).unwrap();
+    nav.update(&other, c2).unwrap();
+    assert!(nav.fits(&other, a, 0.3).is_ok());
+    assert_eq!(nav.fits(&map, a, 0.3), Err(NavError::Stale));
+}
+
 #[test]
 fn an_update_for_a_cell_outside_the_map_or_another_map_size_is_refused() {
     let map = map(ROOM);

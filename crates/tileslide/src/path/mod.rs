@@ -152,8 +152,11 @@ pub struct NavGrid {
     search: Search,
     /// Moves and parts per radius class, most recently used last.
     classes: Vec<RadiusClass>,
-    /// The map's tiles revision this grid matches.
+    /// The map's tiles revision this grid last matched.
     tiles_revision: u64,
+    /// Cells updated since then, sorted, while other edits are still to come (see
+    /// `update`).
+    updated: Vec<Cell>,
     size: (u32, u32),
 }
 
@@ -276,6 +279,7 @@ impl NavGrid {
             search: Search::default(),
             classes: Vec::new(),
             tiles_revision: map.tiles_revision(),
+            updated: Vec::new(),
             size: (map.width(), map.height()),
         })
     }
@@ -289,6 +293,11 @@ impl NavGrid {
     /// Brings the grid up to date after `map.set_tile(cell, …)` (or `clear_tile`), in time
     /// independent of the map's size. Call it once per edited cell, in any order; the grid
     /// is then what [`NavGrid::new`] would build.
+    ///
+    /// The grid checks the map's record of its latest edits: until every cell edited since
+    /// the grid was last current has been updated, queries refuse with
+    /// [`NavError::Stale`]. So does a grid more than 4,096 edits behind, or used with
+    /// another map: build it anew then.
     pub fn update(&mut self, map: &TileMap, cell: Cell) -> Result<NavChange, NavError> {
         if (map.width(), map.height()) != self.size
             || map.cell_size() * 0.5 != self.table.lattice.step
@@ -302,7 +311,7 @@ impl NavGrid {
         for class in &mut self.classes {
             class.apply(&self.table, &moves);
         }
-        self.tiles_revision = map.tiles_revision();
+        self.note_updated(map, cell);
         let lattice = &self.table.lattice;
         let region = moves.iter().fold(None, |acc: Option<Aabb>, m| {
             let p = lattice.position_of(m.node as usize);
@@ -323,6 +332,22 @@ impl NavGrid {
             region,
             edited,
         })
+    }
+
+    /// Records that `cell` is up to date, and the grid current if that was the last
+    /// edited cell not yet updated.
+    fn note_updated(&mut self, map: &TileMap, cell: Cell) {
+        // Sorted, so checking a batch of edits costs k log k, not k².
+        if let Err(at) = self.updated.binary_search(&cell) {
+            self.updated.insert(at, cell);
+        }
+        let Some(mut edits) = map.edits_since(self.tiles_revision) else {
+            return;
+        };
+        if edits.all(|c| self.updated.binary_search(&c).is_ok()) {
+            self.tiles_revision = map.tiles_revision();
+            self.updated.clear();
+        }
     }
 
     pub(crate) fn check(&self, map: &TileMap, radius: f32) -> Result<u16, NavError> {

@@ -1,4 +1,4 @@
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, VecDeque};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -136,12 +136,19 @@ pub struct TileMap {
     /// Changes whenever its tiles change (not its temporaries): what a navigation grid
     /// built from the map compares to know it is current.
     tiles_revision: u64,
+    /// The latest tile edits, oldest first: each the tiles revision before it and the cell
+    /// (see [`TileMap::edits_since`]); at most [`EDIT_JOURNAL`] of them.
+    journal: VecDeque<(u64, Cell)>,
     /// Reused buffers for the active segments of the cells an edit recomputes (the cell
     /// and its four neighbours), so an edit does not allocate once warmed up.
     scratch: [Vec<HotSegment>; 5],
 }
 
 const EMPTY: u32 = u32::MAX;
+
+/// How many of its latest tile edits a map remembers: a navigation grid told of each
+/// edited cell in turn (`NavGrid::update`) checks against them that none was missed.
+const EDIT_JOURNAL: usize = 4096;
 
 /// The number of cells of a `width × height` map at `origin`, or why it cannot be.
 fn checked_size(width: u32, height: u32, origin: Vec2) -> Result<u64, MapError> {
@@ -235,6 +242,7 @@ impl TileMap {
             temporaries: Vec::new(),
             revision: next_revision(),
             tiles_revision: next_revision(),
+            journal: VecDeque::new(),
             scratch: Default::default(),
         }
     }
@@ -339,8 +347,6 @@ impl TileMap {
             return Ok(());
         }
         self.tiles[index] = raw;
-        self.revision = next_revision();
-        self.tiles_revision = self.revision;
         // Recompute the cell and its four neighbours into the scratch buffers first, and
         // apply them only if the store can take them all: a refused edit changes nothing.
         let (col, row) = (cell.col as i64, cell.row as i64);
@@ -370,6 +376,12 @@ impl TileMap {
             }
         }
         self.scratch = scratch;
+        if self.journal.len() == EDIT_JOURNAL {
+            self.journal.pop_front();
+        }
+        self.journal.push_back((self.tiles_revision, cell));
+        self.revision = next_revision();
+        self.tiles_revision = self.revision;
         let count = |map: &Self, t: u32| map.shape_of_raw(t).map_or(0, |s| s.segments().len());
         self.placed = self.placed - count(self, old) + count(self, raw);
         // Links read the active segments of the 3×3 block around a cell, and active segments
@@ -624,6 +636,20 @@ impl TileMap {
     /// Changes with every edit of the tiles (not of the temporaries).
     pub(crate) fn tiles_revision(&self) -> u64 {
         self.tiles_revision
+    }
+
+    /// The cells edited since the map's tiles were at `revision` (a past
+    /// [`tiles_revision`](Self::tiles_revision)), oldest first, or `None` if the map
+    /// remembers no such state: another map's, or more than [`EDIT_JOURNAL`] edits ago.
+    pub(crate) fn edits_since(&self, revision: u64) -> Option<impl Iterator<Item = Cell> + '_> {
+        let from = if revision == self.tiles_revision {
+            self.journal.len()
+        } else {
+            self.journal
+                .iter()
+                .position(|&(before, _)| before == revision)?
+        };
+        Some(self.journal.range(from..).map(|&(_, c)| c))
     }
 
     /// The temporary segments, in the order they were added.
