@@ -7,6 +7,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod bench;
+mod demo;
 mod info;
 mod json;
 mod map_file;
@@ -137,6 +138,11 @@ enum Command {
         #[command(subcommand)]
         which: bench::BenchCommand,
     },
+    /// Run a demo game headless and write a GIF, a final PNG and a summary.
+    Demo {
+        #[command(subcommand)]
+        which: demo::DemoCommand,
+    },
 }
 
 /// `tileslide bake`: loads the map, writes it baked, and says what it wrote.
@@ -198,6 +204,7 @@ fn main() -> ExitCode {
         } => render::run(&map, scale, output, y_up),
         Command::Bake { map, output } => bake(&map, &output),
         Command::Bench { which } => bench::run(which),
+        Command::Demo { which } => demo::run(which),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,65 @@
+//! Hero parties: one arrives at the entrance every 30 seconds of game time.
+
+use hecs::World;
+use tileslide::Bodies;
+
+use crate::GameError;
+use crate::STEPS_PER_SECOND;
+use crate::components::Kind;
+use crate::events::Event;
+use crate::layout::Layout;
+use crate::level::Level;
+use crate::spawn::{self, Ids};
+use tileslide_scenes::SplitMix64;
+
+/// Steps between parties.
+const WAVE_EVERY: u64 = 30 * STEPS_PER_SECOND as u64;
+/// Steps before the first party.
+const FIRST_WAVE: u64 = 12 * STEPS_PER_SECOND as u64;
+
+/// Heroes still to come in (the entrance may be crowded).
+#[derive(Clone, Debug)]
+pub struct Arrivals {
+    waiting: u32,
+    rng: SplitMix64,
+}
+
+impl Arrivals {
+    /// Arrivals whose party sizes come from `rng`.
+    #[must_use]
+    pub fn new(rng: SplitMix64) -> Self {
+        Self { waiting: 0, rng }
+    }
+
+    /// One step: a new party when it is time; waiting heroes step in where there is room.
+    ///
+    /// # Errors
+    /// A body error (a bug).
+    pub fn run(
+        &mut self,
+        step: u64,
+        level: &Level,
+        world: &mut World,
+        bodies: &mut Bodies,
+        ids: &mut Ids,
+        events: &mut Vec<Event>,
+    ) -> Result<(), GameError> {
+        if step >= FIRST_WAVE && (step - FIRST_WAVE).is_multiple_of(WAVE_EVERY) {
+            // below(3) < 3, so the cast keeps every value.
+            let heroes = 3 + self.rng.below(3) as u32;
+            self.waiting += heroes;
+            events.push(Event::WaveArrived { heroes });
+        }
+        let radius = Kind::Hero.radius();
+        for p in Layout::arrival_points() {
+            if self.waiting == 0 {
+                break;
+            }
+            if level.is_free(bodies, p, radius) {
+                spawn::fighter(world, bodies, ids, Kind::Hero, p)?;
+                self.waiting -= 1;
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,321 @@
+//! The game loop: a fixed 1/30 s step running the systems in a fixed order over the hecs
+//! world, talking through the event queue.
+
+use hecs::World;
+use tileslide::{Bodies, Cell, TileMap};
+
+use crate::GameError;
+use crate::arrivals::Arrivals;
+use crate::audit::Audit;
+use crate::brains::{self, Sightings};
+use crate::components::{Body, Carrying, Health, Id, Team};
+use crate::events::Event;
+use crate::keeper::Keeper;
+use crate::layout::Layout;
+use crate::level::Level;
+use crate::spawn::Ids;
+use crate::{combat, treasure};
+use tileslide_scenes::SplitMix64;
+
+/// Pieces of treasure at the start.
+const TREASURE: u32 = 5;
+
+/// How a game is set up.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GameConfig {
+    /// The seed of the game's random numbers.
+    pub seed: u64,
+    /// Whether the keeper summons creatures (false: an undefended dungeon).
+    pub defenders: bool,
+}
+
+/// What happened so far.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Summary {
+    /// Hero parties arrived.
+    pub waves: u32,
+    /// Heroes killed.
+    pub heroes_lost: u32,
+    /// Heroes who left by the exit.
+    pub heroes_escaped: u32,
+    /// Creatures summoned.
+    pub creatures_summoned: u32,
+    /// Creatures killed.
+    pub creatures_lost: u32,
+    /// Pieces of treasure taken up (some may be dropped again).
+    pub treasure_taken: u32,
+    /// Pieces still on the pile.
+    pub treasure_left: u32,
+    /// Pieces carried out of the dungeon.
+    pub treasure_stolen: u32,
+    /// Squares the keeper dug.
+    pub squares_dug: u32,
+    /// Steps run.
+    pub steps: u64,
+    /// Collision audit, summed over every step.
+    pub audit: Audit,
+}
+
+/// The Dungeon Builder game.
+pub struct Game {
+    world: World,
+    bodies: Bodies,
+    level: Level,
+    initial_map: TileMap,
+    dug: Vec<Cell>,
+    keeper: Keeper,
+    arrivals: Arrivals,
+    ids: Ids,
+    events: Vec<Event>,
+    summary: Summary,
+}
+
+impl Game {
+    /// A defended game from `seed`.
+    ///
+    /// # Errors
+    /// Only on a bug in the built-in dungeon.
+    pub fn new(seed: u64) -> Result<Self, GameError> {
+        Self::with_config(GameConfig {
+            seed,
+            defenders: true,
+        })
+    }
+
+    /// A game set up by `config`.
+    ///
+    /// # Errors
+    /// Only on a bug in the built-in dungeon.
+    pub fn with_config(config: GameConfig) -> Result<Self, GameError> {
+        let layout = Layout::build()?;
+        let initial_map = layout.map.clone();
+        let keeper = Keeper::new(layout.plan.clone(), config.defenders);
+        Ok(Self {
+            world: World::new(),
+            bodies: Bodies::new(),
+            level: Level::new(layout)?,
+            initial_map,
+            dug: Vec::new(),
+            keeper,
+            arrivals: Arrivals::new(SplitMix64::new(config.seed)),
+            ids: Ids::default(),
+            events: Vec::new(),
+            summary: Summary {
+                treasure_left: TREASURE,
+                ..Summary::default()
+            },
+        })
+    }
+
+    /// One fixed step (1/30 s).
+    ///
+    /// # Errors
+    /// A map, navigation or body error (bugs).
+    pub fn step(&mut self) -> Result<(), GameError> {
+        let step = self.summary.steps;
+        let events = &mut self.events;
+        self.keeper.run(
+            step,
+            &mut self.level,
+            &mut self.world,
+            &mut self.bodies,
+            &mut self.ids,
+            events,
+        )?;
+        refresh_ways(&mut self.level, &mut self.world, events)?;
+        self.arrivals.run(
+            step,
+            &self.level,
+            &mut self.world,
+            &mut self.bodies,
+            &mut self.ids,
+            events,
+        )?;
+        let seen = Sightings::take(&self.world, &self.bodies);
+        brains::heroes(&mut self.world, &mut self.bodies, &self.level, &seen);
+        brains::creatures(&mut self.world, &mut self.bodies, &mut self.level, &seen);
+        combat::attack(&mut self.world, &self.level, &seen, events);
+        self.bodies.step(&self.level.map);
+        let seen = Sightings::take(&self.world, &self.bodies);
+        combat::fly(&mut self.world, &self.level, &seen, events);
+        combat::bury(&mut self.world, &mut self.bodies, events);
+        treasure::recover(&mut self.summary.treasure_left, events);
+        treasure::run(
+            &mut self.world,
+            &mut self.bodies,
+            &self.level,
+            &mut self.summary.treasure_left,
+            events,
+        );
+        for event in events.drain(..) {
+            chronicle(&mut self.summary, &mut self.dug, &event);
+        }
+        self.summary.steps += 1;
+        self.summary
+            .audit
+            .add(Audit::of(&self.bodies, &self.level.map));
+        Ok(())
+    }
+
+    /// What happened so far.
+    #[must_use]
+    pub fn summary(&self) -> Summary {
+        self.summary
+    }
+
+    /// Gold the keeper holds.
+    #[must_use]
+    pub fn gold(&self) -> u32 {
+        self.keeper.gold()
+    }
+
+    /// FNV-1a over every body's position bits, every fighter's id, health and team, and
+    /// the summary: equal hashes mean (almost surely) equal games.
+    #[must_use]
+    pub fn state_hash(&self) -> u64 {
+        let mut hash = Fnv1a::default();
+        for (_, body) in self.bodies.iter() {
+            hash.write(u64::from(body.position().x.to_bits()));
+            hash.write(u64::from(body.position().y.to_bits()));
+        }
+        let mut fighters: Vec<_> = self
+            .world
+            .query::<(&Id, &Health, &Team, Option<&Carrying>)>()
+            .iter()
+            .map(|(id, h, t, c)| (id.0, h.hp, *t == Team::Heroes, c.is_some()))
+            .collect();
+        fighters.sort_unstable();
+        for (id, hp, hero, carrying) in fighters {
+            hash.write(id);
+            hash.write(hp as u64);
+            hash.write(u64::from(hero) | u64::from(carrying) << 1);
+        }
+        let s = self.summary;
+        for v in [
+            s.steps,
+            s.waves.into(),
+            s.heroes_lost.into(),
+            s.creatures_lost.into(),
+            s.treasure_left.into(),
+            s.squares_dug.into(),
+            self.keeper.gold().into(),
+        ] {
+            hash.write(v);
+        }
+        hash.0
+    }
+
+    /// The map as it is now.
+    #[must_use]
+    pub fn map(&self) -> &TileMap {
+        &self.level.map
+    }
+
+    /// The map before any digging (what a GIF's canvas is drawn from).
+    #[must_use]
+    pub fn initial_map(&self) -> &TileMap {
+        &self.initial_map
+    }
+
+    /// Squares dug, in order.
+    #[must_use]
+    pub fn dug(&self) -> &[Cell] {
+        &self.dug
+    }
+
+    /// The resolver's bodies.
+    #[must_use]
+    pub fn bodies(&self) -> &Bodies {
+        &self.bodies
+    }
+
+    /// The ECS world (read-only).
+    #[must_use]
+    pub fn world(&self) -> &World {
+        &self.world
+    }
+
+    /// The level (map, navigation, treasure and exit).
+    #[must_use]
+    pub fn level(&self) -> &Level {
+        &self.level
+    }
+
+    /// Bodies of heroes carrying treasure.
+    pub(crate) fn carriers(&self) -> Vec<tileslide::BodyHandle> {
+        self.world
+            .query::<(&Body, &Carrying)>()
+            .iter()
+            .map(|(b, _)| b.0)
+            .collect()
+    }
+}
+
+/// Refreshes the flow fields and drops creature paths that dug squares affect.
+fn refresh_ways(level: &mut Level, world: &mut World, events: &[Event]) -> Result<(), GameError> {
+    let (mut treasure, mut exit) = (false, false);
+    for event in events {
+        if let Event::Dug { change, .. } = event {
+            treasure |= level.to_treasure.is_affected_by(&level.nav, change);
+            exit |= level.to_exit.is_affected_by(&level.nav, change);
+            for brain in world.query_mut::<&mut crate::components::CreatureBrain>() {
+                if brain
+                    .way_home
+                    .as_ref()
+                    .is_some_and(|(p, _)| p.is_affected_by(change))
+                {
+                    brain.way_home = None;
+                }
+            }
+        }
+    }
+    if treasure {
+        level.to_treasure.refresh(&level.nav, &level.map)?;
+    }
+    if exit {
+        level.to_exit.refresh(&level.nav, &level.map)?;
+    }
+    Ok(())
+}
+
+/// Counts an event into the summary.
+fn chronicle(summary: &mut Summary, dug: &mut Vec<Cell>, event: &Event) {
+    match event {
+        Event::Dug { cell, .. } => {
+            summary.squares_dug += 1;
+            dug.push(*cell);
+        }
+        Event::Summoned { .. } => summary.creatures_summoned += 1,
+        Event::WaveArrived { .. } => summary.waves += 1,
+        Event::Died {
+            team: Team::Heroes, ..
+        } => summary.heroes_lost += 1,
+        Event::Died {
+            team: Team::Keeper, ..
+        } => summary.creatures_lost += 1,
+        Event::TreasureTaken { .. } => summary.treasure_taken += 1,
+        Event::Escaped { carried, .. } => {
+            summary.heroes_escaped += 1;
+            summary.treasure_stolen += u32::from(*carried);
+        }
+        Event::Damage { .. } => {}
+    }
+}
+
+/// 64-bit FNV-1a.
+struct Fnv1a(u64);
+
+impl Default for Fnv1a {
+    fn default() -> Self {
+        Self(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Fnv1a {
+    fn write(&mut self, value: u64) {
+        for byte in value.to_le_bytes() {
+            self.0 ^= u64::from(byte);
+            self.0 = self.0.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+}

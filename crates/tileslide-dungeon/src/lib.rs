@@ -1,0 +1,69 @@
+//! # tileslide-dungeon
+//!
+//! Dungeon Builder, the demo game of issue 8, as a deterministic fixed-step simulation
+//! built only on tileslide's public API. A keeper digs a dungeon out of a disc of earth
+//! inside rock, from the treasure room towards the entrance, paying gold per square, and
+//! summons skeletons (melee) and imps (fireballs); hero parties arrive every 30 seconds,
+//! fight their way to the treasure along a flow field and carry it out.
+//!
+//! - Movement: every fighter is a circle in [`tileslide::Bodies`]; each step brains
+//!   propose moves and the resolver steps them (no overlaps, no wall crossings).
+//! - Navigation: a [`tileslide::NavGrid`] updated per dug square; heroes follow
+//!   [`tileslide::FlowField`]s, creatures walk [`tileslide::Path`]s home; both are
+//!   refreshed only when a dug square affects them.
+//! - Line of sight and fireball walls: [`tileslide::TileMap::cast_ray`].
+//! - Entities live in a [`hecs::World`]; systems talk through [`Event`]s.
+//!
+//! ```
+//! let mut game = tileslide_dungeon::Game::new(1)?;
+//! for _ in 0..30 {
+//!     game.step()?;
+//! }
+//! assert_eq!(game.summary().steps, 30);
+//! assert_eq!(game.summary().audit.overlapping_pairs, 0);
+//! # Ok::<(), tileslide_dungeon::GameError>(())
+//! ```
+
+mod arrivals;
+mod audit;
+mod brains;
+mod combat;
+mod components;
+mod events;
+mod game;
+mod keeper;
+mod layout;
+mod level;
+mod render;
+mod spawn;
+mod treasure;
+
+pub use audit::Audit;
+pub use components::{Goal, Kind, Team};
+pub use events::Event;
+pub use game::{Game, GameConfig, Summary};
+pub use level::Level;
+pub use render::style;
+pub use tileslide_scenes::SplitMix64;
+
+/// Steps per second of game time.
+pub const STEPS_PER_SECOND: u32 = 30;
+/// The fixed step (seconds).
+pub const DT: f32 = 1.0 / STEPS_PER_SECOND as f32;
+
+/// What can go wrong (all of these are bugs in the game, not bad input).
+#[derive(Debug, thiserror::Error)]
+pub enum GameError {
+    /// The built-in map did not parse.
+    #[error("dungeon map: {0}")]
+    Load(#[from] tileslide::io::LoadError),
+    /// A map edit was refused.
+    #[error("digging: {0}")]
+    Map(#[from] tileslide::MapError),
+    /// Navigation refused.
+    #[error("navigation: {0}")]
+    Nav(#[from] tileslide::NavError),
+    /// The resolver refused a body.
+    #[error("bodies: {0}")]
+    Body(#[from] tileslide::BodyError),
+}
