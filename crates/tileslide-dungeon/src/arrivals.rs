@@ -7,6 +7,7 @@ use crate::GameError;
 use crate::STEPS_PER_SECOND;
 use crate::components::Kind;
 use crate::events::Event;
+use crate::game::Party;
 use crate::layout::Layout;
 use crate::level::Level;
 use crate::spawn::{self, Ids};
@@ -22,13 +23,18 @@ const FIRST_WAVE: u64 = 12 * STEPS_PER_SECOND as u64;
 pub struct Arrivals {
     waiting: u32,
     rng: SplitMix64,
+    party: Party,
 }
 
 impl Arrivals {
-    /// Arrivals whose party sizes come from `rng`.
+    /// Arrivals of `party`s whose sizes come from `rng`.
     #[must_use]
-    pub fn new(rng: SplitMix64) -> Self {
-        Self { waiting: 0, rng }
+    pub fn new(rng: SplitMix64, party: Party) -> Self {
+        Self {
+            waiting: 0,
+            rng,
+            party,
+        }
     }
 
     /// One step: a new party when it is time; waiting heroes step in where there is room.
@@ -45,8 +51,14 @@ impl Arrivals {
         events: &mut Vec<Event>,
     ) -> Result<(), GameError> {
         if step >= FIRST_WAVE && (step - FIRST_WAVE).is_multiple_of(WAVE_EVERY) {
-            // below(3) < 3, so the cast keeps every value.
-            let heroes = 3 + self.rng.below(3) as u32;
+            let Party {
+                min_heroes,
+                max_heroes,
+                ..
+            } = self.party;
+            let spread = u64::from(max_heroes.saturating_sub(min_heroes)) + 1;
+            // below(spread) < spread ≤ 2³², so the cast keeps every value.
+            let heroes = min_heroes + self.rng.below(spread) as u32;
             self.waiting += heroes;
             events.push(Event::WaveArrived { heroes });
         }
@@ -56,7 +68,7 @@ impl Arrivals {
                 break;
             }
             if level.is_free(bodies, p, radius) {
-                spawn::fighter(world, bodies, ids, Kind::Hero, p)?;
+                spawn::fighter(world, bodies, ids, Kind::Hero, p, self.party.hero_hp)?;
                 self.waiting -= 1;
             }
         }

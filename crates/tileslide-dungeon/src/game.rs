@@ -8,7 +8,7 @@ use crate::GameError;
 use crate::arrivals::Arrivals;
 use crate::audit::Audit;
 use crate::brains::{self, Sightings};
-use crate::components::{Body, Carrying, Health, Id, Team};
+use crate::components::{Body, Carrying, Health, Id, Kind, Team};
 use crate::events::Event;
 use crate::keeper::Keeper;
 use crate::layout::Layout;
@@ -27,6 +27,42 @@ pub struct GameConfig {
     pub seed: u64,
     /// Whether the keeper summons creatures (false: an undefended dungeon).
     pub defenders: bool,
+    /// What the hero parties are like.
+    pub party: Party,
+}
+
+impl GameConfig {
+    /// A defended game from `seed` with the usual parties.
+    #[must_use]
+    pub fn new(seed: u64) -> Self {
+        Self {
+            seed,
+            defenders: true,
+            party: Party::default(),
+        }
+    }
+}
+
+/// The hero parties: how many heroes each brings and how tough they are.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Party {
+    /// Fewest heroes in a party.
+    pub min_heroes: u32,
+    /// Most heroes in a party (at least `min_heroes`).
+    pub max_heroes: u32,
+    /// Each hero's hit points.
+    pub hero_hp: i32,
+}
+
+impl Default for Party {
+    /// Three to five heroes of [`Kind::Hero`]'s hit points.
+    fn default() -> Self {
+        Self {
+            min_heroes: 3,
+            max_heroes: 5,
+            hero_hp: Kind::Hero.max_hp(),
+        }
+    }
 }
 
 /// What happened so far.
@@ -76,10 +112,7 @@ impl Game {
     /// # Errors
     /// Only on a bug in the built-in dungeon.
     pub fn new(seed: u64) -> Result<Self, GameError> {
-        Self::with_config(GameConfig {
-            seed,
-            defenders: true,
-        })
+        Self::with_config(GameConfig::new(seed))
     }
 
     /// A game set up by `config`.
@@ -97,7 +130,7 @@ impl Game {
             initial_map,
             dug: Vec::new(),
             keeper,
-            arrivals: Arrivals::new(SplitMix64::new(config.seed)),
+            arrivals: Arrivals::new(SplitMix64::new(config.seed), config.party),
             ids: Ids::default(),
             events: Vec::new(),
             summary: Summary {

@@ -95,7 +95,7 @@ impl Keeper {
             };
             self.gold -= summon_cost(kind);
             self.summons.remove(0);
-            spawn::fighter(world, bodies, ids, kind, at)?;
+            spawn::fighter(world, bodies, ids, kind, at, kind.max_hp())?;
             events.push(Event::Summoned { kind });
             return Ok(());
         }

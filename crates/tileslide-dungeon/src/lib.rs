@@ -41,7 +41,7 @@ mod treasure;
 pub use audit::Audit;
 pub use components::{Goal, Kind, Team};
 pub use events::Event;
-pub use game::{Game, GameConfig, Summary};
+pub use game::{Game, GameConfig, Party, Summary};
 pub use level::Level;
 pub use render::style;
 pub use tileslide_scenes::SplitMix64;

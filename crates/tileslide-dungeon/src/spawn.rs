@@ -20,7 +20,8 @@ impl Ids {
     }
 }
 
-/// Spawns a fighter of `kind` at `at` (the caller checked the place is free).
+/// Spawns a fighter of `kind` with `max_hp` hit points at `at` (the caller checked the
+/// place is free).
 ///
 /// # Errors
 /// A body error (a bad radius or position: a bug).
@@ -30,9 +31,10 @@ pub fn fighter(
     ids: &mut Ids,
     kind: Kind,
     at: Vec2,
+    max_hp: i32,
 ) -> Result<Entity, GameError> {
     let handle = bodies.add(BodyDesc::new(at, BodyShape::circle(kind.radius())?))?;
-    let max = kind.max_hp();
+    let max = max_hp;
     let common = (
         ids.next(),
         Body(handle),

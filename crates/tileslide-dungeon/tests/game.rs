@@ -1,7 +1,7 @@
 //! The game's promises: determinism, a clean collision audit, and a reachable treasure.
 #![allow(clippy::unwrap_used)]
 
-use tileslide_dungeon::{Game, GameConfig};
+use tileslide_dungeon::{Game, GameConfig, Party};
 
 fn run(config: GameConfig, steps: u32) -> Game {
     let mut game = Game::with_config(config).unwrap();
@@ -13,10 +13,7 @@ fn run(config: GameConfig, steps: u32) -> Game {
 
 #[test]
 fn same_seed_same_summary_and_state_hash() {
-    let config = GameConfig {
-        seed: 7,
-        defenders: true,
-    };
+    let config = GameConfig::new(7);
     let (a, b) = (run(config, 900), run(config, 900));
     assert_eq!(a.summary(), b.summary());
     assert_eq!(a.state_hash(), b.state_hash());
@@ -43,8 +40,8 @@ fn audit_stays_zero_every_step() {
 fn heroes_reach_the_treasure_of_an_undefended_dungeon() {
     let game = run(
         GameConfig {
-            seed: 1,
             defenders: false,
+            ..GameConfig::new(1)
         },
         1800,
     );
@@ -56,13 +53,7 @@ fn heroes_reach_the_treasure_of_an_undefended_dungeon() {
 
 #[test]
 fn dug_squares_are_empty_on_the_map() {
-    let game = run(
-        GameConfig {
-            seed: 2,
-            defenders: true,
-        },
-        300,
-    );
+    let game = run(GameConfig::new(2), 300);
     assert!(!game.dug().is_empty());
     assert!(game.dug().iter().all(|&c| game.map().tile(c).is_none()));
     assert!(
@@ -70,4 +61,90 @@ fn dug_squares_are_empty_on_the_map() {
             .iter()
             .all(|&c| game.initial_map().tile(c).is_some())
     );
+}
+
+/// Issue 8: "the defence kills a weak party". One hero of 5 hit points a wave against the
+/// keeper's skeletons and imps: by the time the second party is due, the first is dead
+/// and took nothing.
+#[test]
+fn the_defence_kills_a_weak_party() {
+    let mut game = Game::with_config(GameConfig {
+        party: Party {
+            min_heroes: 1,
+            max_heroes: 1,
+            hero_hp: 5,
+        },
+        ..GameConfig::new(1)
+    })
+    .unwrap();
+    let mut died_at = None;
+    // The second wave is due at 42 s; stop just before.
+    for step in 0..41 * 30 {
+        game.step().unwrap();
+        let s = game.summary();
+        if died_at.is_none() && s.heroes_lost == 1 {
+            died_at = Some(step);
+        }
+    }
+    let s = game.summary();
+    assert_eq!(s.waves, 1, "{s:?}");
+    assert_eq!(
+        (s.heroes_lost, s.heroes_escaped, s.treasure_taken),
+        (1, 0, 0),
+        "{s:?}"
+    );
+    assert!(s.creatures_summoned > 0, "{s:?}");
+    assert!(died_at.is_some());
+}
+
+/// The same weak heroes in an undefended dungeon live and take the treasure: the defence,
+/// not the weakness, is what kills them.
+#[test]
+fn a_weak_party_survives_an_undefended_dungeon() {
+    let mut game = Game::with_config(GameConfig {
+        defenders: false,
+        party: Party {
+            min_heroes: 1,
+            max_heroes: 1,
+            hero_hp: 5,
+        },
+        ..GameConfig::new(1)
+    })
+    .unwrap();
+    for _ in 0..60 * 30 {
+        game.step().unwrap();
+    }
+    let s = game.summary();
+    assert_eq!(s.heroes_lost, 0, "{s:?}");
+    assert!(s.treasure_taken >= 1, "{s:?}");
+}
+
+/// The README's main job shows this run (`tileslide demo dungeon`: seed 1, two minutes):
+/// its summary and final state hash, the same in debug and release builds. A change that
+/// alters the game must update the README's output with this.
+#[test]
+fn the_default_run_is_the_one_the_readme_shows() {
+    let game = run(GameConfig::new(1), 2 * 60 * 30);
+    let s = game.summary();
+    assert_eq!(
+        (s.waves, s.heroes_lost, s.heroes_escaped),
+        (4, 2, 16),
+        "{s:?}"
+    );
+    assert_eq!((s.creatures_summoned, s.creatures_lost), (8, 3), "{s:?}");
+    assert_eq!(
+        (
+            s.treasure_left,
+            s.treasure_taken,
+            s.treasure_stolen,
+            s.squares_dug
+        ),
+        (0, 5, 5, 128),
+        "{s:?}"
+    );
+    assert_eq!(
+        (s.audit.overlapping_pairs, s.audit.wall_penetrations),
+        (0, 0)
+    );
+    assert_eq!(format!("{:016x}", game.state_hash()), "8375fe19e30c1781");
 }
