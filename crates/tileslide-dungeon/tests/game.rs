@@ -63,17 +63,20 @@ fn dug_squares_are_empty_on_the_map() {
     );
 }
 
+/// One hero of 5 hit points a wave.
+const WEAK_PARTY: Party = Party {
+    min_heroes: 1,
+    max_heroes: 1,
+    hero_hp: 5,
+};
+
 /// Issue 8: "the defence kills a weak party". One hero of 5 hit points a wave against the
 /// keeper's skeletons and imps: by the time the second party is due, the first is dead
 /// and took nothing.
 #[test]
 fn the_defence_kills_a_weak_party() {
     let mut game = Game::with_config(GameConfig {
-        party: Party {
-            min_heroes: 1,
-            max_heroes: 1,
-            hero_hp: 5,
-        },
+        party: WEAK_PARTY,
         ..GameConfig::new(1)
     })
     .unwrap();
@@ -103,11 +106,7 @@ fn the_defence_kills_a_weak_party() {
 fn a_weak_party_survives_an_undefended_dungeon() {
     let mut game = Game::with_config(GameConfig {
         defenders: false,
-        party: Party {
-            min_heroes: 1,
-            max_heroes: 1,
-            hero_hp: 5,
-        },
+        party: WEAK_PARTY,
         ..GameConfig::new(1)
     })
     .unwrap();
