@@ -1,7 +1,7 @@
 //! Pictures of the game for `tileslide-render`: bodies coloured by team, the treasure,
 //! fireballs, creatures' paths home.
 
-use tileslide::{Circle, Vec2};
+use tileslide::{Cell, Circle, Vec2};
 use tileslide_render::{Picture, Rgba, Style};
 
 use crate::components::{Body, CreatureBrain, FIREBALL_RADIUS, Fireball, Kind};
@@ -9,6 +9,9 @@ use crate::game::Game;
 
 const OUTLINE: Rgba = Rgba::opaque(25, 25, 30);
 const GOLD: Rgba = Rgba::opaque(240, 190, 20);
+/// Diggable earth, where the canvas draws every solid grey: a colour of the GIF palette's
+/// cube, so animations show it exactly.
+const EARTH: Rgba = Rgba::opaque(153, 102, 51);
 
 /// The style to draw game pictures with: bodies draw their own outlines (so that dug
 /// squares can be painted over an older canvas without rings).
@@ -31,30 +34,47 @@ fn colour(kind: Kind) -> Rgba {
 impl Game {
     /// The current state over a canvas of [`Game::map`]; with `dug_over_initial`, for a
     /// canvas of [`Game::initial_map`] instead (an animation keeps one canvas), squares
-    /// dug since are painted in the background colour first.
+    /// dug since are painted as floor and the walls around them redrawn from the map as
+    /// it is now. Earth still standing is drawn brown over the canvas's grey, so rock and
+    /// earth look different.
     #[must_use]
     pub fn picture(&self, dug_over_initial: bool) -> Picture {
         let mut picture = Picture::new();
-        if dug_over_initial {
-            let floor = Style::default().background;
-            for &cell in self.dug() {
-                let centre = self.map().cell_rect(cell).min;
-                // Four discs, one per quarter, cover the square with little spill.
-                for (dx, dy) in [(0.25, 0.25), (0.75, 0.25), (0.25, 0.75), (0.75, 0.75)] {
-                    picture.body_with_color(Circle::new(centre + Vec2::new(dx, dy), 0.36), floor);
+        let map = self.map();
+        let ground = &self.level().ground;
+        // Row by row, runs of earth still standing in one box each, and with
+        // `dug_over_initial` runs of floor too.
+        let background = Style::default().background;
+        for row in 0..map.height() {
+            let mut col = 0;
+            while col < map.width() {
+                let kind = |c: u32| {
+                    let cell = Cell::new(c, row);
+                    match map.tile(cell) {
+                        Some(_) if !ground.is_rock(cell) => Some(EARTH),
+                        None if dug_over_initial => Some(background),
+                        _ => None,
+                    }
+                };
+                let start = col;
+                let here = kind(col);
+                while col < map.width() && kind(col) == here {
+                    col += 1;
+                }
+                if let Some(color) = here {
+                    let (a, b) = (
+                        map.cell_rect(Cell::new(start, row)),
+                        map.cell_rect(Cell::new(col - 1, row)),
+                    );
+                    picture.area(a.union(&b), color);
                 }
             }
         }
-        // The edge of the diggable earth: rock lies outside it.
-        let centre = Vec2::splat(crate::layout::SIZE as f32 / 2.0);
-        let edge: Vec<Vec2> = (0..=96)
-            .map(|k| {
-                centre
-                    + Vec2::from_angle(k as f32 * std::f32::consts::TAU / 96.0)
-                        * crate::layout::EARTH_RADIUS
-            })
-            .collect();
-        picture.polyline(&edge);
+        // The fills cover half the width of the canvas's wall lines, and walls changed
+        // with each dig: draw every wall of the map as it is now over them.
+        let cells =
+            (0..map.height()).flat_map(|row| (0..map.width()).map(move |col| Cell::new(col, row)));
+        picture.cell_walls(map, cells);
         let treasure = self.summary().treasure_left;
         for k in 0..treasure {
             let at = self.level().treasure

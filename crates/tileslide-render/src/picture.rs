@@ -1,7 +1,8 @@
 //! What to draw over the map in one picture: bodies, rays, paths, volumes, hit events.
 
 use tileslide::{
-    Circle, HitEvent, HitWorld, Path, Ray, RayHit, TemporarySegment, TileMap, Vec2, VolumeShape,
+    Aabb, Cell, Circle, HitEvent, HitWorld, Path, Ray, RayHit, SegmentFlags, TemporarySegment,
+    TileMap, Vec2, VolumeShape,
 };
 
 use crate::pen::Pen;
@@ -47,6 +48,19 @@ enum Overlay {
         a: Vec2,
         b: Vec2,
         normal: Vec2,
+    },
+    /// A filled box with no outline.
+    Area {
+        min: Vec2,
+        max: Vec2,
+        color: Rgba,
+    },
+    /// An active segment drawn as the canvas draws the map's.
+    Wall {
+        a: Vec2,
+        b: Vec2,
+        normal: Vec2,
+        one_way: bool,
     },
 }
 
@@ -223,6 +237,48 @@ impl Picture {
         self
     }
 
+    /// A box filled with `color` and no outline: floor, ground, a zone. Drawn in order
+    /// with the rest, so add areas first to keep them under bodies.
+    pub fn area(&mut self, area: Aabb, color: Rgba) -> &mut Self {
+        let usable = area.min.is_finite() && area.max.is_finite() && area.min.cmple(area.max).all();
+        self.push(
+            Overlay::Area {
+                min: area.min,
+                max: area.max,
+                color,
+            },
+            usable,
+        )
+    }
+
+    /// The active segments of `cells` of `map` as they are now, drawn as the canvas draws
+    /// the map's (solid and one-way colours, normal ticks): for a map edited since its
+    /// [`Canvas`](crate::Canvas) was drawn (an animation keeps one canvas), cover the edited
+    /// cells with [`area`](Self::area)s and redraw their walls and their neighbours'.
+    /// Cells outside the map are skipped and counted.
+    pub fn cell_walls(
+        &mut self,
+        map: &TileMap,
+        cells: impl IntoIterator<Item = Cell>,
+    ) -> &mut Self {
+        for cell in cells {
+            if cell.col >= map.width() || cell.row >= map.height() {
+                self.skipped += 1;
+                continue;
+            }
+            for s in map.active_segments(cell) {
+                let overlay = Overlay::Wall {
+                    a: s.segment.a,
+                    b: s.segment.b,
+                    normal: s.normal,
+                    one_way: s.flags.contains(SegmentFlags::ONE_WAY),
+                };
+                self.push(overlay, true);
+            }
+        }
+        self
+    }
+
     fn push_body(&mut self, circle: Circle, color: Option<Rgba>) -> &mut Self {
         let usable = circle.center.is_finite() && circle.radius.is_finite() && circle.radius > 0.0;
         self.push(Overlay::Body { circle, color }, usable)
@@ -274,15 +330,41 @@ impl Picture {
                     }
                 }
                 Overlay::Temporary { a, b, normal } => {
-                    if let (Some(a), Some(b)) = (view.pixel_of(a), view.pixel_of(b)) {
-                        if let Some((from, to)) = view.normal_tick(a, b, normal) {
-                            pen.line(from, to, style.normal, line * NORMAL_WIDTH);
-                        }
-                        pen.line(a, b, style.temporary, line);
+                    draw_segment(pen, view, style, (a, b, normal), style.temporary);
+                }
+                Overlay::Wall {
+                    a,
+                    b,
+                    normal,
+                    one_way,
+                } => {
+                    let color = if one_way { style.one_way } else { style.solid };
+                    draw_segment(pen, view, style, (a, b, normal), color);
+                }
+                Overlay::Area { min, max, color } => {
+                    if let (Some(a), Some(b)) = (view.pixel_of(min), view.pixel_of(max)) {
+                        pen.rect(a, b, color, Rgba::new(0, 0, 0, 0), 0.0);
                     }
                 }
             }
         }
+    }
+}
+
+/// A segment `(a, b, normal)` in `color` with its normal tick, as the canvas draws walls.
+fn draw_segment(
+    pen: &mut Pen<'_>,
+    view: &View,
+    style: &Style,
+    (a, b, normal): (Vec2, Vec2, Vec2),
+    color: Rgba,
+) {
+    if let (Some(a), Some(b)) = (view.pixel_of(a), view.pixel_of(b)) {
+        let line = view.line_width();
+        if let Some((from, to)) = view.normal_tick(a, b, normal) {
+            pen.line(from, to, style.normal, line * NORMAL_WIDTH);
+        }
+        pen.line(a, b, color, line);
     }
 }
 

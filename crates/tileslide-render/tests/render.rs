@@ -446,3 +446,45 @@ fn an_animation_wider_than_a_gif_is_refused() {
         "{e:?}"
     );
 }
+
+/// A map edited after its canvas was drawn: an area covers the dug cell and
+/// `cell_walls` draws the walls the edit made, from the map as it is now.
+#[test]
+fn areas_and_cell_walls_show_an_edit_made_after_the_canvas() {
+    let mut map = room();
+    let canvas = canvas(&map, 40.0);
+    let style = Style::default();
+    // Dig into the top wall at (2, 0): its cell becomes floor, walls appear beside it.
+    let dug = Cell::new(2, 0);
+    map.clear_tile(dug).unwrap();
+    let mut picture = Picture::new();
+    picture.area(map.cell_rect(dug), style.background);
+    let cells: Vec<Cell> = (0..map.height())
+        .flat_map(|r| (0..map.width()).map(move |c| Cell::new(c, r)))
+        .collect();
+    picture.cell_walls(&map, cells);
+    let image = canvas.render(&picture);
+    // The dug cell's middle is floor now.
+    assert_eq!(
+        pixel_at(&canvas, &image, Vec2::new(2.5, 0.5)),
+        style.background
+    );
+    // The new wall on the left side of the dug cell (the right face of (1, 0)).
+    assert_eq!(pixel_at(&canvas, &image, Vec2::new(2.0, 0.5)), style.solid);
+    // Untouched solid elsewhere keeps its fill.
+    assert_eq!(
+        pixel_at(&canvas, &image, Vec2::new(5.5, 0.5)),
+        style.solid_fill
+    );
+    // Cells off the map are skipped and counted; an inverted box too.
+    let mut bad = Picture::new();
+    bad.cell_walls(&map, [Cell::new(99, 0)]);
+    bad.area(
+        Aabb {
+            min: Vec2::ONE,
+            max: Vec2::ZERO,
+        },
+        style.background,
+    );
+    assert_eq!(bad.skipped(), 2);
+}
