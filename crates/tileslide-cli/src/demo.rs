@@ -7,7 +7,8 @@ use anyhow::{Result, bail};
 use clap::Subcommand;
 use indicatif::{ProgressBar, ProgressStyle};
 use tileslide_dungeon::{Game, STEPS_PER_SECOND, Summary};
-use tileslide_render::{Animation, Canvas, RenderOptions};
+use tileslide_platformer::{Level, MAX_STEPS};
+use tileslide_render::{Animation, Canvas, Picture, RenderOptions, YAxis};
 
 /// GIF frames at most (a frame every N steps is chosen to stay under it).
 const MAX_FRAMES: u64 = 240;
@@ -31,6 +32,23 @@ pub enum DemoCommand {
         #[arg(long)]
         json: bool,
     },
+    /// Platformer: a scripted character runs a level of ramps, one-way platforms, a moving
+    /// platform, coins and enemies (the bundled level, or a Replica Island level).
+    Platformer {
+        /// A level: an ASCII map with the demo's markers (`.txt`, see
+        /// examples/maps/platformer.txt) or a Replica Island level (`.bin`, needs
+        /// `--tileset`). Default: the bundled level.
+        map: Option<PathBuf>,
+        /// The tile set of a Replica Island level (`collision.bin`).
+        #[arg(long, value_name = "FILE")]
+        tileset: Option<PathBuf>,
+        /// The animated GIF to write (the final PNG goes beside it).
+        #[arg(short = 'o', long = "output", default_value = "platformer.gif")]
+        output: PathBuf,
+        /// Print the summary as one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 /// Runs a demo.
@@ -42,6 +60,12 @@ pub fn run(which: DemoCommand) -> Result<()> {
             output,
             json,
         } => dungeon(seed, minutes, &output, json),
+        DemoCommand::Platformer {
+            map,
+            tileset,
+            output,
+            json,
+        } => platformer(map.as_deref(), tileset.as_deref(), &output, json),
     }
 }
 
@@ -152,4 +176,117 @@ fn print_summary(s: &Summary, seed: u64, hash: u64, gif: &Path, png: &Path) {
         gif.display(),
         png.display()
     );
+}
+
+/// The platformer's GIF has a frame every this many steps (20 a second at 60 steps a
+/// second, as its frame delay of 5 hundredths says: it plays in real time); a Replica
+/// Island run (up to a minute over a large level) every 12, at four times the speed.
+const PLATFORMER_FRAME_EVERY: u64 = 3;
+const REPLICA_FRAME_EVERY: u64 = 12;
+
+/// The platformer's pictures: at most this many pixels across (a long Replica Island level
+/// gets fewer pixels per cell), and at most 16 pixels per cell.
+const PLATFORMER_WIDTH: f32 = 1024.0;
+
+fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: bool) -> Result<()> {
+    let level = match (map, tileset) {
+        (None, None) => Level::bundled()?,
+        (None, Some(_)) => bail!("--tileset needs a Replica Island level (MAP.bin)"),
+        (Some(map), Some(tileset)) => Level::load_replica(map, tileset)?,
+        (Some(map), None) if map.extension().is_some_and(|e| e == "bin") => bail!(
+            "{}: a Replica Island level needs its tile set: add --tileset collision.bin",
+            map.display()
+        ),
+        (Some(map), None) => Level::load_ascii(map)?,
+    };
+    let writable = output.parent().filter(|p| !p.as_os_str().is_empty());
+    if let Some(folder) = writable.filter(|f| !f.is_dir()) {
+        bail!(
+            "{}: cannot write there: the folder {} does not exist",
+            output.display(),
+            folder.display()
+        );
+    }
+    let y_axis = if level.up.y > 0.0 {
+        YAxis::Up
+    } else {
+        YAxis::Down
+    };
+    let scale = (PLATFORMER_WIDTH / level.map.width().max(1) as f32).min(16.0);
+    let options = RenderOptions::default()
+        .with_pixels_per_cell(scale)
+        .with_y_axis(y_axis);
+    let canvas = Canvas::new(&level.map, &options)?;
+    let every = if tileset.is_some() {
+        REPLICA_FRAME_EVERY
+    } else {
+        PLATFORMER_FRAME_EVERY
+    };
+    let mut game = tileslide_platformer::Game::new(level)?;
+    let mut animation = Animation::new(&canvas)?.with_frame_delay(5);
+    let mut picture = Picture::new();
+    while !game.is_over() && game.summary().steps < MAX_STEPS {
+        if game.summary().steps % every == 0 {
+            game.draw(&mut picture);
+            animation.push(&picture)?;
+        }
+        game.step()?;
+    }
+    game.draw(&mut picture);
+    animation.push(&picture)?;
+    animation.save_gif(output)?;
+    let png = output.with_extension("png");
+    canvas.render(&picture).save_png(&png)?;
+    let s = game.summary();
+    let audit = &s.audit;
+    if json {
+        let value = serde_json::json!({
+            "level": s.level,
+            "steps": s.steps,
+            "coins_collected": s.coins_collected,
+            "coins_total": s.coins_total,
+            "enemies_defeated": s.enemies_defeated,
+            "enemies_total": s.enemies_total,
+            "hits_taken": s.hits_taken,
+            "jumps": s.jumps,
+            "steps_riding": s.steps_riding,
+            "reached_goal": s.reached_goal,
+            "gif": output.display().to_string(),
+            "png": png.display().to_string(),
+            "audit": {
+                "inside_solid": audit.inside_solid,
+                "tunnels": audit.tunnels,
+                "max_penetration": audit.max_penetration,
+            },
+        });
+        println!("{value}");
+        return Ok(());
+    }
+    let seconds = s.steps as f64 / f64::from(tileslide_platformer::STEPS_PER_SECOND);
+    println!(
+        "platformer ({}): {} steps ({seconds:.1} game s)",
+        s.level, s.steps
+    );
+    println!(
+        "  coins {}/{}, enemies defeated {}/{}, hits taken {}, jumps {}, steps riding the platform {}",
+        s.coins_collected,
+        s.coins_total,
+        s.enemies_defeated,
+        s.enemies_total,
+        s.hits_taken,
+        s.jumps,
+        s.steps_riding
+    );
+    let goal = if s.reached_goal {
+        "reached"
+    } else {
+        "not reached"
+    };
+    println!("  goal {goal}");
+    println!(
+        "  audit: steps inside solid {}, tunnels {}, max penetration {} cells",
+        audit.inside_solid, audit.tunnels, audit.max_penetration
+    );
+    println!("  wrote {} and {}", output.display(), png.display());
+    Ok(())
 }

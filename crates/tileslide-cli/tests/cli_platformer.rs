@@ -1,0 +1,117 @@
+//! `tileslide demo platformer`: writes a GIF and a PNG and prints the summary, on the
+//! bundled level and on a Replica Island level.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+mod support;
+
+use std::path::{Path, PathBuf};
+
+use support::{replica_dir, stderr, stdout, tileslide};
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli_platformer");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+/// The GIF's size and frame count.
+fn gif_frames(path: &Path) -> ((u16, u16), usize) {
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::RGBA);
+    let mut decoder = options
+        .read_info(std::fs::File::open(path).unwrap())
+        .unwrap();
+    let size = (decoder.width(), decoder.height());
+    let mut frames = 0;
+    while decoder.read_next_frame().unwrap().is_some() {
+        frames += 1;
+    }
+    (size, frames)
+}
+
+#[test]
+fn demo_platformer_writes_a_gif_a_png_and_a_summary() {
+    let gif = scratch("p.gif");
+    let out = tileslide(&["demo", "platformer", "-o", gif.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = stdout(&out);
+    assert!(text.contains("coins 10/10"), "{text}");
+    assert!(text.contains("goal reached"), "{text}");
+    assert!(
+        text.contains("steps inside solid 0, tunnels 0, max penetration 0 cells"),
+        "{text}"
+    );
+    // The bundled level is 64 × 16 cells, drawn at 16 pixels a cell.
+    let (size, frames) = gif_frames(&gif);
+    assert_eq!(size, (1024, 256));
+    assert!(frames > 100, "{frames} frames");
+    let png = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(scratch("p.png")).unwrap(),
+    ));
+    let info = png.read_info().unwrap();
+    assert_eq!((info.info().width, info.info().height), (1024, 256));
+}
+
+#[test]
+fn demo_platformer_json_summary() {
+    let gif = scratch("pj.gif");
+    let out = tileslide(&["demo", "platformer", "-o", gif.to_str().unwrap(), "--json"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let s: serde_json::Value = serde_json::from_str(stdout(&out).trim()).unwrap();
+    assert_eq!(s["reached_goal"], true);
+    assert_eq!(s["coins_collected"], s["coins_total"]);
+    assert_eq!(s["enemies_defeated"], 2);
+    assert_eq!(s["audit"]["inside_solid"], 0);
+    assert_eq!(s["audit"]["tunnels"], 0);
+}
+
+/// The levels the core's Replica Island run crosses (left to right, nothing a runner
+/// cannot jump): the runner must reach their right end.
+const CROSSED: [&str; 3] = ["level_0_1_sewer_kyle", "level_2_4_grass", "level_3_6_sewer"];
+
+#[test]
+fn demo_platformer_crosses_replica_island_levels_without_entering_solid() {
+    let Some(dir) = replica_dir() else {
+        return;
+    };
+    for name in CROSSED {
+        let gif = scratch(&format!("{name}.gif"));
+        let level = dir.join(format!("{name}.bin"));
+        let out = tileslide(&[
+            "demo",
+            "platformer",
+            level.to_str().unwrap(),
+            "--tileset",
+            dir.join("collision.bin").to_str().unwrap(),
+            "-o",
+            gif.to_str().unwrap(),
+            "--json",
+        ]);
+        assert!(out.status.success(), "{name}: {}", stderr(&out));
+        let s: serde_json::Value = serde_json::from_str(stdout(&out).trim()).unwrap();
+        assert_eq!(s["level"], format!("{name}.bin"));
+        assert_eq!(s["reached_goal"], true, "{s}");
+        assert_eq!(s["audit"]["inside_solid"], 0, "{s}");
+        assert_eq!(s["audit"]["tunnels"], 0, "{s}");
+        let (_, frames) = gif_frames(&gif);
+        assert!(frames > 10, "{name}: {frames} frames");
+    }
+}
+
+#[test]
+fn demo_platformer_needs_a_tile_set_for_a_replica_island_level() {
+    let out = tileslide(&["demo", "platformer", "level.bin"]);
+    assert!(!out.status.success());
+    assert!(
+        stderr(&out).contains("--tileset collision.bin"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+#[test]
+fn demo_platformer_refuses_a_missing_output_folder() {
+    let out = tileslide(&["demo", "platformer", "-o", "no/such/folder/p.gif"]);
+    assert!(!out.status.success());
+    assert!(stderr(&out).contains("does not exist"), "{}", stderr(&out));
+}

@@ -1,0 +1,50 @@
+//! # tileslide-platformer
+//!
+//! The platformer demo (`tileslide demo platformer`): a character controlled by a script
+//! runs through a level of ramps, one-way platforms, a moving platform, coins and enemies,
+//! everything moved and hit by tileslide:
+//!
+//! - the player and the enemies are [`tileslide::Character`]s (walk ramps, land on and drop
+//!   through one-way platforms, ride the moving platform);
+//! - the moving platform is a temporary segment, re-submitted every step
+//!   ([`tileslide::TileMap::add_temporary`] after
+//!   [`tileslide::TileMap::clear_temporaries_of`]);
+//! - coins, stomps and enemy hits are volumes in a [`tileslide::HitWorld`] with hit types
+//!   (`COLLECT`, the game's own `STOMP`, `HIT`);
+//! - every step an [`Audit`] checks with the map's own queries that no character is inside
+//!   solid and no centre crossed a solid face.
+//!
+//! The step is fixed ([`STEPS_PER_SECOND`]) and nothing reads a clock, so a run is
+//! deterministic.
+//!
+//! ```
+//! use tileslide_platformer::{Game, Level};
+//! let mut game = Game::new(Level::bundled()?)?;
+//! let summary = game.run(60 * 60)?;
+//! assert!(summary.reached_goal && summary.audit.is_clean());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+mod audit;
+mod game;
+mod hits;
+mod level;
+mod picture;
+mod replica_spawn;
+mod script;
+mod summary;
+
+pub use audit::{Audit, TOLERANCE, overlaps_solid};
+pub use game::{
+    Coin, Enemy, GRAVITY, Game, GameError, JUMP_SPEED, PLATFORM_OWNER, Player, RUN_SPEED,
+    STEPS_PER_SECOND,
+};
+pub use hits::{COIN_RADIUS, ENEMY_HALF, PLAYER_HALF, STOMP};
+pub use level::{BUNDLED_LEVEL, Level, LevelError, PlatformTrack};
+pub use picture::{COIN_COLOR, PLAYER_COLOR};
+pub use replica_spawn::player_spawn;
+pub use script::{Input, next_input};
+pub use summary::Summary;
+
+/// The longest run, in steps: a minute of game time.
+pub const MAX_STEPS: u64 = 60 * STEPS_PER_SECOND as u64;

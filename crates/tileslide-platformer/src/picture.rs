@@ -1,0 +1,73 @@
+//! Drawing a game: the platform, coins, enemies with their volumes, the player, its trail,
+//! the goal and the last step's hits, over the map drawn by `tileslide-render`.
+
+use tileslide::{Aabb, Circle, Vec2, VolumeShape};
+use tileslide_render::{Picture, Rgba, VolumeKind};
+
+use crate::game::Game;
+use crate::hits::{self, Boxed};
+
+/// Coins are gold.
+pub const COIN_COLOR: Rgba = Rgba::opaque(240, 190, 20);
+/// The player is green; blinking pale while it cannot be hit.
+pub const PLAYER_COLOR: Rgba = Rgba::opaque(39, 174, 96);
+const PLAYER_BLINK: Rgba = Rgba::new(39, 174, 96, 90);
+
+impl Game {
+    /// Adds this moment of the game to `picture` (cleared first).
+    pub fn draw(&self, picture: &mut Picture) {
+        picture.clear();
+        let s = self.level.scale;
+        let up = self.level.up;
+        picture.temporaries(&self.level.map);
+        picture.polyline(self.trail());
+        self.draw_goal(picture);
+        for c in self.coins.iter().filter(|c| !c.taken) {
+            picture.body_with_color(hits::coin_circle(c.center, s), COIN_COLOR);
+        }
+        for e in self.enemies.iter().filter(|e| e.alive) {
+            let b = Boxed {
+                center: e.body.position,
+                half: e.half(),
+                motion: Vec2::ZERO,
+            };
+            picture.volume(box_shape(b.center, b.half), VolumeKind::Attack);
+            if let Some(top) = b.world_strip(up, true, s) {
+                picture.volume(top, VolumeKind::Vulnerability);
+            }
+        }
+        let p = &self.player;
+        let color = if p.invulnerable > 0 && (p.invulnerable / 6).is_multiple_of(2) {
+            PLAYER_BLINK
+        } else {
+            PLAYER_COLOR
+        };
+        picture.volume(
+            box_shape(p.body.position, p.half()),
+            VolumeKind::Vulnerability,
+        );
+        picture.body_with_color(Circle::new(p.body.position, p.half().x), color);
+        for e in self.events().iter().filter(|e| e.accepted) {
+            picture.hit_event(self.hit_world(), e);
+        }
+    }
+
+    /// A flag on a pole at the goal's bottom middle.
+    fn draw_goal(&self, picture: &mut Picture) {
+        let s = self.level.scale;
+        let up = self.level.up;
+        let g = self.level.goal;
+        let middle = 0.5 * (g.min.x + g.max.x);
+        // The goal's bottom: its lower side along up.
+        let bottom_y = if up.y < 0.0 { g.max.y } else { g.min.y };
+        let foot = Vec2::new(middle, bottom_y);
+        let top = foot + up * 0.9 * s;
+        let tip = top - up * 0.2 * s + Vec2::X * 0.5 * s;
+        let low = top - up * 0.4 * s;
+        picture.polyline(&[foot, top, tip, low]);
+    }
+}
+
+fn box_shape(center: Vec2, half: Vec2) -> VolumeShape {
+    VolumeShape::Box(Aabb::from_center(center, half))
+}
