@@ -1,19 +1,29 @@
-//! Fights: melee between touching enemies, imps' fireballs (circles swept along their
-//! flight each step, stopped by the first wall a ray cast meets), damage and death.
-//! Hits are distance checks, not tileslide's volumes (see docs/dungeon.md).
+//! Fights: melee swings and imps' fireballs, aimed here and landed through tileslide's
+//! hit volumes ([`Hits`]): a swing is an attack volume in front of the fighter for a few
+//! steps, a fireball an attack volume swept along its step (stopped by the first wall a
+//! ray cast meets). Then damage and death.
 
 use hecs::{Entity, World};
-use tileslide::{Bodies, Ray, RayFilter, Vec2};
+use tileslide::{Bodies, Ray, RayFilter};
 
+use crate::GameError;
 use crate::brains::{IMP_RANGE, Sightings};
-use crate::components::{Body, Carrying, Cooldown, FIREBALL_RADIUS, Fireball, Health, Kind, Team};
+use crate::components::{
+    Body, Carrying, Cooldown, FIREBALL_RADIUS, Fireball, Health, Kind, Swing, Team,
+};
 use crate::events::Event;
+use crate::hits::{Blow, Hits, Target};
 use crate::level::Level;
+use crate::spawn::Ids;
 use crate::{DT, STEPS_PER_SECOND};
 
 const FIREBALL_SPEED: f32 = 8.0;
 const FIREBALL_DAMAGE: i32 = 6;
 const FIREBALL_TTL: u32 = 2 * STEPS_PER_SECOND;
+/// Steps a swing's attack volume lasts.
+const SWING_STEPS: u32 = 6;
+/// How far beyond touching an enemy may be for a fighter to swing at it (cells).
+const SWING_REACH: f32 = 0.15;
 
 fn melee(kind: Kind) -> (i32, u32) {
     match kind {
@@ -23,9 +33,16 @@ fn melee(kind: Kind) -> (i32, u32) {
     }
 }
 
-/// Melee blows between touching enemies and new fireballs from imps that see a hero.
-pub fn attack(world: &mut World, level: &Level, seen: &Sightings, events: &mut Vec<Event>) {
+/// Starts swings at enemies within reach and shoots fireballs from imps that see a hero.
+/// Whether a swing lands is for the volumes to say ([`strike`]).
+pub fn attack(
+    world: &mut World,
+    level: &Level,
+    ids: &mut Ids,
+    seen: &Sightings,
+) -> Result<(), GameError> {
     let mut shots = Vec::new();
+    let mut swings = Vec::new();
     for &(_, entity, team, kind, p) in &seen.all {
         let Ok(mut cooldown) = world.get::<&mut Cooldown>(entity) else {
             continue;
@@ -45,19 +62,31 @@ pub fn attack(world: &mut World, level: &Level, seen: &Sightings, events: &mut V
             }
             continue;
         }
-        let touching = seen
+        let within = seen
             .all
             .iter()
-            .find(|o| o.2 != team && o.4.distance(p) <= kind.radius() + o.3.radius() + 0.1);
-        if let Some(&(_, target, ..)) = touching {
-            let (amount, wait) = melee(kind);
-            events.push(Event::Damage { target, amount });
+            .find(|o| o.2 != team && o.4.distance(p) <= kind.radius() + o.3.radius() + SWING_REACH);
+        if let Some(&(.., q)) = within {
+            let (damage, wait) = melee(kind);
             cooldown.0 = wait;
+            swings.push((
+                entity,
+                Swing {
+                    id: ids.next().0,
+                    direction: (q - p).normalize_or_zero(),
+                    damage,
+                    steps_left: SWING_STEPS,
+                },
+            ));
         }
+    }
+    for (entity, swing) in swings {
+        let _ = world.insert_one(entity, swing);
     }
     for (position, velocity) in shots {
         world.spawn((
             Fireball {
+                key: ids.next().0,
                 position,
                 velocity,
                 ttl: FIREBALL_TTL,
@@ -65,22 +94,59 @@ pub fn attack(world: &mut World, level: &Level, seen: &Sightings, events: &mut V
             Team::Keeper,
         ));
     }
+    Ok(())
 }
 
-/// Moves fireballs: each sweeps its step, stops at the first wall or hero it meets.
-pub fn fly(world: &mut World, level: &Level, seen: &Sightings, events: &mut Vec<Event>) {
-    let mut spent = Vec::new();
+/// After the resolver's step: moves fireballs (each stops at the first wall its step
+/// meets), registers every fighter's circle, swing and every fireball's swept circle in
+/// `hits`, and turns the hits into [`Event::Damage`]. Fireballs that hit, hit a wall or
+/// burn out are gone.
+///
+/// # Errors
+/// A bad swing volume (a bug).
+pub fn strike(
+    world: &mut World,
+    level: &Level,
+    hits: &mut Hits,
+    seen: &Sightings,
+    events: &mut Vec<Event>,
+) -> Result<(), GameError> {
+    hits.begin();
+    let mut ended = Vec::new();
+    for &(id, entity, team, kind, position) in &seen.all {
+        let blow = match world.get::<&mut Swing>(entity) {
+            Ok(mut swing) => {
+                swing.steps_left = swing.steps_left.saturating_sub(1);
+                if swing.steps_left == 0 {
+                    ended.push(entity);
+                }
+                Some(Blow {
+                    swing: swing.id,
+                    direction: swing.direction,
+                    damage: swing.damage,
+                })
+            }
+            Err(_) => None,
+        };
+        let target = Target {
+            key: id.0,
+            entity,
+            team,
+            kind,
+            position,
+        };
+        hits.fighter(target, blow)?;
+    }
+    for entity in ended {
+        let _ = world.remove_one::<Swing>(entity);
+    }
     let mut flying: Vec<_> = world
-        .query_mut::<(Entity, &mut Fireball)>()
+        .query_mut::<(Entity, &mut Fireball, &Team)>()
         .into_iter()
         .collect();
-    flying.sort_by(|a, b| {
-        a.1.position
-            .x
-            .total_cmp(&b.1.position.x)
-            .then(a.1.position.y.total_cmp(&b.1.position.y))
-    });
-    for (entity, ball) in flying {
+    flying.sort_by_key(|(_, ball, _)| ball.key);
+    let mut spent = Vec::new();
+    for (entity, ball, team) in flying {
         let from = ball.position;
         let mut to = from + ball.velocity * DT;
         let wall = level
@@ -89,39 +155,19 @@ pub fn fly(world: &mut World, level: &Level, seen: &Sightings, events: &mut Vec<
         if let Some(hit) = &wall {
             to = hit.point;
         }
-        let victim = seen
-            .all
-            .iter()
-            .filter(|s| s.2 == Team::Heroes)
-            .map(|s| (s, t_of_closest(from, to, s.4)))
-            .filter(|(s, t)| from.lerp(to, *t).distance(s.4) <= s.3.radius() + FIREBALL_RADIUS)
-            .min_by(|a, b| a.1.total_cmp(&b.1));
         ball.ttl = ball.ttl.saturating_sub(1);
         ball.position = to;
-        if let Some((s, _)) = victim {
-            events.push(Event::Damage {
-                target: s.1,
-                amount: FIREBALL_DAMAGE,
-            });
-            spent.push(entity);
-        } else if wall.is_some() || ball.ttl == 0 {
+        hits.fireball(ball.key, entity, *team, from, to, FIREBALL_DAMAGE);
+        if wall.is_some() || ball.ttl == 0 {
             spent.push(entity);
         }
     }
+    hits.detect(events);
+    spent.extend_from_slice(hits.spent());
     for entity in spent {
         let _ = world.despawn(entity);
     }
-}
-
-/// The `t` in [0, 1] of the point of segment `a`–`b` closest to `p`.
-fn t_of_closest(a: Vec2, b: Vec2, p: Vec2) -> f32 {
-    let d = b - a;
-    let len2 = d.length_squared();
-    if len2 <= f32::EPSILON {
-        0.0
-    } else {
-        ((p - a).dot(d) / len2).clamp(0.0, 1.0)
-    }
+    Ok(())
 }
 
 /// Applies this step's damage; the dead leave the world and the resolver.

@@ -114,9 +114,25 @@ pub struct Cooldown(pub u32);
 #[derive(Clone, Copy, Debug)]
 pub struct Carrying;
 
-/// A fireball: a circle swept along its velocity each step.
+/// A melee swing under way: for a few steps an attack volume in front of the fighter,
+/// hitting each victim at most once.
+#[derive(Clone, Copy, Debug)]
+pub struct Swing {
+    /// The swing's id (from [`crate::spawn::Ids`]), unique for the game.
+    pub id: u64,
+    /// Which way it swings (unit length).
+    pub direction: Vec2,
+    /// Damage per hit.
+    pub damage: i32,
+    /// Steps it still lasts.
+    pub steps_left: u32,
+}
+
+/// A fireball: an attack volume swept along its velocity each step.
 #[derive(Clone, Copy, Debug)]
 pub struct Fireball {
+    /// Its key in the hit volumes (from [`crate::spawn::Ids`]).
+    pub key: u64,
     /// Centre.
     pub position: Vec2,
     /// Cells per second.

@@ -8,8 +8,9 @@ use crate::GameError;
 use crate::arrivals::Arrivals;
 use crate::audit::Audit;
 use crate::brains::{self, Sightings};
-use crate::components::{Body, Carrying, Health, Id, Kind, Team};
+use crate::components::{Body, Carrying, FIREBALL_RADIUS, Health, Id, Kind, Team};
 use crate::events::Event;
+use crate::hits::Hits;
 use crate::keeper::Keeper;
 use crate::layout::Layout;
 use crate::level::Level;
@@ -102,6 +103,7 @@ pub struct Game {
     keeper: Keeper,
     arrivals: Arrivals,
     ids: Ids,
+    hits: Hits,
     events: Vec<Event>,
     summary: Summary,
 }
@@ -132,6 +134,7 @@ impl Game {
             keeper,
             arrivals: Arrivals::new(SplitMix64::new(config.seed), config.party),
             ids: Ids::default(),
+            hits: Hits::new(FIREBALL_RADIUS)?,
             events: Vec::new(),
             summary: Summary {
                 treasure_left: TREASURE,
@@ -167,10 +170,10 @@ impl Game {
         let seen = Sightings::take(&self.world, &self.bodies);
         brains::heroes(&mut self.world, &mut self.bodies, &self.level, &seen);
         brains::creatures(&mut self.world, &mut self.bodies, &mut self.level, &seen);
-        combat::attack(&mut self.world, &self.level, &seen, events);
+        combat::attack(&mut self.world, &self.level, &mut self.ids, &seen)?;
         self.bodies.step(&self.level.map);
         let seen = Sightings::take(&self.world, &self.bodies);
-        combat::fly(&mut self.world, &self.level, &seen, events);
+        combat::strike(&mut self.world, &self.level, &mut self.hits, &seen, events)?;
         combat::bury(&mut self.world, &mut self.bodies, events);
         treasure::recover(&mut self.summary.treasure_left, events);
         treasure::run(

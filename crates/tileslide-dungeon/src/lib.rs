@@ -11,6 +11,8 @@
 //! - Navigation: a [`tileslide::NavGrid`] updated per dug square; heroes follow
 //!   [`tileslide::FlowField`]s, creatures walk [`tileslide::Path`]s home; both are
 //!   refreshed only when a dug square affects them.
+//! - Hits: [`tileslide::HitWorld`] attack and vulnerability volumes with teams; melee
+//!   swings hit each victim once, fireballs are swept along their step.
 //! - Line of sight and fireball walls: [`tileslide::TileMap::cast_ray`].
 //! - Entities live in a [`hecs::World`]; systems talk through [`Event`]s.
 //!
@@ -31,6 +33,7 @@ mod combat;
 mod components;
 mod events;
 mod game;
+mod hits;
 mod keeper;
 mod layout;
 mod level;
@@ -66,4 +69,7 @@ pub enum GameError {
     /// The resolver refused a body.
     #[error("bodies: {0}")]
     Body(#[from] tileslide::BodyError),
+    /// A hit volume was refused.
+    #[error("hit volumes: {0}")]
+    Volume(#[from] tileslide::VolumeError),
 }
