@@ -7,6 +7,7 @@ use tileslide::{Bodies, Vec2};
 
 use crate::DT;
 use crate::components::{Body, CreatureBrain, Goal, HeroBrain, Id, Kind, Team};
+use crate::explore::centre_of;
 use crate::level::Level;
 
 /// How far heroes notice enemies.
@@ -70,17 +71,48 @@ fn towards(p: Vec2, target: Vec2, speed: f32, short: f32) -> Vec2 {
     }
 }
 
-/// Proposes every hero's move.
-pub fn heroes(world: &mut World, bodies: &mut Bodies, level: &Level, seen: &Sightings) {
-    for (body, brain, kind) in world.query_mut::<(&Body, &HeroBrain, &Kind)>() {
+/// Steps between a hero's looks around (spread over heroes by id).
+const LOOK_EVERY: u64 = 5;
+
+/// Proposes every hero's move: fight an enemy in sight; else, once a hero has seen the
+/// treasure (or when carrying it out), follow the flow field to the goal; else explore
+/// towards the nearest frontier square (see [`crate::explore`]).
+pub fn heroes(
+    world: &mut World,
+    bodies: &mut Bodies,
+    level: &mut Level,
+    seen: &Sightings,
+    step: u64,
+) {
+    for (body, brain, kind, id) in world.query_mut::<(&Body, &mut HeroBrain, &Kind, &Id)>() {
         let Ok(p) = bodies.get(body.0).map(|b| b.position()) else {
             continue;
         };
+        if (step + id.0).is_multiple_of(LOOK_EVERY) {
+            let Level {
+                map,
+                explored,
+                treasure,
+                ..
+            } = &mut *level;
+            let sees = |a: Vec2, b: Vec2| {
+                map.cast_ray(
+                    tileslide::Ray::between(a, b),
+                    &tileslide::RayFilter::default(),
+                )
+                .is_none()
+            };
+            explored.look(map, p, *treasure, sees);
+        }
         let motion = match seen.nearest_enemy(level, Team::Heroes, p, HERO_SIGHT) {
             Some((_, q, other)) => {
                 towards(p, q, kind.speed(), kind.radius() + other.radius() + 0.05)
             }
+            None if brain.goal == Goal::Treasure && !level.explored.treasure_seen() => {
+                explore(brain, level, p, kind.radius(), kind.speed())
+            }
             None => {
+                brain.exploring = None;
                 let field = match brain.goal {
                     Goal::Treasure => &level.to_treasure,
                     Goal::Exit => &level.to_exit,
@@ -93,6 +125,43 @@ pub fn heroes(world: &mut World, bodies: &mut Bodies, level: &Level, seen: &Sigh
             }
         };
         let _ = bodies.propose(body.0, motion);
+    }
+}
+
+/// The next step of a hero exploring: along its path to its frontier square while that is
+/// still one, else to the nearest frontier square it finds a path to (none: it waits).
+fn explore(brain: &mut HeroBrain, level: &mut Level, p: Vec2, radius: f32, speed: f32) -> Vec2 {
+    let current = brain.exploring.as_ref().is_some_and(|(cell, path, next)| {
+        *next < path.points().len() && level.explored.is_frontier(&level.map, *cell)
+    });
+    if !current {
+        brain.exploring = None;
+        let Some(cell) = level.explored.nearest_frontier(&level.map, p) else {
+            return Vec2::ZERO;
+        };
+        let target = centre_of(&level.map, cell);
+        match level.nav.find_path(&level.map, p, target, radius) {
+            Ok(Some(path)) => brain.exploring = Some((cell, path, 1)),
+            _ => {
+                level.explored.dead_end(cell);
+                return Vec2::ZERO;
+            }
+        }
+    }
+    let Some((_, path, next)) = &mut brain.exploring else {
+        return Vec2::ZERO;
+    };
+    follow(path, next, p, speed)
+}
+
+/// The next step along `path` from `p`, `next` being the next point to reach.
+fn follow(path: &tileslide::Path, next: &mut usize, p: Vec2, speed: f32) -> Vec2 {
+    while *next < path.points().len() && path.points()[*next].distance(p) < 0.05 {
+        *next += 1;
+    }
+    match path.points().get(*next) {
+        Some(&target) => towards(p, target, speed, 0.0),
+        None => Vec2::ZERO,
     }
 }
 
@@ -142,11 +211,5 @@ fn walk_home(
     let Some((path, next)) = &mut brain.way_home else {
         return Vec2::ZERO;
     };
-    while *next < path.points().len() && path.points()[*next].distance(p) < 0.05 {
-        *next += 1;
-    }
-    match path.points().get(*next) {
-        Some(&target) => towards(p, target, speed, 0.0),
-        None => Vec2::ZERO,
-    }
+    follow(path, next, p, speed)
 }

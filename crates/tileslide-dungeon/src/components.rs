@@ -1,6 +1,6 @@
 //! The components of the game's entities (hecs).
 
-use tileslide::{BodyHandle, Path, Vec2};
+use tileslide::{BodyHandle, Cell, Path, Vec2};
 
 /// A stable number per entity, in spawn order: systems that need an order sort by it, so
 /// nothing depends on how the ECS stores entities.
@@ -91,10 +91,13 @@ pub enum Goal {
 }
 
 /// A hero's mind.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct HeroBrain {
     /// Where it is going.
     pub goal: Goal,
+    /// While the treasure has not been seen: the frontier square it explores towards,
+    /// and its path there with the next point to reach.
+    pub exploring: Option<(Cell, Path, usize)>,
 }
 
 /// A creature's mind: where it waits, and its way back there.

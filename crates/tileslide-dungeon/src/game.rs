@@ -168,7 +168,13 @@ impl Game {
             events,
         )?;
         let seen = Sightings::take(&self.world, &self.bodies);
-        brains::heroes(&mut self.world, &mut self.bodies, &self.level, &seen);
+        brains::heroes(
+            &mut self.world,
+            &mut self.bodies,
+            &mut self.level,
+            &seen,
+            step,
+        );
         brains::creatures(&mut self.world, &mut self.bodies, &mut self.level, &seen);
         combat::attack(&mut self.world, &self.level, &mut self.ids, &seen)?;
         self.bodies.step(&self.level.map);
@@ -292,6 +298,7 @@ fn refresh_ways(level: &mut Level, world: &mut World, events: &[Event]) -> Resul
     let (mut treasure, mut exit) = (false, false);
     for event in events {
         if let Event::Dug { change, .. } = event {
+            level.explored.forget_dead_ends();
             treasure |= level.to_treasure.is_affected_by(&level.nav, change);
             exit |= level.to_exit.is_affected_by(&level.nav, change);
             for brain in world.query_mut::<&mut crate::components::CreatureBrain>() {

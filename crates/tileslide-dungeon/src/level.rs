@@ -4,6 +4,7 @@
 use tileslide::{Bodies, FlowField, NavConfig, NavGrid, TileMap, Vec2};
 
 use crate::GameError;
+use crate::explore::Explored;
 use crate::layout::{Ground, Layout};
 
 /// The widest circle the navigation grid serves.
@@ -23,6 +24,8 @@ pub struct Level {
     pub to_exit: FlowField,
     /// Where the treasure lies.
     pub treasure: Vec2,
+    /// What the heroes have seen.
+    pub explored: Explored,
     /// The way in and out.
     pub exit: Vec2,
 }
@@ -44,6 +47,7 @@ impl Level {
         let hero = crate::components::Kind::Hero.radius();
         let to_treasure = FlowField::new(&nav, &map, layout.treasure, hero)?;
         let to_exit = FlowField::new(&nav, &map, layout.exit, hero)?;
+        let explored = Explored::new(&map);
         Ok(Self {
             map,
             ground: layout.ground,
@@ -51,6 +55,7 @@ impl Level {
             to_treasure,
             to_exit,
             treasure: layout.treasure,
+            explored,
             exit: layout.exit,
         })
     }

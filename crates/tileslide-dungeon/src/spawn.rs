@@ -50,6 +50,7 @@ pub fn fighter(
             entity,
             HeroBrain {
                 goal: Goal::Treasure,
+                exploring: None,
             },
         ),
         Kind::Skeleton | Kind::Imp => world.insert_one(

@@ -127,10 +127,10 @@ fn the_default_run_is_the_one_the_readme_shows() {
     let s = game.summary();
     assert_eq!(
         (s.waves, s.heroes_lost, s.heroes_escaped),
-        (4, 2, 16),
+        (4, 3, 15),
         "{s:?}"
     );
-    assert_eq!((s.creatures_summoned, s.creatures_lost), (8, 3), "{s:?}");
+    assert_eq!((s.creatures_summoned, s.creatures_lost), (8, 4), "{s:?}");
     assert_eq!(
         (
             s.treasure_left,
@@ -145,5 +145,39 @@ fn the_default_run_is_the_one_the_readme_shows() {
         (s.audit.overlapping_pairs, s.audit.wall_penetrations),
         (0, 0)
     );
-    assert_eq!(format!("{:016x}", game.state_hash()), "8624030f3da19873");
+    assert_eq!(format!("{:016x}", game.state_hash()), "4f2b136cc1bbdb42");
+}
+
+/// Issue 8: heroes "explore squares they have not seen". The first party does not know
+/// where the treasure is: it sees more and more of the dungeon, sees the treasure, and
+/// only then takes it.
+#[test]
+fn heroes_explore_until_they_see_the_treasure_and_only_then_take_it() {
+    let mut game = Game::with_config(GameConfig {
+        defenders: false,
+        ..GameConfig::new(1)
+    })
+    .unwrap();
+    let (mut first_seen, mut treasure_seen_at, mut taken_at) = (None, None, None);
+    for step in 0..60 * 30 {
+        game.step().unwrap();
+        let explored = &game.level().explored;
+        if first_seen.is_none() && explored.seen_count() > 0 {
+            first_seen = Some((step, explored.seen_count()));
+        }
+        if treasure_seen_at.is_none() && explored.treasure_seen() {
+            treasure_seen_at = Some((step, explored.seen_count()));
+        }
+        if taken_at.is_none() && game.summary().treasure_taken > 0 {
+            taken_at = Some(step);
+        }
+    }
+    let (first, seen_then) = first_seen.unwrap();
+    let (found, seen_when_found) = treasure_seen_at.unwrap();
+    let taken = taken_at.unwrap();
+    assert!(first < found && found < taken, "{first} {found} {taken}");
+    assert!(
+        seen_when_found > seen_then + 20,
+        "explored {seen_then} squares at first, {seen_when_found} when the treasure came into sight"
+    );
 }
