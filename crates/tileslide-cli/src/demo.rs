@@ -69,11 +69,8 @@ pub fn run(which: DemoCommand) -> Result<()> {
     }
 }
 
-fn dungeon(seed: u64, minutes: f64, output: &Path, json: bool) -> Result<()> {
-    if !(minutes.is_finite() && (0.0..=600.0).contains(&minutes)) {
-        bail!("--minutes {minutes}: must be between 0 and 600");
-    }
-    // Refuse a path that cannot be written before running the game, not after.
+/// Refuses an output path whose folder does not exist, before a game runs, not after.
+fn check_output_folder(output: &Path) -> Result<()> {
     let folder = output
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
@@ -85,6 +82,14 @@ fn dungeon(seed: u64, minutes: f64, output: &Path, json: bool) -> Result<()> {
             folder.display()
         );
     }
+    Ok(())
+}
+
+fn dungeon(seed: u64, minutes: f64, output: &Path, json: bool) -> Result<()> {
+    if !(minutes.is_finite() && (0.0..=600.0).contains(&minutes)) {
+        bail!("--minutes {minutes}: must be between 0 and 600");
+    }
+    check_output_folder(output)?;
     let steps = (minutes * 60.0 * f64::from(STEPS_PER_SECOND)).round() as u64;
     let every = steps.div_ceil(MAX_FRAMES).max(1);
     let mut game = Game::new(seed)?;
@@ -199,14 +204,7 @@ fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: b
         ),
         (Some(map), None) => Level::load_ascii(map)?,
     };
-    let writable = output.parent().filter(|p| !p.as_os_str().is_empty());
-    if let Some(folder) = writable.filter(|f| !f.is_dir()) {
-        bail!(
-            "{}: cannot write there: the folder {} does not exist",
-            output.display(),
-            folder.display()
-        );
-    }
+    check_output_folder(output)?;
     let y_axis = if level.up.y > 0.0 {
         YAxis::Up
     } else {

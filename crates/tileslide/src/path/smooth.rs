@@ -39,6 +39,22 @@ const CUT_STEPS: u32 = 4;
 /// already turn by less than [`FINE_TURN`].
 const CUT_DEPTH: u32 = 3;
 
+/// The largest `t` in [0, 1) that `clear` accepts, by [`CUT_STEPS`] halvings from `t = 0`
+/// (taken as clear): every value returned was tested, so a caller may trust it even where
+/// `clear` is not monotone.
+fn largest_clear(clear: impl Fn(f32) -> bool) -> f32 {
+    let (mut lo, mut hi) = (0.0f32, 1.0f32);
+    for _ in 0..CUT_STEPS {
+        let mid = 0.5 * (lo + hi);
+        if clear(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
+
 /// True when a circle of `radius` moves from `a` to `b` without touching any segment with
 /// one of `mask`'s flags, from either side.
 pub(crate) fn is_clear(map: &TileMap, a: Vec2, b: Vec2, radius: f32, mask: SegmentFlags) -> bool {
@@ -85,15 +101,7 @@ fn relax(map: &TileMap, points: &mut [Vec2], radius: f32, mask: SegmentFlags) {
             let p = at(s);
             is_clear(map, a, p, radius, mask) && is_clear(map, p, b, radius, mask)
         };
-        let (mut lo, mut hi) = (0.0f32, 1.0f32);
-        for _ in 0..CUT_STEPS {
-            let mid = 0.5 * (lo + hi);
-            if clear(mid) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
+        let lo = largest_clear(clear);
         if lo > 0.0 {
             points[i] = at(lo);
         }
@@ -216,15 +224,7 @@ impl Cutter<'_> {
             return;
         }
         // The longest clear chord by halving; `t = 0` is the corner itself.
-        let (mut lo, mut hi) = (0.0f32, 1.0f32);
-        for _ in 0..CUT_STEPS {
-            let mid = 0.5 * (lo + hi);
-            if clear(mid) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
+        let lo = largest_clear(clear);
         let (p, q) = chord(lo);
         if lo == 0.0 || p == v || q == v {
             out.push(v);
