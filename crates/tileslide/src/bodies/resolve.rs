@@ -46,6 +46,10 @@ const TIE_EPSILON: f32 = 1e-5;
 /// the centres at most `ε²/2` of their distance closer, far below a float's spacing.
 const TANGENT_EPSILON: f32 = 1e-5;
 
+/// How far a slide along a wall that leans into it by rounding is lifted off it, as a
+/// fraction of the slide's length (see `slide`): ten times the rounding noise.
+const SLIDE_LIFT: f32 = 1e-6;
+
 /// Shortest safe part of a move that is taken, as a fraction of the gap (see
 /// `collide_and_slide`).
 const MIN_STEP: f32 = 0.125;
@@ -471,10 +475,23 @@ fn slide(blocked: Vec2, normal: Vec2, obstacle: Obstacle, me: u32, mode: SlideMo
             (if u < threshold { -t } else { t }, u.abs())
         }
     };
-    match mode {
+    let slid = match mode {
         SlideMode::FullLength => tangent * length,
         SlideMode::Tangential => tangent * along,
-        SlideMode::Stop => Vec2::ZERO,
+        SlideMode::Stop => return Vec2::ZERO,
+    };
+    // Along a wall the tangent is perpendicular to the normal, but the slide's components
+    // are rounded one by one, so its projection on the normal is rounding noise, about 1e-7
+    // of its length (exactly zero only for axis-aligned and 45° walls). From inside the gap
+    // band a slide that leans in by that noise is an approach at `t = 0`: it would be
+    // blocked by the wall it slides along, on every pass. Lifted off the wall by
+    // `SLIDE_LIFT` of its length instead, it slides; the lift only ever moves the body away
+    // from the wall, so unlike a tolerance in the sweep it cannot add up into it.
+    let lean = slid.dot(normal);
+    if matches!(obstacle, Obstacle::Wall) && lean < 0.0 {
+        slid + normal * (SLIDE_LIFT * slid.length())
+    } else {
+        slid
     }
 }
 
