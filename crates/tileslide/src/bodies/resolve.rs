@@ -32,7 +32,7 @@ use super::set::Body;
 use super::settled::Settled;
 use crate::broadphase::PairFinder;
 use crate::geometry::{Aabb, SweepHit, bisect, sweep_circle_circle};
-use crate::query::Capsule;
+use crate::query::{Capsule, FreeArea};
 use crate::tiles::TileMap;
 
 /// Relative size below which the remainder's projection on the tangent counts as zero (the
@@ -100,6 +100,9 @@ pub(crate) struct Scratch {
     walls: Vec<Capsule>,
     /// `walls` ranges per circle of the body being resolved.
     wall_ranges: Vec<(u32, u32)>,
+    /// Per circle, an area of the map found free of walls around it, while it stays inside
+    /// (a statement about the map, so it stays true whichever circle it ends up with).
+    free: Vec<Option<FreeArea>>,
     /// The last resolve, to skip bodies blocked in place again.
     pub(super) settled: Settled,
 }
@@ -190,6 +193,7 @@ impl Scratch {
             }
         }
         self.first_circle.push(self.circles.len() as u32);
+        self.free.resize(self.circles.len(), None);
     }
 
     /// The circles each circle may meet: broadphase pairs of different bodies that collide
@@ -259,8 +263,12 @@ impl Scratch {
         let mask = self.filter[bi].walls;
         for c in circles.clone() {
             let start = self.walls.len() as u32;
-            if !mask.is_empty() {
-                map.capsules_in(&self.boxes[c], mask, &mut self.walls);
+            let reach = &self.boxes[c];
+            if !mask.is_empty() && !self.free[c].is_some_and(|area| area.holds(map, reach)) {
+                map.capsules_in(reach, mask, &mut self.walls);
+                if self.walls.len() as u32 == start {
+                    self.free[c] = map.free_area_around(reach);
+                }
             }
             self.wall_ranges.push((start, self.walls.len() as u32));
         }
