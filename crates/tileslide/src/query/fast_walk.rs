@@ -57,9 +57,9 @@ pub(crate) struct WalkStart {
     pub tol_t: f32,
     /// The walk ends once a cell's exit lies past this fraction (see `new`).
     pub t_stop: f32,
-    /// The next grid line on each axis (exact integers as floats)...
-    pub line_x: f32,
-    pub line_y: f32,
+    /// The next grid line on each axis...
+    pub line_x: i32,
+    pub line_y: i32,
     /// ...and the ray fraction where it is crossed.
     pub tx: f32,
     pub ty: f32,
@@ -68,8 +68,8 @@ pub(crate) struct WalkStart {
     pub index_step_x: isize,
     pub index_step_y: isize,
     /// ±1: the grid-line steps along x and y.
-    pub line_step_x: f32,
-    pub line_step_y: f32,
+    pub step_x: i32,
+    pub step_y: i32,
     /// The face a step along x (y) enters the next cell through.
     pub enter_x: u8,
     pub enter_y: u8,
@@ -102,10 +102,11 @@ impl WalkStart {
         // NaN gets here.)
         let (ax, ay) = (inv.x.abs(), inv.y.abs());
         let tol_t = TOUCH_TOLERANCE * if ax < ay { ax } else { ay };
-        // The next grid line on each axis, kept as an exact float, and the ray fraction
-        // there (computed from the origin each time, so no error accumulates).
-        let line_x = (col + (step_x > 0) as i32) as f32;
-        let line_y = (row + (step_y > 0) as i32) as f32;
+        // The next grid line on each axis, and the ray fraction there (computed from the
+        // origin each time, so no error accumulates). Kept as integers: a float-to-int
+        // conversion costs several instructions in Rust (it saturates), the other way one.
+        let line_x = col + (step_x > 0) as i32;
+        let line_y = row + (step_y > 0) as i32;
         // The walk ends when the next cell starts past `limit` or outside the map. The
         // second happens at `t_leave`, computed by the same formula as the crossings at the
         // map's last grid line; one comparison with `t_stop` checks both: stop when
@@ -128,13 +129,13 @@ impl WalkStart {
             t_stop,
             line_x,
             line_y,
-            tx: (line_x - o.x) * inv.x,
-            ty: (line_y - o.y) * inv.y,
+            tx: (line_x as f32 - o.x) * inv.x,
+            ty: (line_y as f32 - o.y) * inv.y,
             index: (row * w + col) as usize,
             index_step_x: step_x as isize,
             index_step_y: step_y as isize * w as isize,
-            line_step_x: step_x as f32,
-            line_step_y: step_y as f32,
+            step_x,
+            step_y,
             enter_x: if step_x > 0 { FACE_MIN_X } else { FACE_MAX_X },
             enter_y: if step_y > 0 { FACE_MIN_Y } else { FACE_MAX_Y },
         })
@@ -169,13 +170,11 @@ pub(crate) fn fast_walk(
         mut index,
         index_step_x,
         index_step_y,
-        line_step_x,
-        line_step_y,
+        step_x,
+        step_y,
         enter_x,
         enter_y,
     } = start;
-    let step_x = line_step_x as i32;
-    let step_y = line_step_y as i32;
     let kinds = data.kinds;
     // Faces decide only front-face queries that see solid segments; otherwise face cells
     // are tested like general ones.
@@ -198,8 +197,8 @@ pub(crate) fn fast_walk(
             if kind != 0 {
                 if kind & entered & face_mask != 0 {
                     // The cell from the grid lines ahead of it: no division of `index`.
-                    let col = line_x as i32 - (step_x > 0) as i32;
-                    let row = line_y as i32 - (step_y > 0) as i32;
+                    let col = line_x - (step_x > 0) as i32;
+                    let row = line_y - (step_y > 0) as i32;
                     return FastWalk::Face {
                         index: index as u32,
                         col: col as u32,
@@ -225,13 +224,13 @@ pub(crate) fn fast_walk(
             }
             if tx < ty {
                 index = index.wrapping_add_signed(index_step_x);
-                line_x += line_step_x;
-                tx = (line_x - o.x) * inv.x;
+                line_x += step_x;
+                tx = (line_x as f32 - o.x) * inv.x;
                 entered = enter_x;
             } else {
                 index = index.wrapping_add_signed(index_step_y);
-                line_y += line_step_y;
-                ty = (line_y - o.y) * inv.y;
+                line_y += step_y;
+                ty = (line_y as f32 - o.y) * inv.y;
                 entered = enter_y;
             }
         }
