@@ -1,11 +1,43 @@
 //! Casts the "rays" scene with tileslide alone, for profilers (perf, callgrind):
 //! `cargo run --release -p tileslide-bench --example ray_profile -- [dungeon256|open256] [passes]`.
 //! Figures that compare with peers come from `tileslide bench rays`.
+//!
+//! Also prints a checksum of every hit, bit for bit (t, point, normal, flags, cell, segment
+//! index, tile), so that two builds can be shown to return exactly the same results.
 
 use std::time::Instant;
 
-use tileslide::{Ray, RayFilter};
+use tileslide::{Ray, RayFilter, RayHit, SegmentSource};
 use tileslide_scenes::{Scene, scene_rays};
+
+/// FNV-1a (64-bit) over the bits of every hit, and over a marker for every miss.
+fn checksum(hits: impl Iterator<Item = Option<RayHit>>) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    let mut eat = |word: u32| {
+        for byte in word.to_le_bytes() {
+            h = (h ^ u64::from(byte)).wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    };
+    for hit in hits {
+        let Some(hit) = hit else {
+            eat(u32::MAX);
+            continue;
+        };
+        for f in [hit.t, hit.point.x, hit.point.y, hit.normal.x, hit.normal.y] {
+            eat(f.to_bits());
+        }
+        eat(hit.flags.0);
+        match hit.source {
+            SegmentSource::Tile { segment, tile } => {
+                for word in [segment.cell.col, segment.cell.row, segment.index, tile.0] {
+                    eat(word);
+                }
+            }
+            SegmentSource::Temporary { index, .. } => eat(index as u32),
+        }
+    }
+    h
+}
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
@@ -37,9 +69,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         std::hint::black_box(sum);
     }
     println!(
-        "{}: best of {passes} passes {:.2} Mrays/s",
+        "{}: best of {passes} passes {:.2} Mrays/s, checksum {:016x}",
         scene.name(),
-        rays.len() as f64 / best / 1e6
+        rays.len() as f64 / best / 1e6,
+        checksum(rays.iter().map(|r| map.cast_ray(*r, &filter)))
     );
     Ok(())
 }

@@ -1,3 +1,5 @@
+use std::cell::LazyCell;
+
 use glam::Vec2;
 
 use super::fast_walk::{FastWalk, WalkData, fast_walk};
@@ -65,7 +67,9 @@ impl TileMap {
             }
         }
         let grid = self.grid_ray(p0, delta);
-        let test = SegmentTest::new(p0, delta, filter);
+        // Built only if some cell's segments are tested: a face hit needs none.
+        let test = LazyCell::new(|| SegmentTest::new(p0, delta, filter));
+        let by_faces = SegmentTest::decides_by_faces(filter);
         let limit = if best_t.is_finite() { best_t } else { 1.0 };
         let data = WalkData {
             kinds: self.store.kinds(),
@@ -74,7 +78,15 @@ impl TileMap {
         };
         let mut general = None;
         let mut fallback = false;
-        match fast_walk(&grid, &data, &test, limit, &mut best_t, &mut general) {
+        match fast_walk(
+            &grid,
+            &data,
+            &test,
+            by_faces,
+            limit,
+            &mut best_t,
+            &mut general,
+        ) {
             FastWalk::Done => {}
             FastWalk::Face {
                 index,

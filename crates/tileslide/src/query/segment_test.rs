@@ -16,15 +16,10 @@ pub(crate) struct SegmentTest {
     face_dir: Vec2,
     face_limit: f32,
     mask: u32,
-    /// Front faces only, and solid segments count: a ray entering a cell through an exposed
-    /// whole-edge solid face hits it (see `fast_walk`).
-    by_faces: bool,
 }
 
 impl SegmentTest {
     pub fn new(p0: Vec2, delta: Vec2, filter: &RayFilter) -> Self {
-        let by_faces =
-            matches!(filter.faces, Faces::Front) && filter.mask.contains(SegmentFlags::SOLID);
         let (face_dir, face_limit) = match filter.face_direction(delta) {
             Some(dir) => (dir, 0.0),
             None => (Vec2::ZERO, 1.0),
@@ -35,15 +30,14 @@ impl SegmentTest {
             face_dir,
             face_limit,
             mask: filter.mask.0,
-            by_faces,
         }
     }
 
     /// True when cells of whole-edge solid faces can be decided by the face a ray enters
-    /// through.
+    /// through: front faces only, and solid segments count (see `fast_walk`).
     #[inline(always)]
-    pub fn decides_by_faces(&self) -> bool {
-        self.by_faces
+    pub fn decides_by_faces(filter: &RayFilter) -> bool {
+        matches!(filter.faces, Faces::Front) && filter.mask.contains(SegmentFlags::SOLID)
     }
 
     /// Whether the filter lets the ray hit `s`, and `t` if the ray crosses it (`t` is
