@@ -77,7 +77,8 @@ struct WorkCircle {
 /// What a sweep stopped at.
 #[derive(Clone, Copy, Debug)]
 enum Obstacle {
-    Wall,
+    /// A wall: met on its flat side, or at a rounded end.
+    Wall { flat: bool },
     /// Another body, by work index.
     Body(u32),
 }
@@ -332,7 +333,12 @@ impl Scratch {
                     continue;
                 }
                 if let Some(hit) = sweep_wall(wall, center, radius, motion, toi) {
-                    keep(hit, Obstacle::Wall);
+                    keep(
+                        hit,
+                        Obstacle::Wall {
+                            flat: hit.normal == wall.normal,
+                        },
+                    );
                 }
             }
             let ci = first + k;
@@ -469,7 +475,7 @@ fn slide(blocked: Vec2, normal: Vec2, obstacle: Obstacle, me: u32, mode: SlideMo
     let perp = Vec2::new(normal.y, -normal.x);
     let eps = TIE_EPSILON * length;
     let (tangent, along) = match obstacle {
-        Obstacle::Wall => {
+        Obstacle::Wall { .. } => {
             let u = blocked.dot(perp);
             if u.abs() <= eps {
                 return Vec2::ZERO;
@@ -494,9 +500,11 @@ fn slide(blocked: Vec2, normal: Vec2, obstacle: Obstacle, me: u32, mode: SlideMo
     // band a slide that leans in by that noise is an approach at `t = 0`: it would be
     // blocked by the wall it slides along, on every pass. Lifted off the wall by
     // `SLIDE_LIFT` of its length instead, it slides; the lift only ever moves the body away
-    // from the wall, so unlike a tolerance in the sweep it cannot add up into it.
+    // from the wall, so unlike a tolerance in the sweep it cannot add up into it. (Only on
+    // the flat side: a slide off a rounded end is a round obstacle's, which `grazes` lets
+    // through.)
     let lean = slid.dot(normal);
-    if matches!(obstacle, Obstacle::Wall) && lean < 0.0 {
+    if matches!(obstacle, Obstacle::Wall { flat: true }) && lean < 0.0 {
         slid + normal * (SLIDE_LIFT * slid.length())
     } else {
         slid
@@ -536,20 +544,38 @@ mod tests {
         // Leaning right against a floor: slides right, full length or tangential part.
         let blocked = Vec2::new(0.6, -0.8);
         assert_eq!(
-            slide(blocked, up, Obstacle::Wall, 0, SlideMode::FullLength),
+            slide(
+                blocked,
+                up,
+                Obstacle::Wall { flat: true },
+                0,
+                SlideMode::FullLength
+            ),
             Vec2::new(1.0, 0.0)
         );
-        let t = slide(blocked, up, Obstacle::Wall, 0, SlideMode::Tangential);
+        let t = slide(
+            blocked,
+            up,
+            Obstacle::Wall { flat: true },
+            0,
+            SlideMode::Tangential,
+        );
         assert!((t - Vec2::new(0.6, 0.0)).length() < 1e-6);
         assert_eq!(
-            slide(blocked, up, Obstacle::Wall, 0, SlideMode::Stop),
+            slide(
+                blocked,
+                up,
+                Obstacle::Wall { flat: true },
+                0,
+                SlideMode::Stop
+            ),
             Vec2::ZERO
         );
         assert_eq!(
             slide(
                 Vec2::new(0.0, -1.0),
                 up,
-                Obstacle::Wall,
+                Obstacle::Wall { flat: true },
                 0,
                 SlideMode::FullLength
             ),
