@@ -1,6 +1,7 @@
 //! Runs the "crowd" scene with tileslide alone, for profilers (perf, callgrind):
 //! `cargo run --release -p tileslide-bench --example crowd_profile -- [N] [steps]`.
-//! Prints the step times and the resolve report (contacts, bodies cut short); figures that compare with peers come from `tileslide bench crowd`.
+//! Prints the step times and the resolve report (contacts, bodies cut short); figures that
+//! compare with peers come from `tileslide bench crowd`.
 
 use std::time::Instant;
 
