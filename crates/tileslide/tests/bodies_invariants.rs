@@ -425,7 +425,9 @@ proptest! {
     /// Bodies with constant moves jam against walls and each other, so the resolver skips
     /// those blocked in place again; between steps, bodies jump, pause, vanish or turn into
     /// ghosts, the map is edited and settings change. Every step, each resolved move and
-    /// the report are bit-identical to those of a fresh resolver without memory.
+    /// the report are bit-identical to those of a fresh resolver without memory (no settled
+    /// bodies, no walls kept near each circle, no neighbour candidates kept from earlier
+    /// steps).
     #[test]
     fn settled_bodies_move_exactly_as_without_memory(
         (w, h, chars) in map_strategy(true),

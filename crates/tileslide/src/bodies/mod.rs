@@ -10,6 +10,8 @@
 
 mod body;
 mod config;
+mod near_walls;
+mod neighbours;
 mod resolve;
 mod set;
 mod settled;

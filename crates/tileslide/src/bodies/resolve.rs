@@ -28,11 +28,12 @@ use glam::Vec2;
 
 use super::body::BodyFilter;
 use super::config::{ResolveConfig, SlideMode, TimeOfImpact};
+use super::near_walls::NearWalls;
+use super::neighbours::Neighbours;
 use super::set::Body;
 use super::settled::Settled;
-use crate::broadphase::PairFinder;
 use crate::geometry::{Aabb, SweepHit, bisect, sweep_circle_circle};
-use crate::query::{Capsule, FreeArea};
+use crate::query::Capsule;
 use crate::tiles::TileMap;
 
 /// Relative size below which the remainder's projection on the tangent counts as zero (the
@@ -86,7 +87,6 @@ enum Obstacle {
 /// Buffers kept between resolves, so a step allocates nothing once warm.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Scratch {
-    finder: PairFinder,
     circles: Vec<WorkCircle>,
     /// Per body, its first circle; one more entry at the end.
     first_circle: Vec<u32>,
@@ -94,16 +94,13 @@ pub(crate) struct Scratch {
     motion: Vec<Vec2>,
     filter: Vec<BodyFilter>,
     boxes: Vec<Aabb>,
-    pairs: Vec<(u32, u32)>,
-    /// Per circle, the circles it may meet (compressed rows: `first_neighbour`, `neighbours`).
-    first_neighbour: Vec<u32>,
-    neighbours: Vec<u32>,
-    walls: Vec<Capsule>,
-    /// `walls` ranges per circle of the body being resolved.
+    /// Per circle, the circles it may meet.
+    neighbours: Neighbours,
+    /// The walls near each circle, kept between steps (statements about the map, so they
+    /// stay true whichever circle they end up with).
+    near: NearWalls,
+    /// Per circle of the body being resolved, its range of `near`'s walls.
     wall_ranges: Vec<(u32, u32)>,
-    /// Per circle, an area of the map found free of walls around it, while it stays inside
-    /// (a statement about the map, so it stays true whichever circle it ends up with).
-    free: Vec<Option<FreeArea>>,
     /// The last resolve, to skip bodies blocked in place again.
     pub(super) settled: Settled,
 }
@@ -119,7 +116,7 @@ impl Scratch {
     ) -> ResolveReport {
         let gap = config.gap.max(0.0) * map.cell_size().min_element();
         self.load(bodies, gap);
-        self.find_neighbours(config);
+        self.find_neighbours(config, map.cell_size().min_element());
         self.settled.begin(&self.position, map.revision(), config);
         let mut report = ResolveReport::default();
         for (b, body) in bodies.iter_mut().enumerate() {
@@ -151,14 +148,14 @@ impl Scratch {
     /// Forgets the last resolve: the bodies changed in a way their positions do not show.
     pub fn forget(&mut self) {
         self.settled.forget();
+        self.neighbours.forget();
     }
 
     /// Body `b` moved: flags the bodies whose boxes touch its own as disturbed.
     fn disturb_neighbours(&mut self, b: usize) {
         let circles = self.first_circle[b] as usize..self.first_circle[b + 1] as usize;
         for c in circles {
-            let row = self.first_neighbour[c] as usize..self.first_neighbour[c + 1] as usize;
-            for &n in &self.neighbours[row] {
+            for &n in self.neighbours.row(c) {
                 let other = self.circles[n as usize].body as usize;
                 self.settled.disturb(b, other);
             }
@@ -194,56 +191,21 @@ impl Scratch {
             }
         }
         self.first_circle.push(self.circles.len() as u32);
-        self.free.resize(self.circles.len(), None);
+        self.near.begin(self.circles.len());
     }
 
-    /// The circles each circle may meet: broadphase pairs of different bodies that collide
-    /// by filter, at least one of them moving.
-    fn find_neighbours(&mut self, config: &ResolveConfig) {
-        self.pairs.clear();
-        self.finder
-            .find(config.broadphase, &self.boxes, &mut self.pairs);
-        let circles = &self.circles;
-        let (motion, filter) = (&self.motion, &self.filter);
-        self.pairs.retain(|&(i, j)| {
-            let (a, b) = (
-                circles[i as usize].body as usize,
-                circles[j as usize].body as usize,
-            );
-            a != b
-                && (motion[a] != Vec2::ZERO || motion[b] != Vec2::ZERO)
-                && filter[a].collides(&filter[b])
-        });
-        // Compressed rows by counting sort: count each circle's pairs, running sums give each
-        // row's end, and filling every row backwards leaves `first_neighbour[c]` at its start.
-        let n = self.circles.len();
-        self.first_neighbour.clear();
-        self.first_neighbour.resize(n + 1, 0);
-        for &(i, j) in &self.pairs {
-            self.first_neighbour[i as usize] += 1;
-            self.first_neighbour[j as usize] += 1;
-        }
-        for k in 1..n {
-            self.first_neighbour[k] += self.first_neighbour[k - 1];
-        }
-        let total = if n == 0 {
-            0
-        } else {
-            self.first_neighbour[n - 1]
-        };
-        self.first_neighbour[n] = total;
-        self.neighbours.clear();
-        self.neighbours.resize(total as usize, 0);
-        for &(i, j) in &self.pairs {
-            for (a, b) in [(i, j), (j, i)] {
-                let slot = &mut self.first_neighbour[a as usize];
-                *slot -= 1;
-                self.neighbours[*slot as usize] = b;
-            }
-        }
-        // A row keeps the broadphase's order: `first_contact` breaks ties between neighbours
-        // by index, so the result does not depend on it (and sorting every row cost a
-        // mispredicted branch or two per circle in a dense crowd).
+    /// The circles each circle may meet: pairs of different bodies that collide by filter
+    /// and whose boxes overlap. A row is read only for a moving body, so the rows may also
+    /// pair bodies that both stay.
+    fn find_neighbours(&mut self, config: &ResolveConfig, cell: f32) {
+        let (circles, filter) = (&self.circles, &self.filter);
+        self.neighbours.update(
+            config.broadphase,
+            &self.boxes,
+            cell,
+            |i| circles[i as usize].body as usize,
+            |a, b| filter[a].collides(&filter[b]),
+        );
     }
 
     /// Moves body `b` by its proposed move with collide and slide, updating its position.
@@ -259,19 +221,11 @@ impl Scratch {
         let circles = self.first_circle[bi] as usize..self.first_circle[bi + 1] as usize;
         // The walls near each circle, once: the reach box holds every position the body
         // can take this step (slides never lengthen the remainder).
-        self.walls.clear();
         self.wall_ranges.clear();
         let mask = self.filter[bi].walls;
         for c in circles.clone() {
-            let start = self.walls.len() as u32;
-            let reach = &self.boxes[c];
-            if !mask.is_empty() && !self.free[c].is_some_and(|area| area.holds(map, reach)) {
-                map.capsules_in(reach, mask, &mut self.walls);
-                if self.walls.len() as u32 == start {
-                    self.free[c] = map.free_area_around(reach);
-                }
-            }
-            self.wall_ranges.push((start, self.walls.len() as u32));
+            let range = self.near.around(c, &self.boxes[c], mask, gap, map);
+            self.wall_ranges.push(range);
         }
         let mut remaining = self.motion[bi];
         for pass in 0..=config.passes {
@@ -325,8 +279,7 @@ impl Scratch {
             .enumerate()
         {
             let center = origin + c.offset;
-            let (ws, we) = self.wall_ranges[k];
-            for wall in &self.walls[ws as usize..we as usize] {
+            for wall in self.near.walls(self.wall_ranges[k]) {
                 let distance2 = wall.segment.distance_squared_to(center);
                 let radius = band(distance2, c.radius, gap);
                 if distance2 > (radius + reach) * (radius + reach) {
@@ -342,8 +295,7 @@ impl Scratch {
                 }
             }
             let ci = first + k;
-            let neighbours = &self.neighbours
-                [self.first_neighbour[ci] as usize..self.first_neighbour[ci + 1] as usize];
+            let neighbours = self.neighbours.row(ci);
             // The nearest neighbour contact, lowest circle index first on equal `t` (the
             // row is in broadphase order).
             let mut nearest: Option<(SweepHit, u32)> = None;

@@ -95,6 +95,19 @@ impl Aabb {
         p.cmpge(self.min).all() && p.cmple(self.max).all()
     }
 
+    /// True when `other` lies in the box, boundary included (false with a NaN).
+    ///
+    /// ```
+    /// # use tileslide::{Aabb, Vec2};
+    /// let outer = Aabb::from_corners(Vec2::ZERO, Vec2::splat(2.0));
+    /// assert!(outer.contains(&Aabb::from_corners(Vec2::splat(0.5), Vec2::splat(2.0))));
+    /// assert!(!outer.contains(&Aabb::from_corners(Vec2::splat(0.5), Vec2::splat(2.5))));
+    /// ```
+    #[must_use]
+    pub fn contains(&self, other: &Aabb) -> bool {
+        other.min.cmpge(self.min).all() && other.max.cmple(self.max).all()
+    }
+
     /// True when the two closed boxes share at least one point (touching counts).
     #[must_use]
     pub fn overlaps(&self, other: &Aabb) -> bool {

@@ -1,0 +1,151 @@
+//! The walls near each circle, kept from one step to the next.
+//!
+//! A circle sweeps only against the walls its reach box (everywhere it can be during the
+//! step) touches. Gathering them reads a few cells' kind bytes, segment indices and
+//! segments, scattered over the map: about a fifth of a crowd step when done for every
+//! moving circle every step. But a circle moves a fraction of a cell per step, so the
+//! walls are gathered once for its reach box grown by a margin ([`MARGIN`]) and kept while
+//! the reach box stays inside that larger box and the map keeps its revision, the same
+//! bargain as Verlet neighbour lists (Verlet 1967) make for particle pairs.
+//!
+//! The kept list gives exactly the contacts the exact list would: it holds, in the same
+//! relative order (temporary segments, then cells row by row), every wall of the larger box,
+//! so every wall the reach box touches; and a wall outside the reach box is farther from the
+//! circle than its move plus its contact radius, which the resolver's reach test skips
+//! before any sweep. Walls are kept only if they touch the larger box itself, not merely a
+//! cell it touches, so the list is no longer than a fresh gather's.
+//!
+//! Where a circle's larger box holds no wall at all, a [`FreeArea`] (a ring of free cells
+//! around its reach box) is kept instead when there is one: it stays valid for longer.
+
+use crate::geometry::Aabb;
+use crate::query::{Capsule, FreeArea};
+use crate::tiles::{SegmentFlags, TileMap};
+
+/// How far the box walls are gathered for reaches past a circle's reach box, in cells: a
+/// circle moving 0.05 cells a step gathers again about every fifth step.
+const MARGIN: f32 = 0.25;
+
+/// What is known about the walls near one circle.
+#[derive(Clone, Copy, Debug, Default)]
+enum Near {
+    /// Nothing.
+    #[default]
+    Unknown,
+    /// No wall with any flags in this area of the map.
+    Free(FreeArea),
+    /// The walls with one of `mask`'s flags that touch `area`, at `start..end` of the pool,
+    /// while the map has revision `revision`.
+    Listed {
+        area: Aabb,
+        revision: u64,
+        mask: SegmentFlags,
+        start: u32,
+        end: u32,
+    },
+}
+
+/// The walls near every circle, in one pool.
+#[derive(Clone, Debug, Default)]
+pub(super) struct NearWalls {
+    near: Vec<Near>,
+    pool: Vec<Capsule>,
+    /// Capsules of the pool still listed by some circle.
+    live: usize,
+}
+
+impl NearWalls {
+    /// Makes room for `n` circles and drops the pool's unlisted capsules once they
+    /// outnumber the listed ones. Call before a resolve.
+    pub fn begin(&mut self, n: usize) {
+        self.near.resize(n, Near::Unknown);
+        self.live = self
+            .near
+            .iter()
+            .map(|near| match near {
+                Near::Listed { start, end, .. } => (end - start) as usize,
+                _ => 0,
+            })
+            .sum();
+        if self.pool.len() > 2 * self.live + 4096 {
+            let mut pool = Vec::with_capacity(2 * self.live + 4096);
+            for near in &mut self.near {
+                if let Near::Listed { start, end, .. } = near {
+                    let from = pool.len() as u32;
+                    pool.extend_from_slice(&self.pool[*start as usize..*end as usize]);
+                    (*start, *end) = (from, pool.len() as u32);
+                }
+            }
+            self.pool = pool;
+        }
+    }
+
+    /// The walls with one of `mask`'s flags near circle `c`, whose reach box is `reach`:
+    /// a superset of the walls `reach` touches, in the same order (see the module doc), as
+    /// a range of [`Self::walls`]. `slack` is how far inside its larger box a reach box
+    /// must stay for a kept list to serve (the resolver's gap: room for rounding).
+    pub fn around(
+        &mut self,
+        c: usize,
+        reach: &Aabb,
+        mask: SegmentFlags,
+        slack: f32,
+        map: &TileMap,
+    ) -> (u32, u32) {
+        let empty = (0, 0);
+        if mask.is_empty() {
+            return empty;
+        }
+        match self.near[c] {
+            Near::Free(area) if area.holds(map, reach) => return empty,
+            Near::Listed {
+                area,
+                revision,
+                mask: kept,
+                start,
+                end,
+            } if revision == map.revision()
+                && kept == mask
+                && area.contains(&reach.expand(slack)) =>
+            {
+                return (start, end);
+            }
+            Near::Listed { start, end, .. } => self.live -= (end - start) as usize,
+            _ => {}
+        }
+        let area = reach.expand(MARGIN * map.cell_size().min_element());
+        let start = self.pool.len();
+        map.capsules_in(&area, mask, &mut self.pool);
+        // Only the walls that touch the area itself (a cell it touches may reach beyond).
+        let mut kept = start;
+        for k in start..self.pool.len() {
+            if area.overlaps_segment(&self.pool[k].segment) {
+                self.pool[kept] = self.pool[k];
+                kept += 1;
+            }
+        }
+        self.pool.truncate(kept);
+        if kept == start
+            && let Some(free) = map.free_area_around(reach)
+        {
+            self.near[c] = Near::Free(free);
+            return empty;
+        }
+        self.live += kept - start;
+        let (start, end) = (start as u32, kept as u32);
+        self.near[c] = Near::Listed {
+            area,
+            revision: map.revision(),
+            mask,
+            start,
+            end,
+        };
+        (start, end)
+    }
+
+    /// The walls at a range [`Self::around`] returned.
+    #[inline]
+    pub fn walls(&self, (start, end): (u32, u32)) -> &[Capsule] {
+        &self.pool[start as usize..end as usize]
+    }
+}
