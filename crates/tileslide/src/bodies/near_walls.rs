@@ -14,12 +14,9 @@
 //! circle than its move plus its contact radius, which the resolver's reach test skips
 //! before any sweep. Walls are kept only if they touch the larger box itself, not merely a
 //! cell it touches, so the list is no longer than a fresh gather's.
-//!
-//! Where a circle's larger box holds no wall at all, a [`FreeArea`] (a ring of free cells
-//! around its reach box) is kept instead when there is one: it stays valid for longer.
 
 use crate::geometry::Aabb;
-use crate::query::{Capsule, FreeArea};
+use crate::query::Capsule;
 use crate::tiles::{SegmentFlags, TileMap};
 
 /// How far the box walls are gathered for reaches past a circle's reach box, in cells: a
@@ -32,8 +29,6 @@ enum Near {
     /// Nothing.
     #[default]
     Unknown,
-    /// No wall with any flags in this area of the map.
-    Free(FreeArea),
     /// The walls with one of `mask`'s flags that touch `area`, at `start..end` of the pool,
     /// while the map has revision `revision`.
     Listed {
@@ -92,12 +87,10 @@ impl NearWalls {
         slack: f32,
         map: &TileMap,
     ) -> (u32, u32) {
-        let empty = (0, 0);
         if mask.is_empty() {
-            return empty;
+            return (0, 0);
         }
         match self.near[c] {
-            Near::Free(area) if area.holds(map, reach) => return empty,
             Near::Listed {
                 area,
                 revision,
@@ -111,7 +104,7 @@ impl NearWalls {
                 return (start, end);
             }
             Near::Listed { start, end, .. } => self.live -= (end - start) as usize,
-            _ => {}
+            Near::Unknown => {}
         }
         let area = reach.expand(MARGIN * map.cell_size().min_element());
         let start = self.pool.len();
@@ -125,12 +118,6 @@ impl NearWalls {
             }
         }
         self.pool.truncate(kept);
-        if kept == start
-            && let Some(free) = map.free_area_around(reach)
-        {
-            self.near[c] = Near::Free(free);
-            return empty;
-        }
         self.live += kept - start;
         let (start, end) = (start as u32, kept as u32);
         self.near[c] = Near::Listed {

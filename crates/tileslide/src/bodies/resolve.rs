@@ -93,7 +93,13 @@ pub(crate) struct Scratch {
     position: Vec<Vec2>,
     motion: Vec<Vec2>,
     filter: Vec<BodyFilter>,
+    /// Per body, how far its circles reach past their radius this step: its move and the
+    /// gap.
+    reach: Vec<f32>,
+    /// Per circle, its reach box.
     boxes: Vec<Aabb>,
+    /// Whether `circles` and `first_circle` still describe the bodies (see `load`).
+    shapes_known: bool,
     /// Per circle, the circles it may meet.
     neighbours: Neighbours,
     /// The walls near each circle, kept between steps (statements about the map, so they
@@ -149,6 +155,7 @@ impl Scratch {
     pub fn forget(&mut self) {
         self.settled.forget();
         self.neighbours.forget();
+        self.shapes_known = false;
     }
 
     /// Body `b` moved: flags the bodies whose boxes touch its own as disturbed.
@@ -164,33 +171,42 @@ impl Scratch {
 
     /// Copies the bodies into flat arrays.
     fn load(&mut self, bodies: &[&mut Body], gap: f32) {
-        self.circles.clear();
-        self.first_circle.clear();
+        // The circles change only when bodies are added or removed, which calls `forget`:
+        // otherwise they are kept, and the bodies' shapes (each a list of its own, on the
+        // heap) are not read again.
+        if !self.shapes_known || self.first_circle.len() != bodies.len() + 1 {
+            self.circles.clear();
+            self.first_circle.clear();
+            for (b, body) in bodies.iter().enumerate() {
+                self.first_circle.push(self.circles.len() as u32);
+                self.circles
+                    .extend(body.shape.circles().iter().map(|c| WorkCircle {
+                        body: b as u32,
+                        offset: c.center,
+                        radius: c.radius,
+                    }));
+            }
+            self.first_circle.push(self.circles.len() as u32);
+            self.shapes_known = true;
+        }
         self.position.clear();
         self.motion.clear();
         self.filter.clear();
-        self.boxes.clear();
-        for (b, body) in bodies.iter().enumerate() {
-            self.first_circle.push(self.circles.len() as u32);
+        self.reach.clear();
+        for body in bodies {
             self.position.push(body.position);
             self.motion.push(body.proposed);
             self.filter.push(body.filter);
             // Everywhere a circle can be during the step: its whole move, grown by the
             // radius and the gap.
-            let reach = body.proposed.length() + gap;
-            for c in body.shape.circles() {
-                self.circles.push(WorkCircle {
-                    body: b as u32,
-                    offset: c.center,
-                    radius: c.radius,
-                });
-                self.boxes.push(Aabb::from_center(
-                    body.position + c.center,
-                    Vec2::splat(c.radius + reach),
-                ));
-            }
+            self.reach.push(body.proposed.length() + gap);
         }
-        self.first_circle.push(self.circles.len() as u32);
+        self.boxes.clear();
+        let (position, reach) = (&self.position, &self.reach);
+        self.boxes.extend(self.circles.iter().map(|c| {
+            let b = c.body as usize;
+            Aabb::from_center(position[b] + c.offset, Vec2::splat(c.radius + reach[b]))
+        }));
         self.near.begin(self.circles.len());
     }
 

@@ -42,7 +42,14 @@ impl Aabb {
     /// The box centred on `center` with half extents `half`.
     #[must_use]
     pub fn from_center(center: Vec2, half: Vec2) -> Self {
-        Self::from_corners(center - half, center + half)
+        let (min, max) = (center - half, center + half);
+        // The common case in one comparison (false with a NaN); the resolver builds a box
+        // per circle per step.
+        if min.cmple(max).all() {
+            Self { min, max }
+        } else {
+            Self::from_corners(min, max)
+        }
     }
 
     /// The box grown by `margin` on every side.

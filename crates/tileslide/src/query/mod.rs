@@ -4,7 +4,6 @@
 mod circle_cast;
 mod fast_walk;
 mod filter;
-mod free_area;
 mod hit;
 mod overlap;
 mod ray_cast;
@@ -14,6 +13,5 @@ mod traversal;
 pub use circle_cast::CircleHit;
 pub(crate) use circle_cast::{Capsule, Wall};
 pub use filter::{Faces, RayFilter};
-pub(crate) use free_area::FreeArea;
 pub use hit::{RayHit, SegmentSource};
 pub use overlap::SegmentOverlap;
