@@ -138,3 +138,99 @@ impl NearWalls {
         &self.pool[start as usize..end as usize]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::ascii;
+    use glam::Vec2;
+
+    /// A 40 × 40 room with a pillar in every other cell of every fourth row.
+    fn pillars() -> TileMap {
+        let text: Vec<String> = (0..40)
+            .map(|y| {
+                (0..40)
+                    .map(|x| {
+                        let border = x == 0 || y == 0 || x == 39 || y == 39;
+                        if border || (y % 4 == 2 && x % 2 == 0) {
+                            '#'
+                        } else {
+                            '.'
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        ascii::parse(&text.join("\n"), "pillars.txt", 1.0).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// What a fresh gather lists for `reach`: every wall of `mask` touching the box grown
+    /// by the margin, in the map's order.
+    fn fresh(map: &TileMap, reach: &Aabb, mask: SegmentFlags) -> Vec<Capsule> {
+        let mut near = NearWalls::default();
+        near.begin(1);
+        let range = near.around(0, reach, mask, 0.0, map);
+        near.walls(range).to_vec()
+    }
+
+    #[test]
+    fn kept_lists_hold_every_wall_a_reach_box_touches_through_compactions() {
+        let map = pillars();
+        let mask = SegmentFlags::SOLID;
+        let n = 1500;
+        let mut near = NearWalls::default();
+        let mut compacted = false;
+        for round in 0..40 {
+            let before = near.pool.len();
+            near.begin(n);
+            compacted |= near.pool.len() < before;
+            for c in 0..n {
+                // Circles drift a little each round, so lists are both kept and renewed.
+                let x = 1.5 + (c % 37) as f32 + 0.07 * round as f32 * ((c % 3) as f32 - 1.0);
+                let y = 1.5 + (c / 37) as f32 * 0.9 + 0.05 * round as f32;
+                let reach = Aabb::from_center(Vec2::new(x, y % 37.0 + 1.0), Vec2::splat(0.4));
+                let range = near.around(c, &reach, mask, 0.0, &map);
+                let kept = near.walls(range);
+                // Everything the reach box touches is there, in the map's order.
+                let wanted: Vec<Capsule> = fresh(&map, &reach, mask)
+                    .into_iter()
+                    .filter(|w| reach.overlaps_segment(&w.segment))
+                    .collect();
+                let mut it = kept.iter();
+                for w in &wanted {
+                    assert!(
+                        it.any(|k| k == w),
+                        "round {round}, circle {c}: {w:?} missing"
+                    );
+                }
+            }
+        }
+        assert!(compacted, "the pool was never compacted");
+    }
+
+    #[test]
+    fn an_edit_or_another_mask_renews_the_list() {
+        let mut map = pillars();
+        let mut near = NearWalls::default();
+        near.begin(1);
+        let reach = Aabb::from_center(Vec2::new(3.5, 4.5), Vec2::splat(0.4));
+        let first = near.around(0, &reach, SegmentFlags::SOLID, 0.0, &map);
+        assert!(near.walls(first).is_empty(), "rows 3 to 5 are open floor");
+        assert_eq!(
+            near.around(0, &reach, SegmentFlags::SOLID, 0.0, &map),
+            first
+        );
+        map.set_tile(
+            crate::Cell::new(4, 4),
+            ascii::tile_for_char('#').unwrap_or_else(|()| panic!("no tile for '#'")),
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        let after = near.around(0, &reach, SegmentFlags::SOLID, 0.0, &map);
+        assert!(
+            !near.walls(after).is_empty(),
+            "the new block's face is within reach"
+        );
+        let other = near.around(0, &reach, SegmentFlags::ONE_WAY, 0.0, &map);
+        assert!(near.walls(other).is_empty(), "no one-way segments here");
+    }
+}

@@ -114,3 +114,86 @@ impl Neighbours {
         &self.list[self.first[c] as usize..self.first[c + 1] as usize]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec2;
+
+    /// Boxes drifting a little each call, some jumping: the rows always hold exactly the
+    /// overlapping pairs of different bodies (circles 2k and 2k + 1 share a body), each in
+    /// both rows, whichever broadphase found the candidates.
+    #[test]
+    fn rows_are_exactly_the_overlapping_pairs_call_after_call() {
+        for kind in [Broadphase::UniformGrid, Broadphase::SweepAndPrune] {
+            let mut state = 0x1234_5678_9abc_def0_u64;
+            let mut rand = || {
+                state = state
+                    .wrapping_mul(6_364_136_223_846_793_005)
+                    .wrapping_add(1_442_695_040_888_963_407);
+                (state >> 40) as f32 / (1u64 << 24) as f32
+            };
+            let n = 400;
+            let mut centres: Vec<Vec2> = (0..n)
+                .map(|_| Vec2::new(rand() * 20.0, rand() * 20.0))
+                .collect();
+            let mut neighbours = Neighbours::default();
+            let mut rebuilt = 0;
+            for call in 0..30 {
+                for (k, c) in centres.iter_mut().enumerate() {
+                    let jump = call % 10 == 9 && k % 97 == 0;
+                    *c += Vec2::new(rand() - 0.5, rand() - 0.5) * if jump { 4.0 } else { 0.08 };
+                }
+                let boxes: Vec<Aabb> = centres
+                    .iter()
+                    .map(|&c| Aabb::from_center(c, Vec2::splat(0.4)))
+                    .collect();
+                let grown_before = neighbours.grown.clone();
+                neighbours.update(kind, &boxes, 1.0, |i| i as usize / 2, |_, _| true);
+                rebuilt += usize::from(neighbours.grown != grown_before);
+                for i in 0..n {
+                    let mut row: Vec<u32> = neighbours.row(i).to_vec();
+                    row.sort_unstable();
+                    let expected: Vec<u32> = (0..n as u32)
+                        .filter(|&j| {
+                            j as usize / 2 != i / 2 && boxes[i].overlaps(&boxes[j as usize])
+                        })
+                        .collect();
+                    assert_eq!(row, expected, "{kind:?}, call {call}, circle {i}");
+                }
+            }
+            // Both paths ran: candidates found again, and kept.
+            assert!(
+                rebuilt > 1 && rebuilt < 30,
+                "{kind:?}: found {rebuilt} times in 30"
+            );
+        }
+    }
+
+    #[test]
+    fn forgetting_finds_the_candidates_again() {
+        let boxes = [
+            Aabb::from_center(Vec2::ZERO, Vec2::splat(0.5)),
+            Aabb::from_center(Vec2::new(0.8, 0.0), Vec2::splat(0.5)),
+        ];
+        let mut neighbours = Neighbours::default();
+        neighbours.update(
+            Broadphase::UniformGrid,
+            &boxes,
+            1.0,
+            |i| i as usize,
+            |_, _| true,
+        );
+        assert_eq!(neighbours.row(0), [1]);
+        // The same boxes, but the bodies no longer collide: only a forgotten list knows.
+        neighbours.forget();
+        neighbours.update(
+            Broadphase::UniformGrid,
+            &boxes,
+            1.0,
+            |i| i as usize,
+            |_, _| false,
+        );
+        assert!(neighbours.row(0).is_empty());
+    }
+}
