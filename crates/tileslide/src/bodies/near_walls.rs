@@ -13,7 +13,7 @@
 //! so every wall the reach box touches; and a wall outside the reach box is farther from the
 //! circle than its move plus its contact radius, which the resolver's reach test skips
 //! before any sweep. Walls are kept only if they touch the larger box itself, not merely a
-//! cell it touches, so the list is no longer than a fresh gather's.
+//! cell it touches, which keeps the lists short.
 
 use crate::geometry::Aabb;
 use crate::query::Capsule;
@@ -47,8 +47,6 @@ enum Near {
 pub(super) struct NearWalls {
     near: Vec<Near>,
     pool: Vec<Capsule>,
-    /// Capsules of the pool still listed by some circle.
-    live: usize,
 }
 
 impl NearWalls {
@@ -56,7 +54,8 @@ impl NearWalls {
     /// outnumber the listed ones. Call before a resolve.
     pub fn begin(&mut self, n: usize) {
         self.near.resize(n, Near::Unknown);
-        self.live = self
+        // Capsules of the pool still listed by some circle.
+        let live: usize = self
             .near
             .iter()
             .map(|near| match near {
@@ -64,8 +63,8 @@ impl NearWalls {
                 _ => 0,
             })
             .sum();
-        if self.pool.len() > 2 * self.live + 4096 {
-            let mut pool = Vec::with_capacity(2 * self.live + 4096);
+        if self.pool.len() > 2 * live + 4096 {
+            let mut pool = Vec::with_capacity(2 * live + 4096);
             for near in &mut self.near {
                 if let Near::Listed { start, end, .. } = near {
                     let from = pool.len() as u32;
@@ -105,8 +104,7 @@ impl NearWalls {
             {
                 return (start, end);
             }
-            Near::Listed { start, end, .. } => self.live -= (end - start) as usize,
-            Near::Unknown => {}
+            _ => {}
         }
         let area = reach.expand(MARGIN * map.cell_size().min_element());
         let start = self.pool.len();
@@ -120,7 +118,6 @@ impl NearWalls {
             }
         }
         self.pool.truncate(kept);
-        self.live += kept - start;
         let (start, end) = (start as u32, kept as u32);
         self.near[c] = Near::Listed {
             area,

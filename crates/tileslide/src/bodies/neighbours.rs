@@ -38,7 +38,7 @@ pub(super) struct Neighbours {
 }
 
 impl Neighbours {
-    /// Drops the rows: the circles changed (added, removed, filters).
+    /// Drops the candidates: the circles changed (added, removed, filters).
     pub fn forget(&mut self) {
         self.found_with = None;
     }
