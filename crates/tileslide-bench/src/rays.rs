@@ -2,6 +2,11 @@
 //! by tileslide and, in the same process on the same rays, by parry2d's `Voxels` and
 //! `Polyline` shapes.
 //!
+//! tileslide casts the rays as a game with many rays would, with `TileMap::cast_rays`, in
+//! blocks of [`RAYS_PER_CALL`]; a fourth entry, `tileslide-single`, casts them one
+//! `cast_ray` call at a time (the answers are the same bit for bit). parry2d has no call
+//! for many rays: it casts one at a time.
+//!
 //! Each engine casts every ray once untimed to record its answers (hits, mean hit fraction,
 //! disagreements with tileslide), then `passes` timed passes are run, interleaving the
 //! engines so that machine noise falls on all of them alike; throughput is the median pass.
@@ -9,7 +14,7 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use tileslide::{Ray, RayFilter, TileMap};
+use tileslide::{Ray, RayFilter, RayHit, TileMap};
 use tileslide_scenes::{Scene, SceneRay, TileMapError, scene_rays};
 
 use crate::peers::{ParryPolyline, ParryVoxels};
@@ -17,6 +22,10 @@ use crate::peers::{ParryPolyline, ParryVoxels};
 /// Two answers disagree when their hit distances differ by more than this many cells (or
 /// one hits and the other does not).
 pub const DISAGREEMENT_TOLERANCE: f32 = 1e-3;
+
+/// Rays per `cast_rays` call in tileslide's timed passes: a frame's worth, so that the
+/// answers stay in cache as a game's would.
+pub const RAYS_PER_CALL: usize = 1024;
 
 /// One engine's cast: ray index → hit distance in cells.
 type CastFn<'a> = dyn Fn(usize) -> Option<f32> + 'a;
@@ -45,7 +54,8 @@ impl Default for RaysConfig {
 /// One engine's figures.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EngineResult {
-    /// Engine name (`tileslide`, `parry2d-voxels`, `parry2d-polyline`).
+    /// Engine name (`tileslide`, `parry2d-voxels`, `parry2d-polyline`,
+    /// `tileslide-single`).
     pub name: &'static str,
     /// Median throughput over the timed passes, in millions of rays per second.
     pub mrays_per_s: f64,
@@ -72,7 +82,8 @@ pub struct RaysReport {
     pub rays: usize,
     /// Timed passes per engine.
     pub passes: usize,
-    /// One entry per engine, tileslide first.
+    /// One entry per engine: tileslide, the two parry2d shapes, then tileslide one ray a
+    /// call.
     pub results: Vec<EngineResult>,
 }
 
@@ -128,12 +139,19 @@ pub fn run_rays(
         })
         .collect();
 
-    let engines: [(&'static str, &CastFn); 3] = [
-        ("tileslide", &|i| {
-            cast_tileslide(&map, ours[i]).map(|t| t * rays[i].length)
-        }),
+    let batch: Vec<Option<f32>> = map
+        .cast_rays(&ours, &RayFilter::default())
+        .iter()
+        .zip(&rays)
+        .map(|(hit, ray)| hit.map(|h| h.t * ray.length))
+        .collect();
+    let engines: [(&'static str, &CastFn); 4] = [
+        ("tileslide", &|i| batch[i]),
         (ParryVoxels::NAME, &|i| voxels.cast(&rays[i])),
         (ParryPolyline::NAME, &|i| polyline.cast(&rays[i])),
+        ("tileslide-single", &|i| {
+            cast_tileslide(&map, ours[i]).map(|t| t * rays[i].length)
+        }),
     ];
     let answers: Vec<Vec<Option<f32>>> = engines
         .iter()
@@ -144,13 +162,15 @@ pub fn run_rays(
     // closure indirection above is not part of what is measured.
     let total = config.passes * engines.len();
     let mut times = vec![Vec::with_capacity(config.passes); engines.len()];
+    let mut hits = Vec::with_capacity(RAYS_PER_CALL);
     for pass in 0..config.passes {
         for (engine, slot) in times.iter_mut().enumerate() {
             let start = Instant::now();
             let checksum = match engine {
-                0 => pass_tileslide(&map, &ours),
+                0 => pass_tileslide(&map, &ours, &mut hits),
                 1 => pass_peer(&rays, |r| voxels.cast(r)),
-                _ => pass_peer(&rays, |r| polyline.cast(r)),
+                2 => pass_peer(&rays, |r| polyline.cast(r)),
+                _ => pass_tileslide_single(&map, &ours),
             };
             slot.push(start.elapsed().as_secs_f64());
             black_box(checksum);
@@ -179,7 +199,18 @@ fn cast_tileslide(map: &TileMap, ray: Ray) -> Option<f32> {
 }
 
 #[inline(never)]
-fn pass_tileslide(map: &TileMap, rays: &[Ray]) -> f32 {
+fn pass_tileslide(map: &TileMap, rays: &[Ray], hits: &mut Vec<Option<RayHit>>) -> f32 {
+    let filter = RayFilter::default();
+    let mut sum = 0.0;
+    for block in rays.chunks(RAYS_PER_CALL) {
+        map.cast_rays_into(block, &filter, hits);
+        sum += hits.iter().flatten().map(|h| h.t).sum::<f32>();
+    }
+    sum
+}
+
+#[inline(never)]
+fn pass_tileslide_single(map: &TileMap, rays: &[Ray]) -> f32 {
     let filter = RayFilter::default();
     let mut sum = 0.0;
     for ray in rays {
@@ -258,9 +289,20 @@ mod tests {
         .unwrap();
         assert_eq!(report.fingerprint, "a36c9fd56f2ba422");
         let names: Vec<_> = report.results.iter().map(|r| r.name).collect();
-        assert_eq!(names, ["tileslide", "parry2d-voxels", "parry2d-polyline"]);
+        assert_eq!(
+            names,
+            [
+                "tileslide",
+                "parry2d-voxels",
+                "parry2d-polyline",
+                "tileslide-single"
+            ]
+        );
         let ours = &report.results[0];
         assert_eq!(ours.disagreements, 0);
+        // One ray a call gives the same answers.
+        assert_eq!(report.results[3].disagreements, 0);
+        assert_eq!(report.results[3].hits, ours.hits);
         assert!(ours.hits > 4_000 && ours.mean_t > 0.0 && ours.mean_t <= 1.0);
         assert_eq!(report.results[1].disagreements, 0);
         assert_eq!(report.results[1].hits, ours.hits);

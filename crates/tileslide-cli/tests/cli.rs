@@ -229,13 +229,22 @@ fn bench_rays_json_has_every_engine_and_the_fingerprint() {
         .iter()
         .map(|r| r["name"].as_str().unwrap())
         .collect();
-    assert_eq!(names, ["tileslide", "parry2d-voxels", "parry2d-polyline"]);
+    assert_eq!(
+        names,
+        [
+            "tileslide",
+            "parry2d-voxels",
+            "parry2d-polyline",
+            "tileslide-single"
+        ]
+    );
     for r in v["results"].as_array().unwrap() {
         assert!(r["mrays_per_s"].as_f64().unwrap() > 0.0);
         assert!(r["hits"].as_u64().unwrap() > 1500);
     }
     assert_eq!(v["results"][0]["disagreements"], 0);
     assert_eq!(v["results"][1]["disagreements"], 0);
+    assert_eq!(v["results"][3]["disagreements"], 0);
 }
 
 #[test]

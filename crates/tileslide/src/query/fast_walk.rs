@@ -65,10 +65,12 @@ pub(crate) struct WalkStart {
     /// ...and the ray fraction where it is crossed.
     pub tx: f32,
     pub ty: f32,
-    /// The start cell's index, and the index steps along x and y.
-    pub index: usize,
-    pub index_step_x: isize,
-    pub index_step_y: isize,
+    /// The start cell's index, and the index steps along x and y (a map has fewer than
+    /// 2³¹ cells: `MAX_CELLS`). All fields are 32 bits wide, so that rays set up side by
+    /// side fill SIMD lanes evenly.
+    pub index: i32,
+    pub index_step_x: i32,
+    pub index_step_y: i32,
     /// ±1: the grid-line steps along x and y.
     pub step_x: i32,
     pub step_y: i32,
@@ -83,32 +85,38 @@ impl WalkStart {
     /// line, or it is parallel to an axis.
     #[inline(always)]
     pub fn new(ray: &GridRay, limit: f32) -> Option<Self> {
+        let (fits, start) = Self::lane(ray, limit);
+        fits.then_some(start)
+    }
+
+    /// [`new`](Self::new) without a branch, for rays walked side by side in SIMD lanes
+    /// (`ray_batch`): whether the fast walk fits the ray, and its start, which is
+    /// meaningless (but computed without overflow or panic, with `index` 0) when it does
+    /// not fit. Both forms share this arithmetic, so a ray's walk is the same bit for bit
+    /// whichever form started it.
+    #[inline(always)]
+    pub fn lane(ray: &GridRay, limit: f32) -> (bool, Self) {
         let (o, d) = (ray.origin, ray.delta);
         let (w, h) = (ray.width as i32, ray.height as i32);
-        let inside = o.x > 0.0 && o.y > 0.0 && o.x < w as f32 && o.y < h as f32;
-        if !(inside && d.x != 0.0 && d.y != 0.0) {
-            return None;
-        }
-        // Positive, so truncation is floor.
-        let (col, row) = (o.x as i32, o.y as i32);
+        let inside = (o.x > 0.0) & (o.y > 0.0) & (o.x < w as f32) & (o.y < h as f32);
+        let (col, row) = (floor_off_line(o.x), floor_off_line(o.y));
         // A start within the tolerance of a grid line touches the cells on its other side.
+        // (This also rejects every start whose `floor_off_line` is not its floor.)
         let (fx, fy) = (o.x - col as f32, o.y - row as f32);
-        let near_line = |f: f32| f <= TOUCH_TOLERANCE || f >= 1.0 - TOUCH_TOLERANCE;
-        if near_line(fx) || near_line(fy) {
-            return None;
-        }
+        let off_line = |f: f32| (f > TOUCH_TOLERANCE) & (f < 1.0 - TOUCH_TOLERANCE);
+        let fits = inside & (d.x != 0.0) & (d.y != 0.0) & off_line(fx) & off_line(fy);
         let step_x: i32 = if d.x > 0.0 { 1 } else { -1 };
         let step_y: i32 = if d.y > 0.0 { 1 } else { -1 };
         let inv = d.recip();
-        // (Comparisons rather than `f32::min`, whose NaN handling costs instructions: no
-        // NaN gets here.)
+        // (Comparisons rather than `f32::min`, whose NaN handling costs instructions: a NaN
+        // here only ever reaches a ray that does not fit.)
         let (ax, ay) = (inv.x.abs(), inv.y.abs());
         let tol_t = TOUCH_TOLERANCE * if ax < ay { ax } else { ay };
         // The next grid line on each axis, and the ray fraction there (computed from the
         // origin each time, so no error accumulates). Kept as integers: a float-to-int
         // conversion costs several instructions in Rust (it saturates), the other way one.
-        let line_x = col + (step_x > 0) as i32;
-        let line_y = row + (step_y > 0) as i32;
+        let line_x = col.wrapping_add((step_x > 0) as i32);
+        let line_y = row.wrapping_add((step_y > 0) as i32);
         // The walk ends when the next cell starts past `limit` or outside the map. The
         // second happens at `t_leave`, computed by the same formula as the crossings at the
         // map's last grid line; one comparison with `t_stop` checks both: stop when
@@ -119,12 +127,13 @@ impl WalkStart {
         let t_leave = if leave_x < leave_y { leave_x } else { leave_y };
         let limit = limit + tol_t;
         let t_stop = if t_leave <= limit {
-            // The largest float below `t_leave` (> 0: the origin is strictly inside).
-            f32::from_bits(t_leave.to_bits() - 1)
+            // The largest float below `t_leave` (> 0 when the origin is strictly inside).
+            f32::from_bits(t_leave.to_bits().wrapping_sub(1))
         } else {
             limit
         };
-        Some(Self {
+        let index = row.wrapping_mul(w).wrapping_add(col);
+        let start = Self {
             o,
             inv,
             tol_t,
@@ -133,15 +142,31 @@ impl WalkStart {
             line_y,
             tx: (line_x as f32 - o.x) * inv.x,
             ty: (line_y as f32 - o.y) * inv.y,
-            index: (row * w + col) as usize,
-            index_step_x: step_x as isize,
-            index_step_y: step_y as isize * w as isize,
+            index: if fits { index } else { 0 },
+            index_step_x: step_x,
+            index_step_y: step_y.wrapping_mul(w),
             step_x,
             step_y,
             enter_x: if step_x > 0 { FACE_MIN_X } else { FACE_MAX_X },
             enter_y: if step_y > 0 { FACE_MIN_Y } else { FACE_MAX_Y },
-        })
+        };
+        (fits, start)
     }
+}
+
+/// `x.floor()` as an integer for every `x` in `[0, 2²²)` at least [`TOUCH_TOLERANCE`] from
+/// an integer, and for anything else some integer without panic or overflow (the caller's
+/// `fits` test rejects those starts anyway: their fraction `x − floor` comes out within the
+/// tolerance of 0 or 1, or the start lies outside the map).
+///
+/// Rounding `x − ½` to an integer by adding `1.5 · 2²³` (the float's own rounding does
+/// it) costs three instructions, and as many in SIMD lanes; Rust's `as i32` saturates and
+/// maps NaN to 0, which takes about ten, and more than twice that in lanes.
+#[inline(always)]
+fn floor_off_line(x: f32) -> i32 {
+    const ROUND: f32 = 12_582_912.0; // 1.5 · 2²³: its ulp is 1
+    let rounded = (x - 0.5) + ROUND;
+    (rounded.to_bits() as i32).wrapping_sub(ROUND.to_bits() as i32)
 }
 
 /// Walks `ray` up to `limit`, testing general cells' segments with `test` and recording a
@@ -171,7 +196,7 @@ pub(crate) fn fast_walk(
         mut line_y,
         mut tx,
         mut ty,
-        mut index,
+        index,
         index_step_x,
         index_step_y,
         step_x,
@@ -180,6 +205,9 @@ pub(crate) fn fast_walk(
         enter_y,
     } = start;
     let kinds = data.kinds;
+    // The start cell is inside the map, so its index is not negative.
+    let mut index = index as usize;
+    let (index_step_x, index_step_y) = (index_step_x as isize, index_step_y as isize);
     // Faces decide only front-face queries that see solid segments; otherwise face cells
     // are tested like general ones.
     let face_mask: u8 = if by_faces { 0x0f } else { 0 };
@@ -255,4 +283,44 @@ fn test_cell(
         *best = Some((index, i));
     }
     *best_t <= t_exit
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn floor_off_line_is_the_floor_away_from_integers_and_never_panics() {
+        // Fractions at and just past the touch tolerance, and mid-cell, at small and large
+        // coordinates (up to 2²² − 1, where the float's ulp is half a cell).
+        for base in [0u32, 1, 2, 7, 255, 1000, 65_535, (1 << 22) - 2] {
+            for frac in [2e-4f32, 0.25, 0.5, 0.75, 0.9998] {
+                let x = base as f32 + frac;
+                let off = x - x.floor();
+                if off > TOUCH_TOLERANCE && off < 1.0 - TOUCH_TOLERANCE {
+                    assert_eq!(floor_off_line(x), x.floor() as i32, "x = {x}");
+                }
+            }
+        }
+        // Within the tolerance of an integer the result may be either neighbour, but then
+        // the start's fraction tells the caller so.
+        for x in [3.0f32, 3.00005, 2.99995, 1e6] {
+            let col = floor_off_line(x);
+            let f = x - col as f32;
+            assert!(
+                f <= TOUCH_TOLERANCE || f >= 1.0 - TOUCH_TOLERANCE,
+                "x = {x}"
+            );
+        }
+        for x in [
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            -1e30,
+            1e30,
+            f32::MAX,
+        ] {
+            let _ = floor_off_line(x);
+        }
+    }
 }

@@ -6,6 +6,7 @@ mod fast_walk;
 mod filter;
 mod hit;
 mod overlap;
+mod ray_batch;
 mod ray_cast;
 mod segment_test;
 mod traversal;

@@ -1,0 +1,195 @@
+//! Proves that `cast_rays` gives every ray exactly `cast_ray`'s answer, bit for bit, on
+//! random maps (solid squares, ramps, one-way platforms), cell sizes and origins, for
+//! batches of random rays mixed with the rays the fast walk declines (starts on grid lines
+//! and lattice points, rays along an axis, through corners, from outside the map, zero
+//! length, NaN and infinite), under every kind of filter and with temporary segments.
+//! `ray_vs_brute_force.rs` proves `cast_ray` itself right; this file ties the batch to it.
+
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use std::sync::Arc;
+
+use proptest::prelude::*;
+use tileslide::io::ascii;
+use tileslide::{
+    Faces, Owner, Ray, RayFilter, RayHit, Segment, SegmentFlags, TemporarySegment, TileMap, Vec2,
+};
+
+/// Every bit of an answer, so that `-0.0` and `0.0` (equal as floats) count as different.
+fn bits(hit: &Option<RayHit>) -> Option<(Vec<u32>, String)> {
+    hit.map(|h| {
+        let floats = [h.t, h.point.x, h.point.y, h.normal.x, h.normal.y];
+        let mut words: Vec<u32> = floats.iter().map(|f| f.to_bits()).collect();
+        words.push(h.flags.0);
+        (words, format!("{:?}", h.source))
+    })
+}
+
+fn map(width: u32, chars: &[char], cell: f32, origin: Vec2) -> TileMap {
+    let set = Arc::new(ascii::tile_set(cell).unwrap());
+    let tiles: Vec<_> = chars
+        .iter()
+        .map(|&c| ascii::tile_for_char(c).unwrap())
+        .collect();
+    let height = chars.len() as u32 / width;
+    TileMap::from_tiles(set, width, height, origin, &tiles).unwrap()
+}
+
+/// A ray in grid units: a start and an end, each either anywhere or snapped to the lattice
+/// (grid lines, corners), so that the fast walk's every exit is taken.
+fn grid_ray(width: u32, height: u32) -> impl Strategy<Value = (Vec2, Vec2)> {
+    let (w, h) = (width as f32, height as f32);
+    let point = move || {
+        (-3.0f32..w + 3.0, -3.0f32..h + 3.0, 0u8..6).prop_map(|(x, y, snap)| match snap {
+            0 => Vec2::new(x.round(), y),
+            1 => Vec2::new(x, y.round()),
+            2 => Vec2::new(x.round(), y.round()),
+            _ => Vec2::new(x, y),
+        })
+    };
+    (point(), point(), 0u8..9).prop_map(|(a, b, kind)| match kind {
+        // Along an axis, and exactly diagonal (through every corner it meets).
+        0 => (a, Vec2::new(b.x, a.y)),
+        1 => (a, Vec2::new(a.x, b.y)),
+        2 => (a, a + Vec2::splat((b.x - a.x).round())),
+        // Diagonal from a start whose fractions are equal: through the corner of every
+        // cell it crosses, where both side cells must be visited.
+        3 => {
+            let f = a.x - a.x.floor();
+            let start = Vec2::new(a.x.floor() + f, a.y.floor() + f);
+            let d = (b - a).signum() * (b - a).abs().max_element();
+            (start, start + d)
+        }
+        4 => (a, a),
+        _ => (a, b),
+    })
+}
+
+fn filter() -> impl Strategy<Value = RayFilter> {
+    (0u8..5).prop_map(|kind| match kind {
+        0 => RayFilter {
+            faces: Faces::Both,
+            ..RayFilter::default()
+        },
+        1 => RayFilter {
+            faces: Faces::Against(Vec2::new(0.3, -1.0)),
+            ..RayFilter::default()
+        },
+        2 => RayFilter {
+            mask: SegmentFlags::ONE_WAY,
+            ..RayFilter::default()
+        },
+        _ => RayFilter::default(),
+    })
+}
+
+const CELLS: [f32; 3] = [1.0, 0.5, 32.0];
+const ORIGINS: [(f32, f32); 3] = [(0.0, 0.0), (-3.5, 12.25), (0.1, -7.3)];
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn batch_answers_are_single_answers_bit_for_bit(
+        (width, chars, rays) in (1u32..=20, 1u32..=20).prop_flat_map(|(w, h)| (
+            Just(w),
+            proptest::collection::vec(
+                prop_oneof![6 => Just('.'), 6 => Just('#'), 1 => Just('/'), 1 => Just('\\'),
+                    1 => Just('=')],
+                (w * h) as usize,
+            ),
+            proptest::collection::vec(grid_ray(w, h), 0..150),
+        )),
+        cell in 0usize..CELLS.len(),
+        origin in 0usize..ORIGINS.len(),
+        filter in filter(),
+        temporary in any::<bool>(),
+    ) {
+        let (cell, origin) = (CELLS[cell], Vec2::from(ORIGINS[origin]));
+        let mut map = map(width, &chars, cell, origin);
+        if temporary {
+            map.add_temporary(TemporarySegment {
+                segment: Segment::new(origin, origin + Vec2::new(3.0, 2.0) * cell),
+                normal: Vec2::new(-2.0, 3.0).normalize(),
+                flags: SegmentFlags::SOLID,
+                owner: Owner(1),
+                velocity: Vec2::ZERO,
+            }).unwrap();
+        }
+        let rays: Vec<Ray> = rays
+            .iter()
+            .map(|&(a, b)| Ray::between(origin + a * cell, origin + b * cell))
+            .collect();
+        let batch = map.cast_rays(&rays, &filter);
+        prop_assert_eq!(batch.len(), rays.len());
+        for (ray, answer) in rays.iter().zip(&batch) {
+            let single = map.cast_ray(*ray, &filter);
+            prop_assert_eq!(bits(answer), bits(&single), "ray {:?}", ray);
+        }
+    }
+}
+
+#[test]
+fn rays_the_fast_walk_declines_get_the_single_answer() {
+    let map = ascii::parse("######\n#....#\n#.#..#\n#....#\n######", "t.txt", 1.0).unwrap();
+    let v = Vec2::new;
+    let rays = [
+        // On a grid line, through a lattice point, along an axis, from outside the map.
+        Ray::between(v(1.0, 1.5), v(7.5, 1.5)),
+        Ray::between(v(1.5, 1.5), v(7.5, 7.5)),
+        Ray::between(v(1.5, 3.5), v(1.5, 0.2)),
+        Ray::between(v(-2.0, 1.7), v(3.1, 1.9)),
+        // Zero length, NaN, infinite: no hit.
+        Ray::between(v(1.5, 1.5), v(1.5, 1.5)),
+        Ray::between(v(f32::NAN, 1.5), v(3.0, 1.5)),
+        Ray {
+            origin: v(1.5, 1.5),
+            delta: v(f32::INFINITY, 0.0),
+        },
+        // An ordinary ray, decided by the fast walk. (Every ray that ends beyond the
+        // border hits a wall.)
+        Ray::between(v(1.3, 3.6), v(9.7, 0.2)),
+    ];
+    let filter = RayFilter::default();
+    let batch = map.cast_rays(&rays, &filter);
+    for (ray, answer) in rays.iter().zip(&batch) {
+        assert_eq!(bits(answer), bits(&map.cast_ray(*ray, &filter)), "{ray:?}");
+    }
+    assert!(batch[0].is_some() && batch[1].is_some() && batch[7].is_some());
+    assert!(batch[4].is_none() && batch[5].is_none() && batch[6].is_none());
+}
+
+#[test]
+fn many_rays_fill_many_lanes_and_the_buffer_is_reused() {
+    // More rays than the lanes and the waiting groups hold, so lanes are refilled many
+    // times; then a shorter batch into the same buffer, which is cleared first.
+    let map = ascii::parse(
+        "##########\n#...#....#\n#.#....#.#\n#....#...#\n##########",
+        "t.txt",
+        1.0,
+    )
+    .unwrap();
+    let rays: Vec<Ray> = (0..5_000)
+        .map(|i| {
+            let a = i as f32 * 0.618_034 * std::f32::consts::TAU;
+            let from = Vec2::new(1.5 + (i % 7) as f32 * 0.9, 1.3 + (i % 3) as f32 * 0.8);
+            Ray {
+                origin: from,
+                delta: Vec2::new(a.cos(), a.sin()) * (1.0 + (i % 11) as f32),
+            }
+        })
+        .collect();
+    let filter = RayFilter::default();
+    let mut out = Vec::new();
+    map.cast_rays_into(&rays, &filter, &mut out);
+    assert_eq!(out.len(), rays.len());
+    let hits = out.iter().filter(|h| h.is_some()).count();
+    assert!(hits > 4_000, "{hits} hits");
+    for (ray, answer) in rays.iter().zip(&out) {
+        assert_eq!(bits(answer), bits(&map.cast_ray(*ray, &filter)));
+    }
+    map.cast_rays_into(&rays[..3], &filter, &mut out);
+    assert_eq!(out.len(), 3);
+    map.cast_rays_into(&[], &filter, &mut out);
+    assert!(out.is_empty());
+}
