@@ -29,8 +29,10 @@ pub fn run(
     } else {
         RayFilter::default()
     };
-    for (i, (p0, p1)) in rays.iter().enumerate() {
-        let hit = map.cast_ray(Ray::between(*p0, *p1), &filter);
+    // All at once: `cast_rays` walks them side by side, with each answer `cast_ray`'s.
+    let segments: Vec<Ray> = rays.iter().map(|(p0, p1)| Ray::between(*p0, *p1)).collect();
+    let hits = map.cast_rays(&segments, &filter);
+    for (i, ((p0, p1), hit)) in rays.iter().zip(&hits).enumerate() {
         if as_json {
             println!("{}", hit_json(hit.as_ref()));
         } else {

@@ -53,7 +53,8 @@ const SCALAR: i32 = 3;
 const IDLE: i32 = 4;
 
 /// The walk state of [`LANES`] rays, one array per field so that a step is a handful of
-/// vector instructions. Field meanings are those of [`WalkStart`].
+/// vector instructions. Field meanings are those of [`WalkStart`] (whose crossings `tx`
+/// and `ty` each step recomputes from the grid lines).
 #[derive(Clone, Copy)]
 struct Group {
     o_x: [f32; LANES],
@@ -62,8 +63,6 @@ struct Group {
     inv_y: [f32; LANES],
     tol_t: [f32; LANES],
     t_stop: [f32; LANES],
-    tx: [f32; LANES],
-    ty: [f32; LANES],
     line_x: [i32; LANES],
     line_y: [i32; LANES],
     index: [i32; LANES],
@@ -89,8 +88,6 @@ impl Default for Group {
             inv_y: [0.0; LANES],
             tol_t: [0.0; LANES],
             t_stop: [0.0; LANES],
-            tx: [0.0; LANES],
-            ty: [0.0; LANES],
             line_x: [0; LANES],
             line_y: [0; LANES],
             index: [0; LANES],
@@ -275,8 +272,6 @@ impl TileMap {
             group.inv_y[k] = s.inv.y;
             group.tol_t[k] = s.tol_t;
             group.t_stop[k] = s.t_stop;
-            group.tx[k] = s.tx;
-            group.ty[k] = s.ty;
             group.line_x[k] = s.line_x;
             group.line_y[k] = s.line_y;
             group.index[k] = s.index;
@@ -343,7 +338,10 @@ fn step(group: &mut Group, kinds: &[u8]) {
     }
     let mask = |b: bool| -i32::from(b);
     for k in 0..LANES {
-        let (tx, ty) = (group.tx[k], group.ty[k]);
+        // The next crossing on each axis, from the origin as `fast_walk` computes it (not
+        // kept between steps: recomputing costs less than storing and moving it).
+        let tx = (group.line_x[k] as f32 - group.o_x[k]) * group.inv_x[k];
+        let ty = (group.line_y[k] as f32 - group.o_y[k]) * group.inv_y[k];
         let x_first = mask(tx < ty);
         let t_exit = if tx < ty { tx } else { ty };
         // `fast_walk`'s tests, in its order: a face entered, a general cell, a corner, the
@@ -362,10 +360,6 @@ fn step(group: &mut Group, kinds: &[u8]) {
         group.index[k] += (go_x & group.index_step_x[k]) | (go_y & group.index_step_y[k]);
         group.line_x[k] += go_x & group.step_x[k];
         group.line_y[k] += go_y & group.step_y[k];
-        // Recomputed from the origin, as `fast_walk` does; unchanged lines give the same
-        // bits.
-        group.tx[k] = (group.line_x[k] as f32 - group.o_x[k]) * group.inv_x[k];
-        group.ty[k] = (group.line_y[k] as f32 - group.o_y[k]) * group.inv_y[k];
         group.entered[k] =
             (go_x & group.enter_x[k]) | (go_y & group.enter_y[k]) | (!go & group.entered[k]);
     }
@@ -397,8 +391,6 @@ fn copy_lane(from: &Group, k: usize, to: &mut Group, to_k: usize) {
         inv_y,
         tol_t,
         t_stop,
-        tx,
-        ty,
         line_x,
         line_y,
         index,
