@@ -222,16 +222,21 @@ impl TileMap {
         let n = rays.len().min(WAITING * LANES);
         for (g, group) in waiting.groups.iter_mut().enumerate() {
             let base = g * LANES;
-            // NaN rays fill the lanes past the input's end: they never walk.
-            let mut lane_rays = [Ray {
-                origin: Vec2::NAN,
-                delta: Vec2::NAN,
-            }; LANES];
-            for (k, ray) in lane_rays.iter_mut().enumerate() {
-                if let Some(r) = rays.get(base + k) {
-                    *ray = *r;
+            let lane_rays = match rays.get(base..base + LANES) {
+                Some(whole) => <&[Ray; LANES]>::try_from(whole).ok().copied(),
+                None => None,
+            };
+            let lane_rays = lane_rays.unwrap_or_else(|| {
+                // Past the input's end, NaN rays fill the lanes: they never walk.
+                let mut padded = [Ray {
+                    origin: Vec2::NAN,
+                    delta: Vec2::NAN,
+                }; LANES];
+                for (lane, ray) in padded.iter_mut().zip(rays.iter().skip(base)) {
+                    *lane = *ray;
                 }
-            }
+                padded
+            });
             self.start_group(group, &lane_rays, first + base);
         }
         waiting.next = 0;
