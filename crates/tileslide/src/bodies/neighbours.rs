@@ -1,20 +1,33 @@
 //! The circles each circle may meet during a step, kept for several steps.
 //!
-//! Two circles can meet only if their reach boxes (everywhere each can be during the step)
-//! overlap. Finding those pairs with a broadphase over every circle, every step, was about
-//! a tenth of a crowd step. Instead the candidate pairs are found for the reach boxes grown
-//! by a margin and kept while every reach box stays inside its grown box: then every pair
-//! whose reach boxes overlap is among them, and each step only tests the candidates' boxes.
-//! These are Verlet neighbour lists (L. Verlet, "Computer experiments on classical fluids",
-//! Phys. Rev. 159, 1967) with the skin test done on boxes; a crowd moving 0.05 cells a step
-//! finds its candidates again about every fifth step.
+//! Two circles can meet only if their reach discs overlap: a circle's reach disc is
+//! centred where it starts, with its radius grown by its move and the gap, so it holds
+//! everywhere the circle can be during the step. Finding those pairs with a broadphase over
+//! every circle, every step, was about a tenth of a crowd step. Instead the candidate pairs
+//! are found for the discs' boxes (the reach boxes) grown by a margin and kept while every
+//! reach box stays inside its grown box: then every pair whose reach discs overlap is among
+//! them, and each step only tests the candidates' discs. These are Verlet neighbour lists
+//! (L. Verlet, "Computer experiments on classical fluids", Phys. Rev. 159, 1967) with the
+//! skin test done on boxes; a crowd moving 0.05 cells a step finds its candidates again
+//! about every fifth step.
 //!
-//! The rows are exactly the pairs a broadphase over the reach boxes would give, in another
-//! order; the nearest contact is chosen by time and then by index, so the order changes
-//! no result.
+//! The rows are discs, not boxes, because every pass of a sweep tests every neighbour in
+//! the row: in a packed crowd a circle's four diagonal neighbours are in its reach box but
+//! never within reach, and testing them cost a third of the neighbour tests and many
+//! mispredicted branches (see docs/resolver.md). A pair whose discs are apart is one the
+//! resolver's reach test skips anyway, with a gap to spare for rounding: that test asks
+//! whether the centres are within both radii, one gap and what is left of the mover's move,
+//! and neither centre strays from its disc's centre by more than its own move has taken it
+//! (what the mover has taken and what is left add up to at most its move), so apart discs
+//! leave the centres farther than that by at least one more gap. The same holds for the
+//! settled bodies' disturbed flags, which follow the rows.
+//!
+//! The rows are exactly the pairs whose reach discs overlap, in another order than an
+//! all-pairs search would give; the nearest contact is chosen by time and then by index,
+//! so the order changes no result.
 
 use crate::broadphase::{Broadphase, PairFinder};
-use crate::geometry::Aabb;
+use crate::geometry::{Aabb, Circle};
 
 /// How far the boxes the candidates are found for reach past the reach boxes, in cells.
 /// Measured on the crowd scene (10k): 0.1 barely gains (candidates found every other
@@ -25,7 +38,7 @@ const MARGIN: f32 = 0.25;
 #[derive(Clone, Debug, Default)]
 pub(super) struct Neighbours {
     finder: PairFinder,
-    /// The pairs of grown boxes, and of them the pairs whose boxes overlap now.
+    /// The pairs of grown boxes, and of them the pairs whose reach discs overlap now.
     candidates: Vec<(u32, u32)>,
     pairs: Vec<(u32, u32)>,
     /// Row `c` is `list[first[c]..first[c + 1]]`.
@@ -43,13 +56,15 @@ impl Neighbours {
         self.found_with = None;
     }
 
-    /// Makes the rows hold every pair of circles whose `boxes` overlap and whose bodies
-    /// (`body_of`) differ and collide by `collides`, finding them again with `kind` unless
-    /// every box is still inside the box the rows were found for. `cell` is the map's
+    /// Makes the rows hold every pair of circles whose `reach` discs overlap and whose
+    /// bodies (`body_of`) differ and collide by `collides`. `boxes` are the discs' boxes:
+    /// the candidates are found again with `kind` for them grown by a margin, unless every
+    /// box is still inside the grown box the candidates were found for. `cell` is the map's
     /// smaller cell side, the unit of the margin.
     pub fn update(
         &mut self,
         kind: Broadphase,
+        reach: &[Circle],
         boxes: &[Aabb],
         cell: f32,
         body_of: impl Fn(u32) -> usize,
@@ -70,14 +85,14 @@ impl Neighbours {
                 a != b && collides(a, b)
             });
         }
-        // The pairs whose boxes overlap now, written branch-free (whether a candidate is
+        // The pairs whose discs overlap now, written branch-free (whether a candidate is
         // kept is a coin toss for the branch predictor).
         self.pairs.clear();
         self.pairs.resize(self.candidates.len(), (0, 0));
         let mut n = 0;
         for &(i, j) in &self.candidates {
             self.pairs[n] = (i, j);
-            n += usize::from(boxes[i as usize].overlaps(&boxes[j as usize]));
+            n += usize::from(reach[i as usize].overlaps(&reach[j as usize]));
         }
         self.pairs.truncate(n);
         // Compressed rows by counting sort: count each circle's pairs, running sums give each
@@ -120,7 +135,7 @@ mod tests {
     use super::*;
     use glam::Vec2;
 
-    /// Boxes drifting a little each call, some jumping: the rows always hold exactly the
+    /// Discs drifting a little each call, some jumping: the rows always hold exactly the
     /// overlapping pairs of different bodies (circles 2k and 2k + 1 share a body), each in
     /// both rows, whichever broadphase found the candidates.
     #[test]
@@ -144,19 +159,17 @@ mod tests {
                     let jump = call % 10 == 9 && k % 97 == 0;
                     *c += Vec2::new(rand() - 0.5, rand() - 0.5) * if jump { 4.0 } else { 0.08 };
                 }
-                let boxes: Vec<Aabb> = centres
-                    .iter()
-                    .map(|&c| Aabb::from_center(c, Vec2::splat(0.4)))
-                    .collect();
+                let discs: Vec<Circle> = centres.iter().map(|&c| Circle::new(c, 0.4)).collect();
+                let boxes: Vec<Aabb> = discs.iter().map(Circle::aabb).collect();
                 let grown_before = neighbours.grown.clone();
-                neighbours.update(kind, &boxes, 1.0, |i| i as usize / 2, |_, _| true);
+                neighbours.update(kind, &discs, &boxes, 1.0, |i| i as usize / 2, |_, _| true);
                 rebuilt += usize::from(neighbours.grown != grown_before);
                 for i in 0..n {
                     let mut row: Vec<u32> = neighbours.row(i).to_vec();
                     row.sort_unstable();
                     let expected: Vec<u32> = (0..n as u32)
                         .filter(|&j| {
-                            j as usize / 2 != i / 2 && boxes[i].overlaps(&boxes[j as usize])
+                            j as usize / 2 != i / 2 && discs[i].overlaps(&discs[j as usize])
                         })
                         .collect();
                     assert_eq!(row, expected, "{kind:?}, call {call}, circle {i}");
@@ -172,13 +185,15 @@ mod tests {
 
     #[test]
     fn forgetting_finds_the_candidates_again() {
-        let boxes = [
-            Aabb::from_center(Vec2::ZERO, Vec2::splat(0.5)),
-            Aabb::from_center(Vec2::new(0.8, 0.0), Vec2::splat(0.5)),
+        let discs = [
+            Circle::new(Vec2::ZERO, 0.5),
+            Circle::new(Vec2::new(0.8, 0.0), 0.5),
         ];
+        let boxes = discs.map(|d| d.aabb());
         let mut neighbours = Neighbours::default();
         neighbours.update(
             Broadphase::UniformGrid,
+            &discs,
             &boxes,
             1.0,
             |i| i as usize,
@@ -189,6 +204,7 @@ mod tests {
         neighbours.forget();
         neighbours.update(
             Broadphase::UniformGrid,
+            &discs,
             &boxes,
             1.0,
             |i| i as usize,

@@ -32,7 +32,7 @@ use super::near_walls::NearWalls;
 use super::neighbours::Neighbours;
 use super::set::Body;
 use super::settled::Settled;
-use crate::geometry::{Aabb, SweepHit, bisect, sweep_circle_circle};
+use crate::geometry::{Aabb, Circle, SweepHit, bisect, sweep_circle_circle};
 use crate::query::Capsule;
 use crate::tiles::TileMap;
 
@@ -96,7 +96,9 @@ pub(crate) struct Scratch {
     /// Per body, how far its circles reach past their radius this step: its move and the
     /// gap.
     reach: Vec<f32>,
-    /// Per circle, its reach box.
+    /// Per circle, its reach disc (where it starts, its radius grown by its body's reach:
+    /// everywhere it can be this step) and the disc's box.
+    reach_discs: Vec<Circle>,
     boxes: Vec<Aabb>,
     /// Whether `circles` and `first_circle` still describe the bodies (see `load`).
     shapes_known: bool,
@@ -158,7 +160,7 @@ impl Scratch {
         self.shapes_known = false;
     }
 
-    /// Body `b` moved: flags the bodies whose boxes touch its own as disturbed.
+    /// Body `b` moved: flags the bodies whose reach discs touch its own as disturbed.
     fn disturb_neighbours(&mut self, b: usize) {
         let circles = self.first_circle[b] as usize..self.first_circle[b + 1] as usize;
         for c in circles {
@@ -201,22 +203,25 @@ impl Scratch {
             // radius and the gap.
             self.reach.push(body.proposed.length() + gap);
         }
-        self.boxes.clear();
+        self.reach_discs.clear();
         let (position, reach) = (&self.position, &self.reach);
-        self.boxes.extend(self.circles.iter().map(|c| {
+        self.reach_discs.extend(self.circles.iter().map(|c| {
             let b = c.body as usize;
-            Aabb::from_center(position[b] + c.offset, Vec2::splat(c.radius + reach[b]))
+            Circle::new(position[b] + c.offset, c.radius + reach[b])
         }));
+        self.boxes.clear();
+        self.boxes.extend(self.reach_discs.iter().map(Circle::aabb));
         self.near.begin(self.circles.len());
     }
 
     /// The circles each circle may meet: pairs of different bodies that collide by filter
-    /// and whose boxes overlap. A row is read only for a moving body, so the rows may also
-    /// pair bodies that both stay.
+    /// and whose reach discs overlap. A row is read only for a moving body, so the rows may
+    /// also pair bodies that both stay.
     fn find_neighbours(&mut self, config: &ResolveConfig, cell: f32) {
         let (circles, filter) = (&self.circles, &self.filter);
         self.neighbours.update(
             config.broadphase,
+            &self.reach_discs,
             &self.boxes,
             cell,
             |i| circles[i as usize].body as usize,

@@ -7,8 +7,8 @@
 //! ended this step, a higher one where it ended the last). So when all of that is unchanged,
 //! the move is unchanged, bit for bit. The memory keeps each body's inputs and whether it
 //! stayed put, and the other side of the argument is a *disturbed* flag: a body that moves
-//! flags every body its broadphase box touches (its box holds its whole path, start and
-//! end), for this step when they are resolved after it and for the next one otherwise.
+//! flags every body whose reach disc touches its own (its disc holds its whole path, start
+//! and end), for this step when they are resolved after it and for the next one otherwise.
 //!
 //! In a jammed crowd (bodies pressed into corners and into each other, each re-trying a
 //! blocked move every step with all its passes) this skips a third of the sweeps. The skip
@@ -141,7 +141,7 @@ impl Settled {
         self.bodies[b] = Memory { end: at, ..UNKNOWN };
     }
 
-    /// Body `mover` moved, and body `other`'s box touches its own: `other` sees the change
+    /// Body `mover` moved, and body `other`'s reach disc touches its own: `other` sees the change
     /// this step if it is resolved later, the next step otherwise.
     pub fn disturb(&mut self, mover: usize, other: usize) {
         if other > mover {

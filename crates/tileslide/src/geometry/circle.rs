@@ -37,6 +37,20 @@ impl Circle {
         segment.distance_squared_to(self.center) <= self.radius * self.radius
     }
 
+    /// True when the two discs share a point (touching counts).
+    ///
+    /// ```
+    /// # use tileslide::{Circle, Vec2};
+    /// let c = Circle::new(Vec2::ZERO, 1.0);
+    /// assert!(c.overlaps(&Circle::new(Vec2::new(1.5, 0.0), 0.5)));
+    /// assert!(!c.overlaps(&Circle::new(Vec2::new(1.5, 1.5), 0.5)));
+    /// ```
+    #[must_use]
+    pub fn overlaps(&self, other: &Circle) -> bool {
+        let reach = self.radius + other.radius;
+        self.center.distance_squared(other.center) <= reach * reach
+    }
+
     /// True when the disc and the closed box share a point (touching counts).
     #[must_use]
     pub fn overlaps_aabb(&self, aabb: &Aabb) -> bool {
