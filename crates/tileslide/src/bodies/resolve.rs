@@ -262,9 +262,9 @@ impl Scratch {
             // position can lose one coordinate of so small a step (at x = 232 the float
             // spacing is 1.5e-5) and keep the other, and a body pressed into a wall and a
             // neighbour would creep into the neighbour a few ulps per pass.
-            if (remaining * hit.t).length() >= gap * MIN_STEP {
-                self.position[bi] += remaining * hit.t;
-            }
+            let step = remaining * hit.t;
+            let taken = step.length() >= gap * MIN_STEP;
+            self.position[bi] += Vec2::new(keep_if(taken, step.x), keep_if(taken, step.y));
             if pass == config.passes {
                 report.cut_short += 1;
                 return;
@@ -456,10 +456,15 @@ fn slide(blocked: Vec2, normal: Vec2, obstacle: Obstacle, me: u32, mode: SlideMo
             (if u < 0.0 { -perp } else { perp }, u.abs())
         }
         Obstacle::Body(other) => {
-            let t = if me < other { perp } else { -perp };
+            // Which way is a coin toss (slot order, and the side of the centre line the
+            // remainder points to): negated by flipping the sign bit, without a branch
+            // (the same bits as `-perp`, `eps`, `-t`).
+            let lower = flip_if(me >= other);
+            let t = Vec2::new(lower(perp.x), lower(perp.y));
             let u = blocked.dot(t);
-            let threshold = if me < other { -eps } else { eps };
-            (if u < threshold { -t } else { t }, u.abs())
+            let threshold = lower(-eps);
+            let away = flip_if(u < threshold);
+            (Vec2::new(away(t.x), away(t.y)), u.abs())
         }
     };
     let slid = match mode {
@@ -482,6 +487,20 @@ fn slide(blocked: Vec2, normal: Vec2, obstacle: Obstacle, me: u32, mode: SlideMo
     } else {
         slid
     }
+}
+
+/// Negation when `yes`, by flipping the sign bit with an integer mask: the same bits as
+/// `-x`, with no branch for a condition the predictor cannot guess.
+fn flip_if(yes: bool) -> impl Fn(f32) -> f32 {
+    let mask = u32::from(yes) << 31;
+    move |x| f32::from_bits(x.to_bits() ^ mask)
+}
+
+/// `x` when `yes`, else `-0.0` (which added to anything leaves it bit for bit as it was,
+/// `-0.0` included), by masking bits: no branch for a condition the predictor cannot guess.
+fn keep_if(yes: bool, x: f32) -> f32 {
+    let keep = u32::from(yes).wrapping_neg();
+    f32::from_bits((x.to_bits() & keep) | (!keep & (-0.0f32).to_bits()))
 }
 
 #[cfg(test)]

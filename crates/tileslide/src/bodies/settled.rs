@@ -144,11 +144,10 @@ impl Settled {
     /// Body `mover` moved, and body `other`'s reach disc touches its own: `other` sees the change
     /// this step if it is resolved later, the next step otherwise.
     pub fn disturb(&mut self, mover: usize, other: usize) {
-        if other > mover {
-            self.disturbed[other] = true;
-        } else {
-            self.disturbed_next[other] = true;
-        }
+        // Both flags written, without a branch: which one is set is a coin toss (slot
+        // order is random in space).
+        self.disturbed[other] |= other > mover;
+        self.disturbed_next[other] |= other <= mover;
     }
 }
 
