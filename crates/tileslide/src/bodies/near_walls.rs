@@ -1,21 +1,24 @@
 //! The walls near each circle, kept from one step to the next.
 //!
-//! A circle sweeps only against the walls its reach box (everywhere it can be during the
-//! step) touches. Gathering them reads a few cells' kind bytes, segment indices and
+//! A circle sweeps only against the walls its reach disc (everywhere it can be during the
+//! step: its circle grown by its move and the gap) touches. Gathering them reads a few cells' kind bytes, segment indices and
 //! segments, scattered over the map: about a fifth of a crowd step when done for every
 //! moving circle every step. But a circle moves a fraction of a cell per step, so the
-//! walls are gathered once for its reach box grown by a margin ([`MARGIN`]) and kept while
-//! the reach box stays inside that larger box and the map keeps its revision, the same
+//! walls are gathered once for its reach disc grown by a margin ([`MARGIN`]) and kept while
+//! the reach disc stays inside that larger disc and the map keeps its revision, the same
 //! bargain as Verlet neighbour lists (Verlet 1967) make for particle pairs.
 //!
 //! The kept list gives exactly the contacts the exact list would: it holds, in the same
-//! relative order (temporary segments, then cells row by row), every wall of the larger box,
-//! so every wall the reach box touches; and a wall outside the reach box is farther from the
-//! circle than its move plus its contact radius, which the resolver's reach test skips
-//! before any sweep. Walls are kept only if they touch the larger box itself, not merely a
-//! cell it touches, which keeps the lists short.
+//! relative order (temporary segments, then cells row by row), every wall touching the
+//! larger disc, so every wall the reach disc touches; and a wall outside the reach disc is
+//! farther from the circle's start than its radius, its move and the gap, so farther from
+//! wherever the circle is during the step than its contact radius and what is left of its
+//! move, which the resolver's reach test skips before any sweep. Walls are kept only if they
+//! touch the larger disc itself, not merely a cell its box touches: discs rather than
+//! boxes, because every pass tests every kept wall, and a box's corners hold walls a
+//! circle never reaches.
 
-use crate::geometry::Aabb;
+use crate::geometry::Circle;
 use crate::query::Capsule;
 use crate::tiles::{SegmentFlags, TileMap};
 
@@ -34,7 +37,7 @@ enum Near {
     /// The walls with one of `mask`'s flags that touch `area`, at `start..end` of the pool,
     /// while the map has revision `revision`.
     Listed {
-        area: Aabb,
+        area: Circle,
         revision: u64,
         mask: SegmentFlags,
         start: u32,
@@ -76,14 +79,14 @@ impl NearWalls {
         }
     }
 
-    /// The walls with one of `mask`'s flags near circle `c`, whose reach box is `reach`:
+    /// The walls with one of `mask`'s flags near circle `c`, whose reach disc is `reach`:
     /// a superset of the walls `reach` touches, in the same order (see the module doc), as
-    /// a range of [`Self::walls`]. `slack` is how far inside its larger box a reach box
+    /// a range of [`Self::walls`]. `slack` is how far inside its larger disc a reach disc
     /// must stay for a kept list to serve (the resolver's gap: room for rounding).
     pub fn around(
         &mut self,
         c: usize,
-        reach: &Aabb,
+        reach: &Circle,
         mask: SegmentFlags,
         slack: f32,
         map: &TileMap,
@@ -98,18 +101,19 @@ impl NearWalls {
                 mask: kept,
                 start,
                 end,
-            } if revision == map.revision()
-                && kept == mask
-                && area.contains(&reach.expand(slack)) =>
-            {
+            } if revision == map.revision() && kept == mask && inside(reach, slack, &area) => {
                 return (start, end);
             }
             _ => {}
         }
-        let area = reach.expand(MARGIN * map.cell_size().min_element());
+        let area = Circle::new(
+            reach.center,
+            reach.radius + MARGIN * map.cell_size().min_element(),
+        );
         let start = self.pool.len();
-        map.capsules_in(&area, mask, &mut self.pool);
-        // Only the walls that touch the area itself (a cell it touches may reach beyond).
+        map.capsules_in(&area.aabb(), mask, &mut self.pool);
+        // Only the walls that touch the area itself (a cell its box touches may reach
+        // beyond).
         let mut kept = start;
         for k in start..self.pool.len() {
             if area.overlaps_segment(&self.pool[k].segment) {
@@ -134,6 +138,13 @@ impl NearWalls {
     pub fn walls(&self, (start, end): (u32, u32)) -> &[Capsule] {
         &self.pool[start as usize..end as usize]
     }
+}
+
+/// Whether disc `reach` grown by `slack` lies inside disc `area`.
+#[inline]
+fn inside(reach: &Circle, slack: f32, area: &Circle) -> bool {
+    let room = area.radius - reach.radius - slack;
+    room >= 0.0 && reach.center.distance_squared(area.center) <= room * room
 }
 
 #[cfg(test)]
@@ -161,9 +172,9 @@ mod tests {
         ascii::parse(&text.join("\n"), "pillars.txt", 1.0).unwrap_or_else(|e| panic!("{e}"))
     }
 
-    /// What a fresh gather lists for `reach`: every wall of `mask` touching the box grown
+    /// What a fresh gather lists for `reach`: every wall of `mask` touching the disc grown
     /// by the margin, in the map's order.
-    fn fresh(map: &TileMap, reach: &Aabb, mask: SegmentFlags) -> Vec<Capsule> {
+    fn fresh(map: &TileMap, reach: &Circle, mask: SegmentFlags) -> Vec<Capsule> {
         let mut near = NearWalls::default();
         near.begin(1);
         let range = near.around(0, reach, mask, 0.0, map);
@@ -171,7 +182,7 @@ mod tests {
     }
 
     #[test]
-    fn kept_lists_hold_every_wall_a_reach_box_touches_through_compactions() {
+    fn kept_lists_hold_every_wall_a_reach_disc_touches_through_compactions() {
         let map = pillars();
         let mask = SegmentFlags::SOLID;
         let n = 1500;
@@ -185,10 +196,10 @@ mod tests {
                 // Circles drift a little each round, so lists are both kept and renewed.
                 let x = 1.5 + (c % 37) as f32 + 0.07 * round as f32 * ((c % 3) as f32 - 1.0);
                 let y = 1.5 + (c / 37) as f32 * 0.9 + 0.05 * round as f32;
-                let reach = Aabb::from_center(Vec2::new(x, y % 37.0 + 1.0), Vec2::splat(0.4));
+                let reach = Circle::new(Vec2::new(x, y % 37.0 + 1.0), 0.4);
                 let range = near.around(c, &reach, mask, 0.0, &map);
                 let kept = near.walls(range);
-                // Everything the reach box touches is there, in the map's order.
+                // Everything the reach disc touches is there, in the map's order.
                 let wanted: Vec<Capsule> = fresh(&map, &reach, mask)
                     .into_iter()
                     .filter(|w| reach.overlaps_segment(&w.segment))
@@ -210,7 +221,7 @@ mod tests {
         let mut map = pillars();
         let mut near = NearWalls::default();
         near.begin(1);
-        let reach = Aabb::from_center(Vec2::new(3.5, 4.5), Vec2::splat(0.4));
+        let reach = Circle::new(Vec2::new(3.5, 4.5), 0.4);
         let first = near.around(0, &reach, SegmentFlags::SOLID, 0.0, &map);
         assert!(near.walls(first).is_empty(), "rows 3 to 5 are open floor");
         assert_eq!(

@@ -240,12 +240,12 @@ impl Scratch {
     ) {
         let bi = b as usize;
         let circles = self.first_circle[bi] as usize..self.first_circle[bi + 1] as usize;
-        // The walls near each circle, once: the reach box holds every position the body
+        // The walls near each circle, once: the reach disc holds every position the body
         // can take this step (slides never lengthen the remainder).
         self.wall_ranges.clear();
         let mask = self.filter[bi].walls;
         for c in circles.clone() {
-            let range = self.near.around(c, &self.boxes[c], mask, gap, map);
+            let range = self.near.around(c, &self.reach_discs[c], mask, gap, map);
             self.wall_ranges.push(range);
         }
         let mut remaining = self.motion[bi];
