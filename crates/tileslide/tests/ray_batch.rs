@@ -3,7 +3,9 @@
 //! batches of random rays mixed with the rays the fast walk declines (starts on grid lines
 //! and lattice points, rays along an axis, through corners, from outside the map, zero
 //! length, NaN and infinite), under every kind of filter and with temporary segments.
-//! `ray_vs_brute_force.rs` proves `cast_ray` itself right; this file ties the batch to it.
+//! Both instruction sets of the batch are checked: `cast_rays` (AVX2 where the processor
+//! has it) and `cast_rays_portable`. `ray_vs_brute_force.rs` proves `cast_ray` itself
+//! right; this file ties the batch to it.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -120,11 +122,16 @@ proptest! {
             .iter()
             .map(|&(a, b)| Ray::between(origin + a * cell, origin + b * cell))
             .collect();
+        // `cast_rays` takes the AVX2 walk where the processor has it; the portable walk
+        // is checked too, so that both instruction sets are proven on such machines.
         let batch = map.cast_rays(&rays, &filter);
+        let portable = map.cast_rays_portable(&rays, &filter);
         prop_assert_eq!(batch.len(), rays.len());
-        for (ray, answer) in rays.iter().zip(&batch) {
+        prop_assert_eq!(portable.len(), rays.len());
+        for ((ray, answer), portable) in rays.iter().zip(&batch).zip(&portable) {
             let single = map.cast_ray(*ray, &filter);
             prop_assert_eq!(bits(answer), bits(&single), "ray {:?}", ray);
+            prop_assert_eq!(bits(portable), bits(&single), "portable, ray {:?}", ray);
         }
     }
 }
@@ -185,8 +192,11 @@ fn many_rays_fill_many_lanes_and_the_buffer_is_reused() {
     assert_eq!(out.len(), rays.len());
     let hits = out.iter().filter(|h| h.is_some()).count();
     assert!(hits > 4_000, "{hits} hits");
-    for (ray, answer) in rays.iter().zip(&out) {
-        assert_eq!(bits(answer), bits(&map.cast_ray(*ray, &filter)));
+    let portable = map.cast_rays_portable(&rays, &filter);
+    for ((ray, answer), portable) in rays.iter().zip(&out).zip(&portable) {
+        let single = bits(&map.cast_ray(*ray, &filter));
+        assert_eq!(bits(answer), single);
+        assert_eq!(bits(portable), single);
     }
     map.cast_rays_into(&rays[..3], &filter, &mut out);
     assert_eq!(out.len(), 3);
