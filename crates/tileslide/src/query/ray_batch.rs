@@ -7,9 +7,9 @@
 //! together turns the decision into a select and the independent rays into parallel work:
 //! rays are set up [`LANES`] at a time (`WalkStart::lane`, the scalar walk's own arithmetic
 //! without its early returns), a few groups of lanes are stepped side by side with no branch
-//! per step, and every [`STEPS_PER_TURN`] steps each lane whose ray has finished is answered
-//! and given the next ray, so that lanes idle little while rays remain. This is the persistent-threads
-//! organisation of GPU ray tracers (Aila and Laine, "Understanding the Efficiency of Ray
+//! per step, and every few steps (two with SSE2, three with AVX2) each lane whose ray has
+//! finished is answered and given the next ray, so that lanes idle little while rays
+//! remain. This is the persistent-threads organisation of GPU ray tracers (Aila and Laine, "Understanding the Efficiency of Ray
 //! Traversal on GPUs", HPG 2009) at the scale of one CPU core.
 //!
 //! Only the rays the fast walk decides alone are finished here: face hits (exact `t` from the
@@ -35,12 +35,15 @@ const LANES: usize = 8;
 /// Groups walked side by side: their steps are independent, so the processor overlaps
 /// them, hiding each step's latency (a conversion, a subtraction and a multiplication).
 const WALKERS: usize = 4;
-/// Steps each group takes between two refills. A lane that finishes early idles until the
-/// refill, but each refill finds more finished lanes, which spreads its fixed cost and its
-/// mispredicted loop exits over more steps (measured with SSE2: 2 steps 8 % faster than 1,
-/// 3 no faster than 2; with AVX2, where a step costs half as much: 3 steps 6 % faster than
-/// 2, 4 no faster than 3).
-const STEPS_PER_TURN: usize = 3;
+/// Steps each group takes between two refills, for each instruction set. A lane that
+/// finishes early idles until the refill, but each refill finds more finished lanes, which
+/// spreads its fixed cost and its mispredicted loop exits over more steps. Measured with
+/// SSE2: 2 steps 8 % faster than 1, 3 steps 2 % slower than 2; with AVX2, where a step
+/// costs half as much: 3 steps 6 % faster than 2, 4 no faster than 3.
+const STEPS_PER_TURN_SSE2: usize = 2;
+/// See [`STEPS_PER_TURN_SSE2`].
+#[cfg(target_arch = "x86_64")]
+const STEPS_PER_TURN_AVX2: usize = 3;
 /// Groups set up at a time, waiting to refill lanes.
 const WAITING: usize = 8;
 
@@ -150,9 +153,7 @@ impl TileMap {
     /// [`cast_rays`](Self::cast_rays) into a buffer the caller reuses (cleared first).
     pub fn cast_rays_into(&self, rays: &[Ray], filter: &RayFilter, out: &mut Vec<Option<RayHit>>) {
         out.clear();
-        // Temporary segments shorten each walk, and other filters test face cells segment
-        // by segment: both are `cast_ray`'s work.
-        if !self.temporaries.is_empty() || !SegmentTest::decides_by_faces(filter) {
+        if !self.batch_walks(filter) {
             out.extend(rays.iter().map(|&ray| self.cast_ray(ray, filter)));
             return;
         }
@@ -167,7 +168,14 @@ impl TileMap {
             }
             return;
         }
-        self.walk(rays, filter, out);
+        self.walk::<STEPS_PER_TURN_SSE2>(rays, filter, out);
+    }
+
+    /// Whether the batch walk may answer rays under `filter`: temporary segments shorten
+    /// each walk, and other filters test face cells segment by segment, both `cast_ray`'s
+    /// work.
+    fn batch_walks(&self, filter: &RayFilter) -> bool {
+        self.temporaries.is_empty() && SegmentTest::decides_by_faces(filter)
     }
 
     /// [`walk`](Self::walk) compiled for processors with AVX2: eight lanes are one register
@@ -179,7 +187,7 @@ impl TileMap {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,bmi1,bmi2,lzcnt,popcnt")]
     fn walk_avx2(&self, rays: &[Ray], filter: &RayFilter, out: &mut [Option<RayHit>]) {
-        self.walk(rays, filter, out);
+        self.walk::<STEPS_PER_TURN_AVX2>(rays, filter, out);
     }
 
     /// The batch walk on the portable instruction set, whatever the processor has: for
@@ -187,19 +195,24 @@ impl TileMap {
     /// the AVX2 path.
     #[doc(hidden)]
     pub fn cast_rays_portable(&self, rays: &[Ray], filter: &RayFilter) -> Vec<Option<RayHit>> {
-        if !self.temporaries.is_empty() || !SegmentTest::decides_by_faces(filter) {
+        if !self.batch_walks(filter) {
             return rays.iter().map(|&ray| self.cast_ray(ray, filter)).collect();
         }
         let mut out = vec![None; rays.len()];
-        self.walk(rays, filter, &mut out);
+        self.walk::<STEPS_PER_TURN_SSE2>(rays, filter, &mut out);
         out
     }
 
-    /// Answers `rays` into `out` (as long as `rays`, all `None`) by the batch walk; the
-    /// caller has checked that the filter and the temporaries allow it. Always inlined, so
-    /// that each caller compiles it for its own instruction set.
+    /// Answers `rays` into `out` (as long as `rays`, all `None`) by the batch walk, `STEPS`
+    /// steps between refills; the caller has checked [`batch_walks`](Self::batch_walks).
+    /// Always inlined, so that each caller compiles it for its own instruction set.
     #[inline(always)]
-    fn walk(&self, rays: &[Ray], filter: &RayFilter, out: &mut [Option<RayHit>]) {
+    fn walk<const STEPS: usize>(
+        &self,
+        rays: &[Ray],
+        filter: &RayFilter,
+        out: &mut [Option<RayHit>],
+    ) {
         let mut walkers = [Group::default(); WALKERS];
         let mut waiting = Box::<Waiting>::default();
         let mut queued = 0;
@@ -256,7 +269,7 @@ impl TileMap {
             if !busy {
                 break;
             }
-            for _ in 0..STEPS_PER_TURN {
+            for _ in 0..STEPS {
                 for group in &mut walkers {
                     step(group, kinds);
                 }
