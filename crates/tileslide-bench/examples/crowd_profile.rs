@@ -1,5 +1,9 @@
 //! Runs the "crowd" scene with tileslide alone, for profilers (perf, callgrind):
-//! `cargo run --release -p tileslide-bench --example crowd_profile -- [N] [steps]`.
+//! `cargo run --release -p tileslide-bench --example crowd_profile -- [N] [steps] [edits]`.
+//! `edits` is `none` (the scene as BENCHMARKS.md has it), `dig` (a wall cell next to the
+//! floor dug out every step, as a player digs a dungeon) or `platform` (a temporary segment
+//! submitted anew every step, one cell long and moving 0.05 cells a step): what map edits
+//! cost the resolver's memories.
 //! Prints the step times and the resolve report (contacts, bodies cut short); figures that
 //! compare with peers come from `tileslide bench crowd`. Also prints a checksum of the final
 //! positions, bit for bit, so that two builds can be shown to move every body exactly the
@@ -8,7 +12,9 @@
 use std::time::Instant;
 
 use glam::Vec2;
-use tileslide::{Bodies, BodyDesc, BodyShape};
+use tileslide::{
+    Bodies, BodyDesc, BodyShape, Cell, Owner, Segment, SegmentFlags, TemporarySegment,
+};
 use tileslide_scenes::{CROWD_RADIUS, audit_crowd, dungeon256, scene_crowd};
 
 /// FNV-1a (64-bit) over the bits of every final position, x then y, body by body (the
@@ -34,9 +40,26 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .next()
         .and_then(|s| s.parse().ok())
         .unwrap_or(default_steps);
+    let edits = args.next().unwrap_or_else(|| "none".to_owned());
+    if !["none", "dig", "platform"].contains(&edits.as_str()) {
+        return Err(format!("edits must be none, dig or platform, not {edits:?}").into());
+    }
     let grid = dungeon256();
     let crowd = scene_crowd(&grid, n);
-    let map = grid.to_tile_map()?;
+    let mut map = grid.to_tile_map()?;
+    // Wall cells next to the floor, spread over the map: the cells `dig` digs out.
+    let faces: Vec<Cell> = (0..256i64)
+        .flat_map(|y| (0..256i64).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            grid.is_solid(x, y)
+                && (1..255).contains(&x)
+                && (1..255).contains(&y)
+                && [(1, 0), (-1, 0), (0, 1), (0, -1)]
+                    .iter()
+                    .any(|(dx, dy)| !grid.is_solid(x + dx, y + dy))
+        })
+        .map(|(x, y)| Cell::new(x as u32, y as u32))
+        .collect();
     let mut bodies = Bodies::new();
     let shape = BodyShape::circle(CROWD_RADIUS)?;
     let mut handles = Vec::with_capacity(n);
@@ -48,7 +71,22 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let mut times = Vec::with_capacity(steps);
     let (mut moving, mut contacts, mut cut) = (0, 0, 0);
-    for _ in 0..steps {
+    for step in 0..steps {
+        match edits.as_str() {
+            "dig" => map.set_tile(faces[step * 7919 % faces.len()], None)?,
+            "platform" => {
+                map.clear_temporaries();
+                let a = Vec2::new(100.0 + 0.05 * step as f32, 100.5);
+                map.add_temporary(TemporarySegment {
+                    segment: Segment::new(a, a + Vec2::X),
+                    normal: Vec2::NEG_Y,
+                    flags: SegmentFlags::SOLID,
+                    owner: Owner(1),
+                    velocity: Vec2::new(0.05, 0.0),
+                })?;
+            }
+            _ => {}
+        }
         let start = Instant::now();
         for &(h, v) in &handles {
             bodies.propose(h, v)?;
@@ -81,8 +119,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "{n} circles, {steps} steps: median {median:.3} ms/step, {:.3} µs per circle",
         median * 1e3 / n as f64
     );
-    let audit = audit_crowd(&grid, &positions, CROWD_RADIUS);
-    println!("audit: {audit:?}");
+    if edits == "none" {
+        let audit = audit_crowd(&grid, &positions, CROWD_RADIUS);
+        println!("audit: {audit:?}");
+    }
     println!("checksum of the positions: {:016x}", checksum(&positions));
     Ok(())
 }

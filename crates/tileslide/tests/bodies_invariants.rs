@@ -20,8 +20,8 @@ use std::sync::Arc;
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Bodies, BodyDesc, BodyFilter, BodyHandle, BodyShape, Broadphase, Cell, Circle, ResolveConfig,
-    SegmentFlags, SlideMode, TileMap, Vec2,
+    Bodies, BodyDesc, BodyFilter, BodyHandle, BodyShape, Broadphase, Cell, Circle, Owner,
+    ResolveConfig, Segment, SegmentFlags, SlideMode, TemporarySegment, TileMap, Vec2,
 };
 
 /// Largest overlap allowed after a step, in cells (the skin).
@@ -323,6 +323,11 @@ enum Event {
     Teleport(f32, f32, f32),
     /// A cell of the map becomes solid or empty.
     Edit(f32, f32, bool),
+    /// The temporary segments are cleared and one is submitted at a place (solid, or a
+    /// one-way platform), as a moving platform is each frame.
+    Platform(f32, f32, bool),
+    /// The temporary segments are cleared and the same ones submitted again.
+    Resubmit,
     Remove(f32),
     /// A body proposes no move this step.
     Pause(f32),
@@ -339,7 +344,9 @@ fn events() -> impl Strategy<Value = Vec<Event>> {
     let one = prop_oneof![
         12 => Just(Event::Nothing),
         1 => (unit(), unit(), unit()).prop_map(|(k, x, y)| Event::Teleport(k, x, y)),
-        1 => (unit(), unit(), any::<bool>()).prop_map(|(x, y, s)| Event::Edit(x, y, s)),
+        2 => (unit(), unit(), any::<bool>()).prop_map(|(x, y, s)| Event::Edit(x, y, s)),
+        1 => (unit(), unit(), any::<bool>()).prop_map(|(x, y, s)| Event::Platform(x, y, s)),
+        1 => Just(Event::Resubmit),
         1 => unit().prop_map(Event::Remove),
         1 => unit().prop_map(Event::Pause),
         1 => unit().prop_map(Event::Ghost),
@@ -424,7 +431,8 @@ proptest! {
 
     /// Bodies with constant moves jam against walls and each other, so the resolver skips
     /// those blocked in place again; between steps, bodies jump, pause, vanish or turn into
-    /// ghosts, the map is edited and settings change. Every step, each resolved move and
+    /// ghosts, the map is edited (tiles, and temporary segments moved or submitted again)
+    /// and settings change. Every step, each resolved move and
     /// the report are bit-identical to those of a fresh resolver without memory (no settled
     /// bodies, no walls kept near each circle, no neighbour candidates kept from earlier
     /// steps).
@@ -462,6 +470,25 @@ proptest! {
                     let cell = Cell::new(pick(x, w as usize) as u32, pick(y, h as usize) as u32);
                     let id = ascii::tile_for_char(if solid { '#' } else { '.' }).unwrap();
                     map.set_tile(cell, id).unwrap();
+                }
+                Event::Platform(x, y, solid) => {
+                    map.clear_temporaries();
+                    let a = Vec2::new(x * w as f32, y * h as f32);
+                    map.add_temporary(TemporarySegment {
+                        segment: Segment::new(a, a + Vec2::new(1.5, 0.25)),
+                        normal: Vec2::new(-0.25, 1.5),
+                        flags: if solid { SegmentFlags::SOLID } else { SegmentFlags::ONE_WAY },
+                        owner: Owner(1),
+                        velocity: Vec2::ZERO,
+                    })
+                    .unwrap();
+                }
+                Event::Resubmit => {
+                    let again = map.temporaries().to_vec();
+                    map.clear_temporaries();
+                    for t in again {
+                        map.add_temporary(t).unwrap();
+                    }
                 }
                 Event::Remove(k) if !live.is_empty() => {
                     let (handle, _) = live.remove(pick(k, live.len()));

@@ -10,6 +10,7 @@
 
 mod body;
 mod config;
+mod map_watch;
 mod near_walls;
 mod neighbours;
 mod resolve;

@@ -5,8 +5,9 @@
 //! segments, scattered over the map: about a fifth of a crowd step when done for every
 //! moving circle every step. But a circle moves a fraction of a cell per step, so the
 //! walls are gathered once for its reach disc grown by a margin ([`MARGIN`]) and kept while
-//! the reach disc stays inside that larger disc and the map keeps its revision, the same
-//! bargain as Verlet neighbour lists (Verlet 1967) make for particle pairs.
+//! the reach disc stays inside that larger disc and the map does not change near it (see
+//! `map_watch`), the same bargain as Verlet neighbour lists (Verlet 1967) make for particle
+//! pairs.
 //!
 //! The kept list gives exactly the contacts the exact list would: it holds, in the same
 //! relative order (temporary segments, then cells row by row), every wall touching the
@@ -18,6 +19,7 @@
 //! boxes, because every pass tests every kept wall, and a box's corners hold walls a
 //! circle never reaches.
 
+use super::map_watch::{MapChange, MapWatch};
 use crate::geometry::Circle;
 use crate::query::Capsule;
 use crate::tiles::{SegmentFlags, TileMap};
@@ -34,11 +36,10 @@ enum Near {
     /// Nothing.
     #[default]
     Unknown,
-    /// The walls with one of `mask`'s flags that touch `area`, at `start..end` of the pool,
-    /// while the map has revision `revision`.
+    /// The walls with one of `mask`'s flags that touch `area`, at `start..end` of the pool
+    /// (until the map changes near `area`: see [`NearWalls::begin`]).
     Listed {
         area: Circle,
-        revision: u64,
         mask: SegmentFlags,
         start: u32,
         end: u32,
@@ -53,10 +54,25 @@ pub(super) struct NearWalls {
 }
 
 impl NearWalls {
-    /// Makes room for `n` circles and drops the pool's unlisted capsules once they
-    /// outnumber the listed ones. Call before a resolve.
-    pub fn begin(&mut self, n: usize) {
+    /// Makes room for `n` circles, forgets the lists the map's `change` since the last
+    /// resolve may have made wrong (the lists of areas that touch a changed region), and
+    /// drops the pool's unlisted capsules once they outnumber the listed ones. Call before a
+    /// resolve.
+    pub fn begin(&mut self, n: usize, change: MapChange, watch: &MapWatch) {
         self.near.resize(n, Near::Unknown);
+        match change {
+            MapChange::Unchanged => {}
+            MapChange::Local => {
+                for near in &mut self.near {
+                    if let Near::Listed { area, .. } = near
+                        && watch.touches(&area.aabb())
+                    {
+                        *near = Near::Unknown;
+                    }
+                }
+            }
+            MapChange::Everything => self.near.fill(Near::Unknown),
+        }
         // Capsules of the pool still listed by some circle.
         let live: usize = self
             .near
@@ -97,11 +113,10 @@ impl NearWalls {
         match self.near[c] {
             Near::Listed {
                 area,
-                revision,
                 mask: kept,
                 start,
                 end,
-            } if revision == map.revision() && kept == mask && inside(reach, slack, &area) => {
+            } if kept == mask && inside(reach, slack, &area) => {
                 return (start, end);
             }
             _ => {}
@@ -125,7 +140,6 @@ impl NearWalls {
         let (start, end) = (start as u32, kept as u32);
         self.near[c] = Near::Listed {
             area,
-            revision: map.revision(),
             mask,
             start,
             end,
@@ -176,7 +190,7 @@ mod tests {
     /// by the margin, in the map's order.
     fn fresh(map: &TileMap, reach: &Circle, mask: SegmentFlags) -> Vec<Capsule> {
         let mut near = NearWalls::default();
-        near.begin(1);
+        near.begin(1, MapChange::Everything, &MapWatch::default());
         let range = near.around(0, reach, mask, 0.0, map);
         near.walls(range).to_vec()
     }
@@ -187,10 +201,11 @@ mod tests {
         let mask = SegmentFlags::SOLID;
         let n = 1500;
         let mut near = NearWalls::default();
+        let mut watch = MapWatch::default();
         let mut compacted = false;
         for round in 0..40 {
             let before = near.pool.len();
-            near.begin(n);
+            near.begin(n, watch.update(&map), &watch);
             compacted |= near.pool.len() < before;
             for c in 0..n {
                 // Circles drift a little each round, so lists are both kept and renewed.
@@ -217,22 +232,28 @@ mod tests {
     }
 
     #[test]
-    fn an_edit_or_another_mask_renews_the_list() {
+    fn an_edit_near_or_another_mask_renews_the_list_and_an_edit_far_keeps_it() {
         let mut map = pillars();
         let mut near = NearWalls::default();
-        near.begin(1);
+        let mut watch = MapWatch::default();
+        let solid = ascii::tile_for_char('#').unwrap_or_else(|()| panic!("no tile for '#'"));
+        near.begin(1, watch.update(&map), &watch);
         let reach = Circle::new(Vec2::new(3.5, 4.5), 0.4);
         let first = near.around(0, &reach, SegmentFlags::SOLID, 0.0, &map);
         assert!(near.walls(first).is_empty(), "rows 3 to 5 are open floor");
+        // A block far away (the list's area reaches x 3.9 at most, the edit x 6 at least):
+        // the list is kept, not gathered again.
+        map.set_tile(crate::Cell::new(8, 4), solid)
+            .unwrap_or_else(|e| panic!("{e}"));
+        near.begin(1, watch.update(&map), &watch);
         assert_eq!(
             near.around(0, &reach, SegmentFlags::SOLID, 0.0, &map),
             first
         );
-        map.set_tile(
-            crate::Cell::new(4, 4),
-            ascii::tile_for_char('#').unwrap_or_else(|()| panic!("no tile for '#'")),
-        )
-        .unwrap_or_else(|e| panic!("{e}"));
+        // A block next to it: gathered again, with the new block's face.
+        map.set_tile(crate::Cell::new(4, 4), solid)
+            .unwrap_or_else(|e| panic!("{e}"));
+        near.begin(1, watch.update(&map), &watch);
         let after = near.around(0, &reach, SegmentFlags::SOLID, 0.0, &map);
         assert!(
             !near.walls(after).is_empty(),

@@ -28,6 +28,7 @@ use glam::Vec2;
 
 use super::body::BodyFilter;
 use super::config::{ResolveConfig, SlideMode, TimeOfImpact};
+use super::map_watch::{MapChange, MapWatch};
 use super::near_walls::NearWalls;
 use super::neighbours::Neighbours;
 use super::set::Body;
@@ -107,6 +108,8 @@ pub(crate) struct Scratch {
     /// The walls near each circle, kept between steps (statements about the map, so they
     /// stay true whichever circle they end up with).
     near: NearWalls,
+    /// The map as the last resolve saw it, to tell the memories what changed since.
+    watch: MapWatch,
     /// Per circle of the body being resolved, its range of `near`'s walls.
     wall_ranges: Vec<(u32, u32)>,
     /// The last resolve, to skip bodies blocked in place again.
@@ -125,7 +128,17 @@ impl Scratch {
         let gap = config.gap.max(0.0) * map.cell_size().min_element();
         self.load(bodies, gap);
         self.find_neighbours(config, map.cell_size().min_element());
-        self.settled.begin(&self.position, map.revision(), config);
+        let change = self.watch.update(map);
+        self.near.begin(self.circles.len(), change, &self.watch);
+        self.settled
+            .begin(&self.position, change != MapChange::Everything, config);
+        if change == MapChange::Local {
+            for (c, area) in self.boxes.iter().enumerate() {
+                if self.watch.touches(area) {
+                    self.settled.wake(self.circles[c].body as usize);
+                }
+            }
+        }
         let mut report = ResolveReport::default();
         for (b, body) in bodies.iter_mut().enumerate() {
             let (start, motion) = (self.position[b], self.motion[b]);
@@ -211,7 +224,6 @@ impl Scratch {
         }));
         self.boxes.clear();
         self.boxes.extend(self.reach_discs.iter().map(Circle::aabb));
-        self.near.begin(self.circles.len());
     }
 
     /// The circles each circle may meet: pairs of different bodies that collide by filter

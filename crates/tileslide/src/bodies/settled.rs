@@ -2,7 +2,7 @@
 //! changed since, is blocked in place again, so it is not swept again.
 //!
 //! A body's resolved move is a function of what it sees: its position and proposed move,
-//! the walls (the map's [`revision`](crate::TileMap)), the resolve settings, and the
+//! the walls within its reach, the resolve settings, and the
 //! positions of the bodies within its reach, as seen in slot order (a lower slot where it
 //! ended this step, a higher one where it ended the last). So when all of that is unchanged,
 //! the move is unchanged, bit for bit. The memory keeps each body's inputs and whether it
@@ -15,9 +15,11 @@
 //! changes nothing else: positions and the report are the same as without it, which a model
 //! test checks against a resolver without memory.
 //!
-//! Anything the memory cannot see invalidates it: adding or removing bodies or changing a
-//! filter ([`Settled::forget`]), another map or a map edit (revision), other settings, and
-//! any body not where the last resolve left it (a teleport, a resolve not integrated).
+//! A map edit disturbs the bodies whose reach disc touches the region it changed (see
+//! `map_watch`). Anything the memory cannot see invalidates it: adding or removing bodies
+//! or changing a filter ([`Settled::forget`]), another map or a change the map's edit
+//! journal cannot place, other settings, and any body not where the last resolve left it
+//! (a teleport, a resolve not integrated).
 
 use glam::Vec2;
 
@@ -56,7 +58,6 @@ pub(crate) struct Settled {
     /// and next step.
     disturbed: Vec<bool>,
     disturbed_next: Vec<bool>,
-    map_revision: Option<u64>,
     config: Option<ResolveConfig>,
     /// Bodies skipped by the current (or last) resolve.
     skipped: usize,
@@ -69,10 +70,12 @@ impl Settled {
     }
 
     /// Starts a resolve of bodies at `positions`: keeps the memory if everything it cannot
-    /// see per body is unchanged, and every body is where the last resolve left it.
-    pub fn begin(&mut self, positions: &[Vec2], map_revision: u64, config: &ResolveConfig) {
+    /// see per body is unchanged (the map is the same, or `map_kept`: changed only where
+    /// the caller then [wakes](Self::wake) the bodies near), and every body is where the
+    /// last resolve left it.
+    pub fn begin(&mut self, positions: &[Vec2], map_kept: bool, config: &ResolveConfig) {
         let same = self.bodies.len() == positions.len()
-            && self.map_revision == Some(map_revision)
+            && map_kept
             && self.config.as_ref() == Some(config)
             // `==` on floats: a NaN never matches, so an unknown end never does either.
             && self.bodies.iter().zip(positions).all(|(m, &p)| m.end == p);
@@ -83,7 +86,6 @@ impl Settled {
             self.disturbed_next.resize(positions.len(), false);
         }
         self.skipped = 0;
-        self.map_revision = Some(map_revision);
         self.config = Some(*config);
         std::mem::swap(&mut self.disturbed, &mut self.disturbed_next);
         self.disturbed_next.clear();
@@ -141,6 +143,12 @@ impl Settled {
         self.bodies[b] = Memory { end: at, ..UNKNOWN };
     }
 
+    /// Something within body `b`'s reach changed (the map, near it): it is resolved this
+    /// step.
+    pub fn wake(&mut self, b: usize) {
+        self.disturbed[b] = true;
+    }
+
     /// Body `mover` moved, and body `other`'s reach disc touches its own: `other` sees the change
     /// this step if it is resolved later, the next step otherwise.
     pub fn disturb(&mut self, mover: usize, other: usize) {
@@ -190,13 +198,15 @@ mod tests {
         assert_eq!(skipped[3..], [1, 1, 1], "{skipped:?}");
         let corner = bodies.get(hero).unwrap().position();
         assert!(corner.x > 6.59 && corner.y < 1.41, "{corner}");
-        // A map edit far away still wakes it: the memory keys on the map's revision.
-        map.set_tile(
-            Cell::new(2, 3),
-            Some(ascii::tile_for_char('#').unwrap().unwrap()),
-        )
-        .unwrap();
+        // A map edit far away does not wake it (the region an edit changes is its cell
+        // grown by two cells, here x < 5.25; the hero reaches x > 5.7) ...
+        let wall = Some(ascii::tile_for_char('#').unwrap().unwrap());
+        map.set_tile(Cell::new(2, 3), wall).unwrap();
+        assert_eq!(skips(&mut bodies, &map, &push, 3), [1, 1, 1]);
+        // ... one near it does.
+        map.set_tile(Cell::new(5, 2), wall).unwrap();
         assert_eq!(skips(&mut bodies, &map, &push, 3), [0, 1, 1]);
+        assert_eq!(bodies.get(hero).unwrap().position(), corner);
         // So does a body walking up to it (it is resolved first: a lower slot).
         bodies.remove(hero).unwrap();
         let walker = bodies

@@ -131,11 +131,11 @@ pub struct TileMap {
     placed: usize,
     pub(crate) store: SegmentStore,
     pub(crate) temporaries: Vec<TemporarySegment>,
-    /// Changes whenever what the map holds changes (see [`next_revision`]).
-    revision: u64,
-    /// Changes whenever its tiles change (not its temporaries): what a navigation grid
+    /// Changes whenever its tiles change (see [`next_revision`]): what a navigation grid
     /// built from the map compares to know it is current.
     tiles_revision: u64,
+    /// Changes whenever its temporary segments change.
+    temporaries_revision: u64,
     /// The latest tile edits, oldest first: each the tiles revision before it and the cell
     /// (see [`TileMap::edits_since`]); at most [`EDIT_JOURNAL`] of them.
     journal: VecDeque<(u64, Cell)>,
@@ -169,8 +169,9 @@ fn checked_size(width: u32, height: u32, origin: Vec2) -> Result<u64, MapError> 
 }
 
 /// A number no map has had yet: every new map and every edit takes one, so two maps with the
-/// same revision hold the same tiles and temporaries (a clone keeps its original's until it
-/// is edited). Memories of a map's contents (the settled bodies of a resolve) compare it.
+/// same tiles revision hold the same tiles, and two with the same temporaries revision the
+/// same temporaries (a clone keeps its original's until it is edited). Memories of a map's
+/// contents (a navigation grid, the resolver's kept walls and settled bodies) compare them.
 fn next_revision() -> u64 {
     static NEXT: AtomicU64 = AtomicU64::new(0);
     NEXT.fetch_add(1, Ordering::Relaxed)
@@ -240,8 +241,8 @@ impl TileMap {
             placed,
             store,
             temporaries: Vec::new(),
-            revision: next_revision(),
             tiles_revision: next_revision(),
+            temporaries_revision: next_revision(),
             journal: VecDeque::new(),
             scratch: Default::default(),
         }
@@ -380,8 +381,7 @@ impl TileMap {
             self.journal.pop_front();
         }
         self.journal.push_back((self.tiles_revision, cell));
-        self.revision = next_revision();
-        self.tiles_revision = self.revision;
+        self.tiles_revision = next_revision();
         let count = |map: &Self, t: u32| map.shape_of_raw(t).map_or(0, |s| s.segments().len());
         self.placed = self.placed - count(self, old) + count(self, raw);
         // Links read the active segments of the 3×3 block around a cell, and active segments
@@ -606,7 +606,7 @@ impl TileMap {
     /// [`clear_temporaries`](Self::clear_temporaries). Refused if non-finite or degenerate.
     pub fn add_temporary(&mut self, segment: TemporarySegment) -> Result<(), MapError> {
         self.temporaries.push(segment.validated()?);
-        self.revision = next_revision();
+        self.temporaries_revision = next_revision();
         Ok(())
     }
 
@@ -614,7 +614,7 @@ impl TileMap {
     pub fn clear_temporaries(&mut self) {
         if !self.temporaries.is_empty() {
             self.temporaries.clear();
-            self.revision = next_revision();
+            self.temporaries_revision = next_revision();
         }
     }
 
@@ -623,14 +623,14 @@ impl TileMap {
         let before = self.temporaries.len();
         self.temporaries.retain(|t| t.owner != owner);
         if self.temporaries.len() != before {
-            self.revision = next_revision();
+            self.temporaries_revision = next_revision();
         }
     }
 
-    /// Changes with every edit of the tiles or temporaries; equal for two maps only if
-    /// they hold the same (a map and its unedited clones).
-    pub(crate) fn revision(&self) -> u64 {
-        self.revision
+    /// Changes with every change of the temporary segments; equal for two maps only if
+    /// they hold the same temporaries (a map and its clones, until one changes them).
+    pub(crate) fn temporaries_revision(&self) -> u64 {
+        self.temporaries_revision
     }
 
     /// Changes with every edit of the tiles (not of the temporaries).
