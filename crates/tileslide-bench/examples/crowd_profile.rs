@@ -1,9 +1,9 @@
 //! Runs the "crowd" scene with tileslide alone, for profilers (perf, callgrind):
-//! `cargo run --release -p tileslide-bench --example crowd_profile -- [N] [steps] [edits]`.
-//! `edits` is `none` (the scene as BENCHMARKS.md has it), `dig` (a wall cell next to the
-//! floor dug out every step, as a player digs a dungeon) or `platform` (a temporary segment
-//! submitted anew every step, one cell long and moving 0.05 cells a step): what map edits
-//! cost the resolver's memories.
+//! `cargo run --release -p tileslide-bench --example crowd_profile -- [N] [steps] [edits] [k]`.
+//! `edits` is `none` (the scene as BENCHMARKS.md has it), `dig` (`k` wall cells next to the
+//! floor dug out every step, as a player digs a dungeon) or `platform` (`k` temporary
+//! segments submitted anew every step, each one cell long and moving 0.05 cells a step):
+//! what map edits cost the resolver's memories. `k` is 1 unless given.
 //! Prints the step times and the resolve report (contacts, bodies cut short); figures that
 //! compare with peers come from `tileslide bench crowd`. Also prints a checksum of the final
 //! positions, bit for bit, so that two builds can be shown to move every body exactly the
@@ -44,6 +44,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if !["none", "dig", "platform"].contains(&edits.as_str()) {
         return Err(format!("edits must be none, dig or platform, not {edits:?}").into());
     }
+    let k: usize = match args.next() {
+        Some(s) => s.parse().map_err(|e| format!("k: {s:?}: {e}"))?,
+        None => 1,
+    };
     let grid = dungeon256();
     let crowd = scene_crowd(&grid, n);
     let mut map = grid.to_tile_map()?;
@@ -73,17 +77,27 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (mut moving, mut contacts, mut cut) = (0, 0, 0);
     for step in 0..steps {
         match edits.as_str() {
-            "dig" => map.set_tile(faces[step * 7919 % faces.len()], None)?,
+            "dig" => {
+                for e in 0..k {
+                    map.set_tile(faces[(step * k + e) * 7919 % faces.len()], None)?;
+                }
+            }
             "platform" => {
                 map.clear_temporaries();
-                let a = Vec2::new(100.0 + 0.05 * step as f32, 100.5);
-                map.add_temporary(TemporarySegment {
-                    segment: Segment::new(a, a + Vec2::X),
-                    normal: Vec2::NEG_Y,
-                    flags: SegmentFlags::SOLID,
-                    owner: Owner(1),
-                    velocity: Vec2::new(0.05, 0.0),
-                })?;
+                for p in 0..k {
+                    // Eight a row, three cells apart; rows seven cells apart.
+                    let a = Vec2::new(
+                        100.0 + 0.05 * step as f32 + 3.0 * (p % 8) as f32,
+                        100.5 + 7.0 * (p / 8) as f32,
+                    );
+                    map.add_temporary(TemporarySegment {
+                        segment: Segment::new(a, a + Vec2::X),
+                        normal: Vec2::NEG_Y,
+                        flags: SegmentFlags::SOLID,
+                        owner: Owner(p as u64),
+                        velocity: Vec2::new(0.05, 0.0),
+                    })?;
+                }
             }
             _ => {}
         }

@@ -18,15 +18,18 @@
 //!
 //! Anything the journal cannot account for (another map, more edits than it keeps, more
 //! changes than [`MAX_REGIONS`]) changes everything.
+//!
+//! The changed boxes are marked on a bitmap of the map's cells, so asking whether a disc's
+//! box touches any of them reads the few cells the box covers, however many changed: every
+//! kept list and every body asks once a step.
 
 use glam::Vec2;
 
 use crate::geometry::{Aabb, Segment};
 use crate::tiles::{SegmentFlags, TileMap};
 
-/// Most changed boxes tracked one by one; past this, every memory is dropped (each memory
-/// is tested against each box).
-const MAX_REGIONS: usize = 64;
+/// Most changed boxes tracked one by one; past this, every memory is dropped.
+const MAX_REGIONS: usize = 1024;
 
 /// How far past its cell a tile edit changes walls, in cells: two (the relinked ends),
 /// plus a quarter for rounding in the segments' corners.
@@ -54,6 +57,8 @@ pub(super) struct MapWatch {
     temporaries: Vec<TemporaryWall>,
     /// The boxes outside which nothing changed, when the change is local.
     regions: Vec<Aabb>,
+    /// The cells those boxes touch.
+    marks: CellMarks,
 }
 
 impl MapWatch {
@@ -100,12 +105,17 @@ impl MapWatch {
                 }
             }
         }
+        self.marks.clear();
         if everything {
             self.regions.clear();
             MapChange::Everything
         } else if self.regions.is_empty() {
             MapChange::Unchanged
         } else {
+            self.marks.fit(map);
+            for region in &self.regions {
+                self.marks.mark(region);
+            }
             MapChange::Local
         }
     }
@@ -116,9 +126,10 @@ impl MapWatch {
         &self.regions
     }
 
-    /// Whether `area` touches a box a local change happened in.
+    /// Whether `area` may touch a box the last [`MapChange::Local`] change happened in:
+    /// true whenever it does (and sometimes when it only shares a cell with one).
     pub fn touches(&self, area: &Aabb) -> bool {
-        self.regions.iter().any(|r| r.overlaps(area))
+        self.marks.any(area)
     }
 
     fn remember_temporaries(&mut self, map: &TileMap) {
@@ -131,11 +142,138 @@ impl MapWatch {
     }
 }
 
+/// A bitmap of a map's cells: which cells a set of boxes touch.
+///
+/// A box is taken to touch the cells from the one holding its min corner to the one
+/// holding its max corner, clamped to the map: points outside the map count as in the
+/// nearest cell of its border. The cell of a point is a monotone function of the point
+/// (rounded subtraction, multiplication by a positive number, clamp and truncation all keep
+/// order), so two boxes that share a point both touch that point's cell: [`Self::any`]
+/// never misses a box that [`Aabb::overlaps`] would find.
+#[derive(Clone, Debug, Default)]
+struct CellMarks {
+    origin: Vec2,
+    inv_cell: Vec2,
+    /// The last column and row, as floats (exact: maps have fewer than 2²⁴ cells a side).
+    last: Vec2,
+    width: usize,
+    height: usize,
+    bits: Vec<u64>,
+    /// The words of `bits` with a bit set, to clear them.
+    set: Vec<usize>,
+    /// A box holding every marked box: most asks are far from every change.
+    bounds: Option<Aabb>,
+}
+
+impl CellMarks {
+    /// Fits the bitmap to `map`'s cells (all clear).
+    fn fit(&mut self, map: &TileMap) {
+        let (width, height) = (map.width() as usize, map.height() as usize);
+        self.origin = map.origin();
+        self.inv_cell = map.cell_size().recip();
+        self.last = Vec2::new(width as f32 - 1.0, height as f32 - 1.0);
+        if (width, height) != (self.width, self.height) {
+            (self.width, self.height) = (width, height);
+            self.bits.clear();
+            self.bits.resize((width * height).div_ceil(64), 0);
+        }
+    }
+
+    /// The columns and rows of the cells `b` touches.
+    fn cells(&self, b: &Aabb) -> (usize, usize, usize, usize) {
+        let cell = |p: Vec2| {
+            // Clamped to the map first, so truncation is the floor: no call to libm's
+            // `floorf` (x86-64 has no rounding instruction before SSE4.1). (`clamp` takes
+            // NaN to 0.)
+            let at = ((p - self.origin) * self.inv_cell).clamp(Vec2::ZERO, self.last);
+            (at.x as u32 as usize, at.y as u32 as usize)
+        };
+        let ((c0, r0), (c1, r1)) = (cell(b.min), cell(b.max));
+        (c0, r0, c1, r1)
+    }
+
+    fn mark(&mut self, b: &Aabb) {
+        self.bounds = Some(self.bounds.map_or(*b, |bounds| bounds.union(b)));
+        let (c0, r0, c1, r1) = self.cells(b);
+        for row in r0..=r1 {
+            for col in c0..=c1 {
+                let i = row * self.width + col;
+                if self.bits[i / 64] == 0 {
+                    self.set.push(i / 64);
+                }
+                self.bits[i / 64] |= 1 << (i % 64);
+            }
+        }
+    }
+
+    fn any(&self, b: &Aabb) -> bool {
+        if !self.bounds.is_some_and(|bounds| bounds.overlaps(b)) {
+            return false;
+        }
+        let (c0, r0, c1, r1) = self.cells(b);
+        (r0..=r1).any(|row| {
+            // The row's cells `c0..=c1` are consecutive bits: a mask on each word they
+            // span (most often one).
+            let (first, last) = (row * self.width + c0, row * self.width + c1);
+            (first / 64..=last / 64).any(|w| {
+                let from = if w == first / 64 { first % 64 } else { 0 };
+                let to = if w == last / 64 { last % 64 } else { 63 };
+                let mask = (u64::MAX >> (63 - to)) & (u64::MAX << from);
+                self.bits[w] & mask != 0
+            })
+        })
+    }
+
+    fn clear(&mut self) {
+        for &w in &self.set {
+            self.bits[w] = 0;
+        }
+        self.set.clear();
+        self.bounds = None;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::io::ascii::{self, TEST_ROOM};
     use crate::{Cell, Owner, TemporarySegment};
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The cell bitmap finds every box that overlaps a marked one, inside the map or
+        /// outside it, whatever the map's origin and cell size.
+        #[test]
+        fn cell_marks_never_miss_an_overlap(
+            origin in (-50.0f32..50.0, -50.0f32..50.0),
+            cell in (0.25f32..3.0, 0.25f32..3.0),
+            marked in prop::collection::vec(boxes(), 1..6),
+            asked in prop::collection::vec(boxes(), 1..40),
+        ) {
+            let text = "########\n#......#\n#......#\n########";
+            let map = ascii::parse(text, "marks.txt", 1.0).unwrap_or_else(|e| panic!("{e}"));
+            let mut marks = CellMarks::default();
+            marks.fit(&map);
+            marks.origin = Vec2::new(origin.0, origin.1);
+            marks.inv_cell = Vec2::new(cell.0, cell.1).recip();
+            for b in &marked {
+                marks.mark(b);
+            }
+            for b in &asked {
+                if marked.iter().any(|m| m.overlaps(b)) {
+                    prop_assert!(marks.any(b), "{:?} overlaps a marked box", b);
+                }
+            }
+            marks.clear();
+            prop_assert!(marks.bits.iter().all(|&w| w == 0) && !marks.any(&marked[0]));
+        }
+    }
+
+    /// Boxes around and beyond a map of 8 × 4 cells of up to 3 units at up to ±50.
+    fn boxes() -> impl Strategy<Value = Aabb> {
+        (-80.0f32..80.0, -80.0f32..80.0, 0.0f32..30.0, 0.0f32..30.0)
+            .prop_map(|(x, y, w, h)| Aabb::from_corners(Vec2::new(x, y), Vec2::new(x + w, y + h)))
+    }
 
     fn room() -> TileMap {
         ascii::parse(TEST_ROOM, "room.txt", 1.0).unwrap_or_else(|e| panic!("{e}"))
@@ -171,8 +309,10 @@ mod tests {
         // Cell (0, 3) spans x 0..1, y 3..4; two and a quarter cells around it.
         assert_eq!(region.min, Vec2::new(-2.25, 0.75));
         assert_eq!(region.max, Vec2::new(3.25, 6.25));
+        // (Asked by cell: a box that only shares a cell with the region may count as
+        // touching it too.)
         let near = Aabb::from_corners(Vec2::new(3.0, 5.0), Vec2::new(3.5, 5.5));
-        let far = Aabb::from_corners(Vec2::new(3.5, 5.0), Vec2::new(4.0, 5.5));
+        let far = Aabb::from_corners(Vec2::new(4.0, 5.0), Vec2::new(4.5, 5.5));
         assert!(watch.touches(&near) && !watch.touches(&far));
         assert_eq!(watch.update(&map), MapChange::Unchanged, "seen already");
     }
