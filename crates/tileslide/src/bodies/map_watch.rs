@@ -40,7 +40,8 @@ const EDIT_REACH: f32 = 2.25;
 pub(super) enum MapChange {
     /// Not at all: every memory holds.
     Unchanged,
-    /// Only inside [`MapWatch::regions`]: memories of discs that touch none of them hold.
+    /// Only inside some boxes ([`MapWatch::touches`]): memories of discs that touch none of
+    /// them hold.
     Local,
     /// In a way the watch cannot place: no memory holds.
     Everything,
@@ -154,7 +155,8 @@ impl MapWatch {
 struct CellMarks {
     origin: Vec2,
     inv_cell: Vec2,
-    /// The last column and row, as floats (exact: maps have fewer than 2²⁴ cells a side).
+    /// The last column and row, as floats (rounded up past 2²⁴ cells a side, so the
+    /// indices are clamped again as integers).
     last: Vec2,
     width: usize,
     height: usize,
@@ -186,7 +188,8 @@ impl CellMarks {
             // `floorf` (x86-64 has no rounding instruction before SSE4.1). (`clamp` takes
             // NaN to 0.)
             let at = ((p - self.origin) * self.inv_cell).clamp(Vec2::ZERO, self.last);
-            (at.x as u32 as usize, at.y as u32 as usize)
+            let col = (at.x as u32 as usize).min(self.width - 1);
+            (col, (at.y as u32 as usize).min(self.height - 1))
         };
         let ((c0, r0), (c1, r1)) = (cell(b.min), cell(b.max));
         (c0, r0, c1, r1)
