@@ -60,8 +60,8 @@ impl Explored {
             .then(|| cell.row as usize * self.width as usize + cell.col as usize)
     }
 
-    /// Marks what a hero at `from` sees on `map`: the open squares within [`SIGHT`] whose
-    /// centres it has a line of sight to (`sees`), and the treasure at `treasure`.
+    /// Marks what a hero at `from` sees on `map`: the open squares within `SIGHT` (6 cells)
+    /// whose centres it has a line of sight to (`sees`), and the treasure at `treasure`.
     pub fn look(
         &mut self,
         map: &TileMap,

@@ -29,7 +29,7 @@ use crate::peers::to_parry;
 /// 3. the events are applied to this peer's own pair set (rapier keeps its pair map private):
 ///    per circle, the list of higher-index circles it forms a pair with;
 /// 4. that pair set is filtered down to the pairs whose exact boxes
-///    ([`broad_boxes`](tileslide_scenes::broad_boxes), touching included) overlap.
+///    ([`broad_boxes`], touching included) overlap.
 ///
 /// Rapier's pairs are a superset of the exact ones (fat boxes, kept until they separate),
 /// hence the filter of step 4, which makes the reported set exact. All four steps are timed:

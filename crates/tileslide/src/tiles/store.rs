@@ -52,7 +52,7 @@ pub(crate) type Links = [Link; 2];
 pub(crate) struct SegmentStore {
     /// Per cell, the pool index of its first active segment, or [`NO_SEGMENTS`].
     starts: Vec<u32>,
-    /// Per cell, its shape summary (see [`KIND_GENERAL`]): one byte, so the walk's per-step
+    /// Per cell, its shape summary (see [`KIND_GENERAL`](super::face_kind::KIND_GENERAL)): one byte, so the walk's per-step
     /// read stays in cache.
     kinds: Vec<u8>,
     hot: Vec<HotSegment>,
@@ -183,7 +183,7 @@ impl SegmentStore {
     }
 
     /// Replaces the active segments of cell `index` (their `count` is set here) and its
-    /// summary `kind` (see [`kind_of`]); their links are cleared and both ends capped. The caller has checked
+    /// summary `kind` (see [`kind_of`](super::face_kind::kind_of)); their links are cleared and both ends capped. The caller has checked
     /// [`has_room_for`](Self::has_room_for).
     pub fn set_cell(&mut self, index: usize, segments: &[HotSegment], kind: u8) {
         self.kinds[index] = kind;

@@ -1,5 +1,5 @@
 //! `.tmx` maps and `.tsx` tile sets through the `tiled` crate, after the first pass of
-//! [`tmx_scan`](super::tmx_scan) has checked every file it reads.
+//! [`super::tmx_scan`] has checked every file it reads.
 
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
