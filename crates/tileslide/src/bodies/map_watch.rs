@@ -245,37 +245,85 @@ mod tests {
 
     proptest! {
         /// The cell bitmap finds every box that overlaps a marked one, inside the map or
-        /// outside it, whatever the map's origin and cell size.
+        /// outside it, whatever the map's origin and cell size: a map of 100 × 20 cells
+        /// (rows that cross the bitmap's words) of up to three units a side; marked boxes of
+        /// up to 40 units, asked ones of up to three (points too).
         #[test]
         fn cell_marks_never_miss_an_overlap(
             origin in (-50.0f32..50.0, -50.0f32..50.0),
             cell in (0.25f32..3.0, 0.25f32..3.0),
-            marked in prop::collection::vec(boxes(), 1..6),
-            asked in prop::collection::vec(boxes(), 1..40),
+            marked in prop::collection::vec(boxes(40.0), 1..6),
+            asked in prop::collection::vec(boxes(3.0), 1..200),
         ) {
-            let text = "########\n#......#\n#......#\n########";
-            let map = ascii::parse(text, "marks.txt", 1.0).unwrap_or_else(|e| panic!("{e}"));
+            let row = ".".repeat(100);
+            let text = [row.as_str(); 20].join("\n");
+            let map = ascii::parse(&text, "marks.txt", 1.0).unwrap_or_else(|e| panic!("{e}"));
+            let origin = Vec2::new(origin.0, origin.1);
+            let at = |b: &Aabb| Aabb::from_corners(b.min + origin, b.max + origin);
             let mut marks = CellMarks::default();
             marks.fit(&map);
-            marks.origin = Vec2::new(origin.0, origin.1);
+            marks.origin = origin;
             marks.inv_cell = Vec2::new(cell.0, cell.1).recip();
             for b in &marked {
-                marks.mark(b);
+                marks.mark(&at(b));
             }
             for b in &asked {
-                if marked.iter().any(|m| m.overlaps(b)) {
-                    prop_assert!(marks.any(b), "{:?} overlaps a marked box", b);
+                if marked.iter().any(|m| at(m).overlaps(&at(b))) {
+                    prop_assert!(marks.any(&at(b)), "{:?} overlaps a marked box", at(b));
                 }
             }
             marks.clear();
-            prop_assert!(marks.bits.iter().all(|&w| w == 0) && !marks.any(&marked[0]));
+            prop_assert!(marks.bits.iter().all(|&w| w == 0) && !marks.any(&at(&marked[0])));
         }
     }
 
-    /// Boxes around and beyond a map of 8 × 4 cells of up to 3 units at up to ±50.
-    fn boxes() -> impl Strategy<Value = Aabb> {
-        (-80.0f32..80.0, -80.0f32..80.0, 0.0f32..30.0, 0.0f32..30.0)
-            .prop_map(|(x, y, w, h)| Aabb::from_corners(Vec2::new(x, y), Vec2::new(x + w, y + h)))
+    /// A marked cell is found by every box whose row span covers it, and by no other:
+    /// spans that start, end or pass at every bit of the bitmap's words. (A second mark in
+    /// another row, at the other end, makes the bounding box wide, so the bitmap decides.)
+    #[test]
+    fn a_marked_cell_is_found_by_exactly_the_spans_that_cover_it() {
+        let row = ".".repeat(100);
+        let text = [row.as_str(); 3].join("\n");
+        let map = ascii::parse(&text, "marks.txt", 1.0).unwrap_or_else(|e| panic!("{e}"));
+        let mut marks = CellMarks::default();
+        marks.fit(&map);
+        let centre = |col: usize, row: usize| Vec2::new(col as f32 + 0.5, row as f32 + 0.5);
+        for (col, row) in (0..100).flat_map(|c| (0..3).map(move |r| (c, r))) {
+            for (c, r) in [(col, row), (99 - col, (row + 2) % 3)] {
+                marks.mark(&Aabb::from_corners(centre(c, r), centre(c, r)));
+            }
+            for (from, to) in (0..100).flat_map(|a| (a..100.min(a + 70)).map(move |b| (a, b))) {
+                let span = Aabb::from_corners(centre(from, row), centre(to, row));
+                assert_eq!(
+                    marks.any(&span),
+                    (from..=to).contains(&col),
+                    "cell ({col}, {row}), span {from}..={to}"
+                );
+            }
+            let above = Aabb::from_corners(centre(0, (row + 1) % 3), centre(99, (row + 1) % 3));
+            assert!(!marks.any(&above), "cell ({col}, {row}): another row");
+            marks.clear();
+        }
+    }
+
+    /// Boxes (offsets from the map's origin) from 10 units before the map to 10 past its
+    /// largest extent, of up to `side` units a side, a fifth of them points.
+    fn boxes(side: f32) -> impl Strategy<Value = Aabb> {
+        (
+            -10.0f32..310.0,
+            -10.0f32..70.0,
+            0.0..side,
+            0.0..side,
+            0u8..5,
+        )
+            .prop_map(|(x, y, w, h, point)| {
+                let size = if point == 0 {
+                    Vec2::ZERO
+                } else {
+                    Vec2::new(w, h)
+                };
+                Aabb::from_corners(Vec2::new(x, y), Vec2::new(x, y) + size)
+            })
     }
 
     fn room() -> TileMap {
