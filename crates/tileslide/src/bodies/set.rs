@@ -343,6 +343,14 @@ impl Bodies {
     /// overlap and none crosses a wall (see [`ResolveConfig`] for the options). Bodies
     /// without a proposed move stay put and the others slide around them. Read the result
     /// with [`Body::resolved_move`]; [`integrate`](Self::integrate) applies it.
+    ///
+    /// Between calls it remembers what makes the next one cheaper (which bodies may meet,
+    /// the walls near each, which bodies were blocked in place); none of it changes a
+    /// result. Editing the map ([`TileMap::set_tile`], temporary segments) costs only near
+    /// the change: bodies far from it keep what was remembered, and temporary segments
+    /// cleared and submitted again unchanged cost nothing. Adding or removing a body,
+    /// changing a filter or the settings, or passing another map makes the next call resolve
+    /// every moving body again.
     pub fn resolve(&mut self, map: &TileMap) -> ResolveReport {
         let config = self.config;
         let mut scratch = std::mem::take(&mut self.scratch);
