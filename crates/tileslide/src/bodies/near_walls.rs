@@ -241,7 +241,7 @@ mod tests {
         let reach = Circle::new(Vec2::new(3.5, 4.5), 0.4);
         let first = near.around(0, &reach, SegmentFlags::SOLID, 0.0, &map);
         assert!(near.walls(first).is_empty(), "rows 3 to 5 are open floor");
-        // A block far away (the list's area reaches x 3.9 at most, the edit x 6 at least):
+        // A block far away (the list's area reaches x 4.08, the edit's region x 5.75):
         // the list is kept, not gathered again.
         map.set_tile(crate::Cell::new(8, 4), solid)
             .unwrap_or_else(|e| panic!("{e}"));

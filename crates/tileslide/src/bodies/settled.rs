@@ -2,13 +2,13 @@
 //! changed since, is blocked in place again, so it is not swept again.
 //!
 //! A body's resolved move is a function of what it sees: its position and proposed move,
-//! the walls within its reach, the resolve settings, and the
-//! positions of the bodies within its reach, as seen in slot order (a lower slot where it
-//! ended this step, a higher one where it ended the last). So when all of that is unchanged,
-//! the move is unchanged, bit for bit. The memory keeps each body's inputs and whether it
-//! stayed put, and the other side of the argument is a *disturbed* flag: a body that moves
-//! flags every body whose reach disc touches its own (its disc holds its whole path, start
-//! and end), for this step when they are resolved after it and for the next one otherwise.
+//! the walls within its reach, the resolve settings, and the positions of the bodies
+//! within its reach, as seen in slot order (a lower slot where it ended this step, a
+//! higher one where it ended the last). So when all of that is unchanged, the move is
+//! unchanged, bit for bit. The memory keeps each body's inputs and whether it stayed put,
+//! and the other side of the argument is a *disturbed* flag: a body that moves flags every
+//! body whose reach disc touches its own (its disc holds its whole path, start and end),
+//! for this step when they are resolved after it and for the next one otherwise.
 //!
 //! In a jammed crowd (bodies pressed into corners and into each other, each re-trying a
 //! blocked move every step with all its passes) this skips a third of the sweeps. The skip
