@@ -298,8 +298,11 @@ fn extreme_but_finite_cell_size_is_a_parameter_error_naming_the_cell_size() {
         assert!(text.contains(&format!("cell size {cell}")), "{text}");
     }
     // Sizes well inside f32's range work.
-    for cell in [1e-10f32, 1e-3, 0.5, 32.0, 1e10] {
+    for cell in [1e-10f32, 1e-3, 0.5, 32.0, 1e6] {
         let map = ascii::parse("#/", "ok.txt", cell).unwrap_or_else(|e| panic!("{cell}: {e}"));
         assert_eq!(map.cell_size(), Vec2::splat(cell));
     }
+    // A size whose map reaches past MAX_COORD is refused, naming the range.
+    let e = ascii::parse("#/", "maps/far.txt", 1e10).unwrap_err();
+    assert!(e.to_string().contains("MAX_COORD"), "{e}");
 }

@@ -124,3 +124,31 @@ fn cell_at_agrees_with_cell_corner_for_awkward_cell_sizes() {
         }
     }
 }
+
+#[test]
+fn a_map_reaching_past_max_coord_is_refused() {
+    use tileslide::MAX_COORD;
+    // 2^20 cells of 32 map units reach 2^25, past the coordinate range.
+    let mut set = TileSet::new(Vec2::splat(32.0)).unwrap();
+    set.insert(
+        TileId(1),
+        TileShape::polygon(&[
+            Vec2::ZERO,
+            Vec2::X * 32.0,
+            Vec2::splat(32.0),
+            Vec2::Y * 32.0,
+        ])
+        .unwrap(),
+    )
+    .unwrap();
+    let set = Arc::new(set);
+    let err = TileMap::new(set.clone(), 1 << 20, 1, Vec2::ZERO).unwrap_err();
+    assert!(matches!(err, MapError::OutOfRange { far_x, .. } if far_x == 33_554_432.0));
+    assert!(err.to_string().contains("MAX_COORD"), "{err}");
+    // An origin past the range, and one whose map ends exactly on it.
+    assert!(matches!(
+        TileMap::new(set.clone(), 1, 1, Vec2::new(0.0, -2.0 * MAX_COORD)),
+        Err(MapError::OutOfRange { .. })
+    ));
+    assert!(TileMap::new(set, 4, 4, Vec2::splat(MAX_COORD - 128.0)).is_ok());
+}

@@ -16,7 +16,6 @@ mod sweep_box;
 pub use aabb::Aabb;
 pub use circle::Circle;
 pub use limits::MAX_COORD;
-#[allow(unused_imports)]
 pub(crate) use limits::in_range;
 pub(crate) use normal::unit_normal;
 pub use ray::{PARALLEL_TOLERANCE, Ray, RaySegmentHit, cast_ray_segment};

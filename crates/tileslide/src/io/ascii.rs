@@ -30,7 +30,8 @@ use glam::Vec2;
 use super::error::{as_text, read_file};
 use super::{LoadError, LoadErrorKind, Location};
 use crate::tiles::{
-    MAX_CELLS, SegmentFlags, TileId, TileMap, TileSegment, TileSet, TileSetError, TileShape,
+    MAX_CELLS, MapError, SegmentFlags, TileId, TileMap, TileSegment, TileSet, TileSetError,
+    TileShape,
 };
 
 /// `#`: a solid square.
@@ -181,7 +182,14 @@ pub fn parse(text: &str, path: impl AsRef<Path>, cell: f32) -> Result<TileMap, L
         Vec2::ZERO,
         &tiles,
     )
-    .map_err(|e| err(Location::File, e.into()))
+    .map_err(|e| match e {
+        // Only the cell size the caller chose can carry a map this small that far.
+        MapError::OutOfRange { .. } => err(
+            Location::File,
+            LoadErrorKind::Parameter(format!("cell size {cell} is too large: {e}")),
+        ),
+        e => err(Location::File, e.into()),
+    })
 }
 
 #[cfg(test)]

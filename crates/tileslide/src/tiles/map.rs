@@ -11,7 +11,7 @@ use super::culling::{Side, active_segments};
 use super::face_kind::{canonical_faces, kind_of};
 use super::store::{HotSegment, Links, SegmentStore};
 use super::{Cell, SegmentFlags, TemporaryError, TemporarySegment, TileId, TileSet, TileShape};
-use crate::geometry::{Aabb, Segment};
+use crate::geometry::{Aabb, Segment, in_range};
 
 /// The most cells a map may have (2²⁶, e.g. 8192 × 8192).
 pub const MAX_CELLS: u64 = 1 << 26;
@@ -42,6 +42,27 @@ pub enum MapError {
         x: f32,
         /// y given.
         y: f32,
+    },
+    /// The map would reach past [`MAX_COORD`](crate::MAX_COORD) from the origin: its
+    /// corners are where every query and body would compute.
+    #[error(
+        "map of {width}×{height} cells at ({x}, {y}) reaches ({far_x}, {far_y}), past the \
+         ±{max} coordinate range (MAX_COORD)",
+        max = crate::MAX_COORD
+    )]
+    OutOfRange {
+        /// Width given.
+        width: u32,
+        /// Height given.
+        height: u32,
+        /// Origin x.
+        x: f32,
+        /// Origin y.
+        y: f32,
+        /// The far corner's x (origin + width × tile width).
+        far_x: f32,
+        /// The far corner's y.
+        far_y: f32,
     },
     /// A cell outside the map.
     #[error("cell {cell} is outside the {width}×{height} map")]
@@ -151,7 +172,7 @@ const EMPTY: u32 = u32::MAX;
 const EDIT_JOURNAL: usize = 4096;
 
 /// The number of cells of a `width × height` map at `origin`, or why it cannot be.
-fn checked_size(width: u32, height: u32, origin: Vec2) -> Result<u64, MapError> {
+fn checked_size(width: u32, height: u32, origin: Vec2, cell_size: Vec2) -> Result<u64, MapError> {
     if width == 0 || height == 0 {
         return Err(MapError::EmptySize { width, height });
     }
@@ -163,6 +184,17 @@ fn checked_size(width: u32, height: u32, origin: Vec2) -> Result<u64, MapError> 
         return Err(MapError::NonFiniteOrigin {
             x: origin.x,
             y: origin.y,
+        });
+    }
+    let far = origin + Vec2::new(width as f32, height as f32) * cell_size;
+    if !in_range(origin) || !in_range(far) {
+        return Err(MapError::OutOfRange {
+            width,
+            height,
+            x: origin.x,
+            y: origin.y,
+            far_x: far.x,
+            far_y: far.y,
         });
     }
     Ok(cells)
@@ -207,7 +239,7 @@ impl TileMap {
         height: u32,
         origin: Vec2,
     ) -> Result<Self, MapError> {
-        let cells = checked_size(width, height, origin)? as usize;
+        let cells = checked_size(width, height, origin, tile_set.tile_size())? as usize;
         Ok(Self::from_parts(
             tile_set,
             width,
@@ -289,7 +321,7 @@ impl TileMap {
         store: SegmentStore,
         placed: usize,
     ) -> Result<Self, MapError> {
-        let cells = checked_size(width, height, origin)? as usize;
+        let cells = checked_size(width, height, origin, tile_set.tile_size())? as usize;
         if tiles.len() != cells {
             return Err(MapError::WrongTileCount {
                 expected: cells,
