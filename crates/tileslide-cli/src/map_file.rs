@@ -13,7 +13,8 @@ use tileslide::io::{ascii, baked, replica};
 #[derive(Args, Debug)]
 pub struct MapArgs {
     /// The map: `.txt` ASCII map, `.bin` Replica Island level (needs `--tileset`), `.tsm`
-    /// baked map (`tileslide bake`), or `.tmx`/`.tmj` Tiled map (in Tiled's pixels, y down).
+    /// baked map (`tileslide bake`), or `.tmx`/`.tmj`/`.json` Tiled map (in Tiled's pixels,
+    /// y down).
     pub map: PathBuf,
     /// The tile set for maps that need one (Replica Island: `collision.bin`).
     #[arg(long, value_name = "FILE")]
@@ -59,9 +60,11 @@ impl MapFormat {
             Some("bin") => Ok(MapFormat::ReplicaIsland),
             Some("tsm") => Ok(MapFormat::Baked),
             Some("tmx") => Ok(MapFormat::TiledXml),
-            Some("tmj") => Ok(MapFormat::TiledJson),
+            // Tiled saves JSON maps as `.json` as often as `.tmj`; the loader tells a map from
+            // a tile set or other JSON by its content, and names what it found.
+            Some("tmj" | "json") => Ok(MapFormat::TiledJson),
             _ => bail!(
-                "{}: unknown map format (expected a .txt ASCII map, a .bin Replica Island level, a .tsm baked map or a .tmx/.tmj Tiled map)",
+                "{}: unknown map format (expected a .txt ASCII map, a .bin Replica Island level, a .tsm baked map or a .tmx/.tmj/.json Tiled map)",
                 path.display()
             ),
         }
@@ -74,7 +77,7 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
     let tiled = matches!(format, MapFormat::TiledXml | MapFormat::TiledJson);
     if args.layer.is_some() && !tiled {
         bail!(
-            "{}: --layer chooses the collision layer of a Tiled map (.tmx, .tmj); drop it",
+            "{}: --layer chooses the collision layer of a Tiled map (.tmx, .tmj, .json); drop it",
             args.map.display()
         );
     }

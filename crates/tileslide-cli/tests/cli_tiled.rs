@@ -234,3 +234,42 @@ fn simulate_runs_a_scene_on_a_tiled_map_in_either_format() {
         stderr(&o)
     );
 }
+
+#[test]
+fn a_tiled_json_map_named_json_loads_and_other_json_is_named() {
+    // Tiled saves JSON maps as `.json` as often as `.tmj`: the same cave, renamed, beside
+    // its tile set.
+    scratch(
+        "tiles.tsj",
+        &std::fs::read_to_string(example("tiles.tsj")).unwrap(),
+    );
+    let cave = scratch(
+        "cave.json",
+        &std::fs::read_to_string(example("cave.tmj")).unwrap(),
+    );
+    assert_eq!(info(cave.to_str().unwrap()), info(&example("cave.tmj")));
+    // A Tiled tile set saved as `.json` is not a map, and the error says what it is.
+    let set = scratch(
+        "tileset.json",
+        &std::fs::read_to_string(example("tiles.tsj")).unwrap(),
+    );
+    let o = tileslide(&["info", set.to_str().unwrap()]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains(&format!(
+            "{}: a Tiled tile set (\"type\": \"tileset\"), not a map",
+            set.display()
+        )),
+        "{}",
+        stderr(&o)
+    );
+    // Any other JSON (here a scene file) is not a map either.
+    let scene = scratch("scene_as_map.json", r#"{"map": "cave.txt", "bodies": []}"#);
+    let o = tileslide(&["info", scene.to_str().unwrap()]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("not a Tiled JSON map"),
+        "{}",
+        stderr(&o)
+    );
+}

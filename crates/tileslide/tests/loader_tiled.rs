@@ -955,7 +955,8 @@ fn bad_properties_and_shapes_are_named_with_their_tile() {
 fn files_that_are_not_tiled_maps_are_named() {
     let e = load_err(&example("cave.txt"));
     assert!(
-        e.to_string().contains("expected a .tmx or .tmj file"),
+        e.to_string()
+            .contains("expected a .tmx, .tmj or .json file"),
         "{e}"
     );
     let e = load_err(&scratch("latin1.tmx", b"<map name=\"caf\xe9\"/>"));
@@ -967,4 +968,35 @@ fn files_that_are_not_tiled_maps_are_named() {
     assert!(e.to_string().contains("root element is <tileset>"), "{e}");
     let e = load_err(&fixture("nowhere.tmx"));
     assert!(matches!(e.kind, LoadErrorKind::Io(_)), "{e}");
+}
+
+#[test]
+fn json_that_is_not_a_tiled_map_says_what_it_is() {
+    let tsj = std::fs::read_to_string(fixture("kit.tsj")).unwrap();
+    assert!(tsj.contains("\"type\": \"tileset\""));
+    assert_eq!(
+        tmj_err(&tsj).to_string(),
+        format!(
+            "{}: a Tiled tile set (\"type\": \"tileset\"), not a map",
+            fixture("inline.tmj").display()
+        )
+    );
+    let e = tmj_err(r#"{"map": "cave.txt", "bodies": []}"#);
+    assert!(e.to_string().contains("not a Tiled JSON map"), "{e}");
+    let e = tmj_err("[1, 2]");
+    assert!(e.to_string().contains("JSON but not an object"), "{e}");
+    let e = tmj_err(r#"{"type": "world", "maps": []}"#);
+    assert!(e.to_string().contains("its `type` is \"world\""), "{e}");
+    // A map saved before Tiled 1.2 has no `type`: its `orientation` tells it is a map.
+    let old = std::fs::read_to_string(fixture("flips.tmj"))
+        .unwrap()
+        .replace("\"type\": \"map\",", "");
+    assert!(!old.contains("\"type\": \"map\""));
+    tiled::parse_tmj(&old, fixture("old.tmj"), &TiledOptions::default()).unwrap();
+    // A map file named `.json` loads by the same rules as `.tmj`.
+    let json = scratch(
+        "flips_tsx.json",
+        &std::fs::read(fixture("flips_tsx.tmj")).unwrap(),
+    );
+    assert_same_tiled(&load(&json), &load(&fixture("flips_tsx.tmj")));
 }

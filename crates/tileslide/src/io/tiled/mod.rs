@@ -143,8 +143,9 @@ pub struct TileInfo {
     pub hit_types: HitTypes,
 }
 
-/// Loads a `.tmx` or `.tmj` map (by its extension; `.json` is read as `.tmj`). External
-/// tile sets are found relative to the map's folder.
+/// Loads a `.tmx` or `.tmj` map (by its extension; `.json` is read as `.tmj`, and JSON that
+/// is not a Tiled map — a tile set, a scene — is an error saying what it is). External tile
+/// sets are found relative to the map's folder.
 pub fn load(path: impl AsRef<Path>, options: &TiledOptions) -> Result<TiledMap, LoadError> {
     let path = path.as_ref();
     let extension = path
@@ -158,7 +159,7 @@ pub fn load(path: impl AsRef<Path>, options: &TiledOptions) -> Result<TiledMap, 
             return Err(invalid(
                 path,
                 Location::File,
-                "not a Tiled map: expected a .tmx or .tmj file",
+                "not a Tiled map: expected a .tmx, .tmj or .json file",
             ));
         }
     };

@@ -8,11 +8,12 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use glam::Vec2;
+use serde::de;
 
 use super::document::{Chunk, Document, LayerCells, TileDoc, TileLayerDoc, TileSetDoc};
 use super::objects::ObjectLayer;
 use super::tile_data::{self, Encoding, count_message};
-use super::tmj_schema::{JsonData, JsonLayer, JsonMap, JsonTileSet, object, properties};
+use super::tmj_schema::{JsonData, JsonKind, JsonLayer, JsonMap, JsonTileSet, object, properties};
 use super::{Flip, invalid, line_column, tmx};
 use crate::io::{LoadError, LoadErrorKind, Location};
 use crate::tiles::MAX_CELLS;
@@ -56,8 +57,16 @@ fn json_error(text: &str, path: &Path, e: &serde_json::Error) -> LoadError {
 
 /// Parses a `.tmj` map's text; `path` names it and locates its external tile sets.
 pub(super) fn parse(text: &str, path: &Path) -> Result<Document, LoadError> {
-    let json: JsonMap = serde_json::from_str(text).map_err(|e| json_error(text, path, &e))?;
     let error = |message: String| invalid(path, Location::File, message);
+    let json: JsonMap = match serde_json::from_str(text) {
+        Ok(json) => json,
+        // Valid JSON that fails as a map is most likely some other JSON: say so rather
+        // than name the first field it lacks.
+        Err(e) => return Err(not_a_map(text).map_or_else(|| json_error(text, path, &e), error)),
+    };
+    if let Some(why) = kind_mismatch(json.kind.as_deref(), json.orientation.is_some()) {
+        return Err(error(why));
+    }
     match json.orientation.as_deref() {
         Some("orthogonal") => {}
         Some(other) => {
@@ -96,6 +105,33 @@ pub(super) fn parse(text: &str, path: &Path) -> Result<Document, LoadError> {
         object_layers: walk.object_layers,
         properties: properties(&json.properties).map_err(error)?,
     })
+}
+
+/// Why valid JSON `text` is not a Tiled map, or `None` if it may be one (or is not valid
+/// JSON, which the map parser names at its line and column).
+fn not_a_map(text: &str) -> Option<String> {
+    match serde_json::from_str::<JsonKind>(text) {
+        Ok(probe) => kind_mismatch(probe.kind.as_deref(), probe.orientation.is_some()),
+        Err(_) => serde_json::from_str::<de::IgnoredAny>(text)
+            .ok()
+            .map(|_| "not a Tiled JSON map: the file is JSON but not an object".to_string()),
+    }
+}
+
+/// Why a JSON object whose `type` is `kind` is not a Tiled map: Tiled writes `"type": "map"`
+/// (since 1.2; older maps have no `type` but have an `orientation`).
+fn kind_mismatch(kind: Option<&str>, has_orientation: bool) -> Option<String> {
+    match kind {
+        Some("map") => None,
+        Some("tileset") => Some("a Tiled tile set (\"type\": \"tileset\"), not a map".into()),
+        Some(other) => Some(format!(
+            "not a Tiled JSON map: its `type` is {other:?}, not \"map\""
+        )),
+        None if has_orientation => None,
+        None => Some(
+            "not a Tiled JSON map: it has neither `\"type\": \"map\"` nor an `orientation`".into(),
+        ),
+    }
 }
 
 fn bad_size(path: &Path, field: &'static str, value: i64, reason: String) -> LoadError {

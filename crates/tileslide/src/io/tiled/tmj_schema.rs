@@ -13,6 +13,9 @@ use crate::HitTypes;
 
 #[derive(Deserialize)]
 pub(super) struct JsonMap {
+    /// `"map"` since Tiled 1.2; older maps have no `type`.
+    #[serde(rename = "type")]
+    pub kind: Option<String>,
     pub orientation: Option<String>,
     pub width: Option<u32>,
     pub height: Option<u32>,
@@ -26,6 +29,15 @@ pub(super) struct JsonMap {
     pub layers: Vec<JsonLayer>,
     #[serde(default)]
     pub properties: Vec<JsonProperty>,
+}
+
+/// What a JSON file says it is, read without building anything: tells a Tiled JSON map from
+/// a tile set or other JSON.
+#[derive(Deserialize)]
+pub(super) struct JsonKind {
+    #[serde(rename = "type")]
+    pub kind: Option<String>,
+    pub orientation: Option<de::IgnoredAny>,
 }
 
 /// A tile set in a map (embedded, or a reference with `source`) or in a `.tsj` file.
