@@ -822,27 +822,30 @@ fn absurd_sizes_are_refused_before_allocating() {
 }
 
 #[test]
-fn the_hexagonal_rotation_bit_is_refused() {
-    let e = tmx_err(&two_cells(r#"<data encoding="csv">1,268435457</data>"#));
-    assert_eq!(e.location, line_col(3, 2));
-    assert_eq!(
-        e.to_string(),
-        format!(
-            "{}:3:2: layer \"l\": cell (1, 0) has gid 0x10000001 with the hexagonal 120° \
-             rotation bit (0x10000000), which orthogonal maps do not use",
-            fixture("inline.tmx").display()
-        )
-    );
+fn the_hexagonal_rotation_bit_is_ignored_on_orthogonal_maps() {
+    // Tiled uses gid bit 0x10000000 on hexagonal maps only: on an orthogonal map the tile
+    // is placed as if the bit were clear, with the same tile id and shape.
+    let parse = |data: &str| {
+        let path = scratch(&format!("hex_{}.tmx", data.len()), b"");
+        tiled::parse_tmx(&two_cells(data), &path, &TiledOptions::default())
+            .unwrap_or_else(|e| panic!("{e}"))
+    };
+    let plain = parse(r#"<data encoding="csv">1,2147483650</data>"#);
+    let hex = parse(r#"<data encoding="csv">268435457,2415919106</data>"#);
+    assert_same_tiled(&hex, &plain);
+    assert_eq!(hex.map.tile(Cell::new(0, 0)), Some(TileId(1)));
+    assert_eq!(hex.map.tile(Cell::new(1, 0)), Some(TileId(H | 2)));
+    assert_eq!(hex.tile_info(TileId(H | 2)).unwrap().gid, H | 2);
+    // The same in JSON.
     let tmj = std::fs::read_to_string(fixture("flips.tmj")).unwrap();
-    let first = tmj.find("\"data\": [").unwrap()
-        + tmj[tmj.find("\"data\": [").unwrap()..].find('1').unwrap();
-    let tmj = format!("{}268435457{}", &tmj[..first], &tmj[first + 1..]);
-    let e = tmj_err(&tmj);
-    assert!(
-        e.to_string()
-            .contains("layers[0] (\"tiles\"): cell (0, 0) has gid 0x10000001"),
-        "{e}"
-    );
+    let data = tmj.find("\"data\": [").unwrap();
+    let first = data + tmj[data..].find('1').unwrap();
+    let hex_tmj = format!("{}268435457{}", &tmj[..first], &tmj[first + 1..]);
+    let parse_tmj = |text: &str| {
+        tiled::parse_tmj(text, fixture("inline.tmj"), &TiledOptions::default())
+            .unwrap_or_else(|e| panic!("{e}"))
+    };
+    assert_same_tiled(&parse_tmj(&hex_tmj), &parse_tmj(&tmj));
 }
 
 #[test]

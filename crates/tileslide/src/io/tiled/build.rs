@@ -31,14 +31,11 @@ pub(super) fn build(
     // Each gid placed, with the first cell that holds it (for errors).
     let mut placed = BTreeMap::new();
     for (x, y, gid) in grid.cells(layer) {
+        // Tiled's 120° rotation bit means something on hexagonal maps only; on an
+        // orthogonal map Tiled ignores it, and so does the loader.
+        let gid = gid & !Flip::HEXAGONAL_120_BIT;
         if gid == 0 {
             continue;
-        }
-        if gid & Flip::HEXAGONAL_120_BIT != 0 {
-            return Err(layer_error(format!(
-                "cell ({x}, {y}) has gid {gid:#010x} with the hexagonal 120° rotation bit \
-                 (0x10000000), which orthogonal maps do not use"
-            )));
         }
         let (col, row) = grid.cell_of(x, y);
         tiles[row as usize * grid.width as usize + col as usize] = Some(TileId(gid));

@@ -40,7 +40,8 @@ impl Flip {
     pub const VERTICAL_BIT: u32 = 0x4000_0000;
     /// The gid bit of a diagonal flip (x/y swap).
     pub const DIAGONAL_BIT: u32 = 0x2000_0000;
-    /// The gid bit of the 120° rotation of hexagonal maps: refused in orthogonal maps.
+    /// The gid bit of the 120° rotation of hexagonal maps: ignored on orthogonal maps, as
+    /// Tiled ignores it there.
     pub const HEXAGONAL_120_BIT: u32 = 0x1000_0000;
     /// The bits of a gid that number the tile (the others are flags).
     pub const GID_MASK: u32 = 0x0FFF_FFFF;

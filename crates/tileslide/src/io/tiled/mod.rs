@@ -13,8 +13,9 @@
 //!   outlines; polylines are two-sided thin walls, or one-way with `one_way = true`. A tile
 //!   without collision objects blocks nothing. Properties: `one_way`, `one_way_side`
 //!   (`up`, `down`, `left`, `right`), `flag0`…`flag23` (user bits), `hit_types`.
-//! - **Tile ids**: a cell's [`TileId`] is its gid with its flip bits, so each (tile, flips)
-//!   pair placed is its own tile shape, flipped as Tiled draws it ([`Flip`]).
+//! - **Tile ids**: a cell's [`TileId`] is its gid with its flip bits (the hexagonal bit,
+//!   which Tiled ignores on orthogonal maps, cleared), so each (tile, flips) pair placed is
+//!   its own tile shape, flipped as Tiled draws it ([`Flip`]).
 //!   [`TiledMap::tile_info`] tells which tile of which tile set an id is.
 //! - **Errors** name the file and the line:column (XML, and JSON syntax) or the field
 //!   (`layers[2].data`); sizes are checked against [`MAX_CELLS`](crate::MAX_CELLS) before
