@@ -22,7 +22,8 @@ pub struct MapArgs {
     /// Cell size of an ASCII map (default 1).
     #[arg(long, value_name = "SIZE")]
     pub cell: Option<f32>,
-    /// The tile layer that collides in a Tiled map (default: the first tile layer with the
+    /// The tile layer that collides in a Tiled map: its name, `NAME#2` for the second layer
+    /// of that name, or `#3` for the third tile layer (default: the first tile layer with the
     /// property `collision = true`, else the first tile layer).
     #[arg(long, value_name = "NAME")]
     pub layer: Option<String>,

@@ -273,3 +273,46 @@ fn a_tiled_json_map_named_json_loads_and_other_json_is_named() {
         stderr(&o)
     );
 }
+
+#[test]
+fn layer_chooses_between_layers_that_share_a_name() {
+    // Two tile layers named "walls": a block at cell 0, then a block at cell 1.
+    scratch(
+        "tiles.tsj",
+        &std::fs::read_to_string(example("tiles.tsj")).unwrap(),
+    );
+    let map = scratch(
+        "same_names.tmj",
+        r#"{"type": "map", "orientation": "orthogonal", "width": 2, "height": 1,
+            "tilewidth": 16, "tileheight": 16,
+            "tilesets": [{"firstgid": 1, "source": "tiles.tsj"}],
+            "layers": [
+              {"type": "tilelayer", "name": "walls", "width": 2, "height": 1, "data": [1, 0]},
+              {"type": "tilelayer", "name": "walls", "width": 2, "height": 1, "data": [0, 1]}]}"#,
+    );
+    let hit_x = |layer: &str| {
+        let o = tileslide(&[
+            "raycast",
+            map.to_str().unwrap(),
+            "--from",
+            "40,8",
+            "--to",
+            "-10,8",
+            "--layer",
+            layer,
+            "--json",
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let hit: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+        hit["x"].as_f64()
+    };
+    assert_eq!(hit_x("walls"), Some(16.0));
+    assert_eq!(hit_x("walls#2"), Some(32.0));
+    assert_eq!(hit_x("#2"), Some(32.0));
+    let o = tileslide(&["info", map.to_str().unwrap(), "--layer", "walls#3"]);
+    assert!(
+        stderr(&o).contains("the map has 2 tile layers named \"walls\", so no \"walls#3\""),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -269,6 +269,49 @@ fn the_collision_layer_is_named_or_flagged_or_the_first() {
     );
 }
 
+#[test]
+fn layers_that_share_a_name_are_chosen_by_number() {
+    // Two tile layers named "l" (the ramp at cell 0, then the half block at cell 1), a
+    // third named "a#1" (a name that looks like a choice), and a fourth.
+    let text = r#"<map version="1.10" orientation="orthogonal" width="2" height="1" tilewidth="16" tileheight="16">
+ <tileset firstgid="1" source="kit.tsx"/>
+ <layer name="l" width="2" height="1"><data encoding="csv">1,0</data></layer>
+ <layer name="l" width="2" height="1"><data encoding="csv">0,2</data></layer>
+ <layer name="a#1" width="2" height="1"><data encoding="csv">2,2</data></layer>
+ <layer name="a" width="2" height="1"><data encoding="csv">1,1</data></layer>
+</map>"#;
+    let path = scratch("same_names.tmx", text.as_bytes());
+    let with = |layer: &str| tiled::load(&path, &TiledOptions::default().with_layer(layer));
+    let tiles = |layer: &str| {
+        let m = with(layer).unwrap_or_else(|e| panic!("{layer}: {e}"));
+        (
+            m.collision_layer_index,
+            m.map.tile(Cell::new(0, 0)),
+            m.map.tile(Cell::new(1, 0)),
+        )
+    };
+    assert_eq!(tiles("l"), (0, Some(TileId(1)), None));
+    assert_eq!(tiles("l#1"), (0, Some(TileId(1)), None));
+    assert_eq!(tiles("l#2"), (1, None, Some(TileId(2))));
+    // A name that exists is that layer, even if it looks like a choice.
+    assert_eq!(tiles("a#1"), (2, Some(TileId(2)), Some(TileId(2))));
+    // `#N` alone: the N-th tile layer of the file.
+    assert_eq!(tiles("#4"), (3, Some(TileId(1)), Some(TileId(1))));
+    let message = |layer: &str| match with(layer) {
+        Ok(_) => panic!("{layer} loaded"),
+        Err(e) => e.to_string(),
+    };
+    assert_eq!(
+        message("l#3"),
+        format!(
+            "{}: the map has 2 tile layers named \"l\", so no \"l#3\" (its tile layers: \"l\", \"l#2\", \"a#1\", \"a\")",
+            path.display()
+        )
+    );
+    assert!(message("#5").contains("the map has 4 tile layers, so no \"#5\""));
+    assert!(message("l#0").contains("no tile layer named \"l#0\""));
+}
+
 // ------------------------------------------------------------------ shapes
 
 #[test]

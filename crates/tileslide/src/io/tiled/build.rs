@@ -127,6 +127,7 @@ pub(super) fn build(
     Ok(TiledMap {
         map,
         collision_layer: layer.name.clone(),
+        collision_layer_index: index,
         tile_layers: doc.tile_layers.iter().map(|l| l.name.clone()).collect(),
         object_layers,
         properties: doc.properties,
@@ -156,35 +157,16 @@ fn tile_shape(
         .map_err(|e| error(e.to_string()))
 }
 
-/// The index of the collision layer: the one named by the options, else the first with
-/// `collision = true`, else the first tile layer.
+/// The index of the collision layer: the one the options choose (see [`chosen_layer`]), else
+/// the first with `collision = true`, else the first tile layer.
 fn collision_layer(
     doc: &Document,
     options: &TiledOptions,
     path: &Path,
 ) -> Result<usize, LoadError> {
-    let names = || {
-        doc.tile_layers
-            .iter()
-            .map(|l| format!("{:?}", l.name))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    if let Some(name) = &options.layer {
-        return doc
-            .tile_layers
-            .iter()
-            .position(|l| &l.name == name)
-            .ok_or_else(|| {
-                invalid(
-                    path,
-                    Location::File,
-                    format!(
-                        "the map has no tile layer named {name:?} (its tile layers: {})",
-                        names()
-                    ),
-                )
-            });
+    if let Some(choice) = &options.layer {
+        return chosen_layer(&doc.tile_layers, choice)
+            .map_err(|m| invalid(path, Location::File, m));
     }
     for (i, layer) in doc.tile_layers.iter().enumerate() {
         let collision = Lookup::of(&layer.properties)
@@ -198,6 +180,64 @@ fn collision_layer(
         return Err(invalid(path, Location::File, "the map has no tile layer"));
     }
     Ok(0)
+}
+
+/// The tile layer `choice` names: the first layer named `choice`; else, for `NAME#N`, the
+/// N-th (from 1) tile layer named `NAME`, and for `#N` the N-th tile layer of the file. Tiled
+/// lets layers share a name, and this is how to choose the second.
+fn chosen_layer(layers: &[TileLayerDoc], choice: &str) -> Result<usize, String> {
+    if let Some(i) = layers.iter().position(|l| l.name == choice) {
+        return Ok(i);
+    }
+    // Every layer as a choice that picks it: "walls", then "walls#2" for a second "walls".
+    let choices = || {
+        let mut seen = BTreeMap::<&str, usize>::new();
+        let names: Vec<String> = layers
+            .iter()
+            .map(|l| {
+                let n = seen.entry(&l.name).or_default();
+                *n += 1;
+                if *n == 1 {
+                    format!("{:?}", l.name)
+                } else {
+                    format!("{:?}", format!("{}#{n}", l.name))
+                }
+            })
+            .collect();
+        names.join(", ")
+    };
+    let numbered = choice
+        .rsplit_once('#')
+        .and_then(|(name, n)| Some((name, n.parse::<usize>().ok().filter(|&n| n >= 1)?)));
+    let Some((name, n)) = numbered else {
+        return Err(format!(
+            "the map has no tile layer named {choice:?} (its tile layers: {})",
+            choices()
+        ));
+    };
+    let candidates: Vec<usize> = (0..layers.len())
+        .filter(|&i| name.is_empty() || layers[i].name == name)
+        .collect();
+    if let Some(&i) = candidates.get(n - 1) {
+        return Ok(i);
+    }
+    Err(if name.is_empty() {
+        format!(
+            "the map has {} tile layers, so no {choice:?}",
+            candidates.len()
+        )
+    } else if candidates.is_empty() {
+        format!(
+            "the map has no tile layer named {name:?} (its tile layers: {})",
+            choices()
+        )
+    } else {
+        format!(
+            "the map has {} tile layers named {name:?}, so no {choice:?} (its tile layers: {})",
+            candidates.len(),
+            choices()
+        )
+    })
 }
 
 /// The collision layer's grid: its size and where its cell (0, 0) is.

@@ -80,13 +80,16 @@ pub const MAX_TILE_COUNT: u32 = 1 << 18;
 /// ```
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct TiledOptions {
-    /// The name of the tile layer that collides. `None` (the default): the first tile layer
-    /// with the bool property `collision = true`, else the first tile layer.
+    /// The tile layer that collides: the first named so; else, as `NAME#N`, the N-th (from 1)
+    /// tile layer named `NAME` (Tiled lets layers share a name), or as `#N` the N-th tile layer
+    /// of the file. `None` (the default): the first tile layer with the bool property
+    /// `collision = true`, else the first tile layer.
     pub layer: Option<String>,
 }
 
 impl TiledOptions {
-    /// These options with the collision layer named `name`.
+    /// These options with the collision layer `name` (a name, `NAME#N` or `#N`: see
+    /// [`layer`](Self::layer)).
     #[must_use]
     pub fn with_layer(mut self, name: impl Into<String>) -> Self {
         self.layer = Some(name.into());
@@ -102,6 +105,8 @@ pub struct TiledMap {
     pub map: TileMap,
     /// The name of the tile layer [`map`](Self::map) was built from.
     pub collision_layer: String,
+    /// Its index in [`tile_layers`](Self::tile_layers) (which may hold its name twice).
+    pub collision_layer_index: usize,
     /// The names of every tile layer, in file order (group members included).
     pub tile_layers: Vec<String>,
     /// The object layers, in file order (group members included).
