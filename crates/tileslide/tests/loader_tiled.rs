@@ -312,6 +312,160 @@ fn layers_that_share_a_name_are_chosen_by_number() {
     assert!(message("l#0").contains("no tile layer named \"l#0\""));
 }
 
+/// A one-layer `.tmj` map of `cells` (a CSV of gids, one row) on a `grid`-pixel grid, with
+/// one embedded tile set of `tile`-pixel tiles whose tile 0 has the collision `objects` (a
+/// JSON list).
+fn one_tile_map(grid: (u32, u32), tile: (u32, u32), objects: &str, cells: &str) -> String {
+    let width = cells.split(',').count();
+    format!(
+        r#"{{"type": "map", "orientation": "orthogonal", "width": {width}, "height": 1,
+  "tilewidth": {}, "tileheight": {},
+  "tilesets": [{{"firstgid": 1, "name": "big", "tilewidth": {}, "tileheight": {},
+    "tilecount": 1, "tiles": [{{"id": 0, "objectgroup": {{"objects": {objects}}}}}]}}],
+  "layers": [{{"type": "tilelayer", "name": "l", "width": {width}, "height": 1,
+    "data": [{cells}]}}]}}"#,
+        grid.0, grid.1, tile.0, tile.1
+    )
+}
+
+fn parse_one_tile_map(text: &str) -> Result<TiledMap, LoadError> {
+    tiled::parse_tmj(text, fixture("inline.tmj"), &TiledOptions::default())
+}
+
+#[test]
+fn a_collision_vertex_just_outside_its_tile_snaps_onto_the_edge() {
+    // A real map's hand-drawn triangle on a 128-pixel tile: one vertex 0.4 px past the right
+    // edge. It loads, with the vertex on the edge.
+    let triangle = |x: f32| {
+        format!(
+            r#"[{{"id": 3, "x": 0, "y": 0, "polygon": [{{"x": 0, "y": 0}}, {{"x": {x}, "y": 0}},
+                {{"x": 0, "y": 128}}]}}]"#
+        )
+    };
+    let map = parse_one_tile_map(&one_tile_map(
+        (128, 128),
+        (128, 128),
+        &triangle(128.39629),
+        "1",
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
+    let mut ends: Vec<Vec2> = map
+        .map
+        .tile_set()
+        .shape(TileId(1))
+        .unwrap()
+        .segments()
+        .iter()
+        .map(|s| s.a)
+        .collect();
+    ends.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    assert_eq!(ends, [v(0.0, 0.0), v(0.0, 128.0), v(128.0, 0.0)]);
+    // A ray across the tile meets the slope where it is drawn.
+    let ray = Ray::between(v(120.0, 64.0), v(0.0, 64.0));
+    let hit = map.map.cast_ray(ray, &RayFilter::default()).unwrap();
+    assert_eq!(hit.point, v(64.0, 64.0));
+    // Up to 2 px (1/64 of 128) snaps; past it the map is refused, naming layer, cell, tile.
+    assert!(
+        parse_one_tile_map(&one_tile_map(
+            (128, 128),
+            (128, 128),
+            &triangle(129.99),
+            "1"
+        ))
+        .is_ok()
+    );
+    let e = parse_one_tile_map(&one_tile_map(
+        (128, 128),
+        (128, 128),
+        &triangle(130.25),
+        "1",
+    ))
+    .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "{}: layers[0] (\"l\"): cell (0, 0), gid 0x1: tile set \"big\", tile 0: collision \
+             object 3: it reaches (130.25, 0), 2.25 px outside the tile's 128×128 pixels; only \
+             vertices within 2 px of the edge are moved onto it",
+            fixture("inline.tmj").display()
+        )
+    );
+    // On 16-pixel tiles the tolerance is one pixel: 0.9 px out snaps, 1.1 px is refused.
+    let rect = |x: f32| format!(r#"[{{"id": 1, "x": {x}, "y": 0, "width": 16, "height": 8}}]"#);
+    let snapped = parse_one_tile_map(&one_tile_map((16, 16), (16, 16), &rect(-0.9), "1")).unwrap();
+    let shape = snapped.map.tile_set().shape(TileId(1)).unwrap();
+    assert!(
+        shape
+            .segments()
+            .iter()
+            .all(|s| s.a.x >= 0.0 && s.a.x <= 16.0)
+    );
+    // Only the vertex outside moved: the box now starts at the edge and still ends at 15.1.
+    let solid_at = |x: f32| snapped.map.is_point_solid(v(x, 4.0));
+    assert!(solid_at(0.05) && solid_at(15.0) && !solid_at(15.2));
+    let e = parse_one_tile_map(&one_tile_map((16, 16), (16, 16), &rect(-1.1), "1")).unwrap_err();
+    assert!(
+        e.to_string()
+            .contains("it reaches (-1.1, 0), 1.1 px outside the tile's 16×16 pixels"),
+        "{e}"
+    );
+}
+
+#[test]
+fn tiles_of_another_size_than_the_grid_are_placed_from_their_cells_bottom_left() {
+    // A 160 × 160 decoration on a 16-pixel grid, without collision: placed, blocking nothing.
+    let map = parse_one_tile_map(&one_tile_map((16, 16), (160, 160), "[]", "0,1"))
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(map.map.tile(Cell::new(1, 0)), Some(TileId(1)));
+    assert_eq!(map.map.placed_segment_count(), 0);
+    // Flips do not matter to a tile without collision, even D on a tile that is not square.
+    let tall = one_tile_map((16, 16), (16, 48), "[]", &format!("{},{}", 1 | D, 1 | H));
+    assert!(parse_one_tile_map(&tall).is_ok());
+    // A 32 × 32 tile whose collision is its bottom-left 16 × 16 quarter (Tiled draws it from
+    // the cell's bottom-left corner, so that quarter covers the cell).
+    let quarter = r#"[{"id": 1, "x": 0, "y": 16, "width": 16, "height": 16}]"#;
+    let map = parse_one_tile_map(&one_tile_map((16, 16), (32, 32), quarter, "1")).unwrap();
+    assert!(map.map.is_point_solid(v(8.0, 8.0)));
+    assert_eq!(
+        outline(&map.map, TileId(1)),
+        solid(&[
+            (v(0.0, 0.0), v(16.0, 0.0), v(0.0, -1.0)),
+            (v(16.0, 0.0), v(16.0, 16.0), v(1.0, 0.0)),
+            (v(16.0, 16.0), v(0.0, 16.0), v(0.0, 1.0)),
+            (v(0.0, 16.0), v(0.0, 0.0), v(-1.0, 0.0)),
+        ])
+    );
+    // Flipped horizontally, the quarter is the tile's bottom-right: outside its cell.
+    let e = parse_one_tile_map(&one_tile_map(
+        (16, 16),
+        (32, 32),
+        quarter,
+        &(1 | H).to_string(),
+    ))
+    .unwrap_err();
+    assert!(
+        e.to_string().contains(
+            "layers[0] (\"l\"): cell (0, 0), gid 0x80000001: tile set \"big\", tile 0: collision \
+             object 1: it reaches (0, 16), 16 px outside the 16×16 grid cell its 32×32 tile is \
+             placed in (from the cell's bottom-left corner)"
+        ),
+        "{e}"
+    );
+    // An 8 × 8 tile sits in its cell's bottom-left quarter.
+    let full = r#"[{"id": 1, "x": 0, "y": 0, "width": 8, "height": 8}]"#;
+    let map = parse_one_tile_map(&one_tile_map((16, 16), (8, 8), full, "1")).unwrap();
+    assert!(map.map.is_point_solid(v(4.0, 12.0)) && !map.map.is_point_solid(v(4.0, 4.0)));
+    // D on a tile that is not square and has collision is refused, naming where.
+    let e = parse_one_tile_map(&one_tile_map(
+        (16, 16),
+        (16, 32),
+        quarter,
+        &(1 | D).to_string(),
+    ))
+    .unwrap_err();
+    assert!(e.to_string().contains("cell (0, 0), gid 0x20000001: tile set \"big\", tile 0: its tile is 16×32 and has collision objects, so it cannot be flipped diagonally"), "{e}");
+}
+
 // ------------------------------------------------------------------ shapes
 
 #[test]
@@ -976,12 +1130,17 @@ fn bad_properties_and_shapes_are_named_with_their_tile() {
             "x=\"0\" y=\"8\" width=\"16\" height=\"8\"",
             "x=\"0\" y=\"8\" width=\"16\" height=\"12\"",
         );
-    let tsx = scratch("outside.tsx", kit.as_bytes());
+    scratch("outside.tsx", kit.as_bytes());
     let map = two_cells(r#"<data encoding="csv">2,2</data>"#).replace("kit.tsx", "outside.tsx");
-    let e = load_err(&scratch("uses_outside.tmx", map.as_bytes()));
-    assert_eq!(e.path, tsx);
+    let uses = scratch("uses_outside.tmx", map.as_bytes());
+    let e = load_err(&uses);
+    // Named where it is placed: the map, its layer and cell, then the tile and object.
+    assert_eq!(
+        (e.path.as_path(), e.location),
+        (uses.as_path(), line_col(3, 2))
+    );
     assert!(
-        e.to_string().contains("tile set \"kit\", tile 1: collision object 1: it reaches (16, 20), outside the tile's 16×16 pixels"),
+        e.to_string().contains("layer \"l\": cell (0, 0), gid 0x2: tile set \"kit\", tile 1: collision object 1: it reaches (16, 20), 4 px outside the tile's 16×16 pixels"),
         "{e}"
     );
     // A bad hit type on an object.

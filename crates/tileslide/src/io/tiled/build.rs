@@ -8,8 +8,10 @@ use std::sync::Arc;
 use glam::Vec2;
 
 use super::document::{Document, LayerCells, TileLayerDoc, TileSetDoc};
+use super::placement::Placement;
 use super::properties::Lookup;
-use super::{Flip, TileInfo, TiledMap, TiledOptions, invalid, shapes};
+use super::shapes::{self, TileShapeError};
+use super::{Flip, TileInfo, TiledMap, TiledOptions, invalid};
 use crate::io::{LoadError, LoadErrorKind, Location};
 use crate::tiles::{MAX_CELLS, TileId, TileMap, TileSet, TileShape};
 
@@ -62,21 +64,18 @@ pub(super) fn build(
                 tile_set.name, tile_set.tile_count
             )));
         }
-        if tile_set.tile_size != doc.tile_size {
-            return Err(at(format!(
-                "tile set {:?} has {}×{} tiles but the map's grid is {}×{}: the collision \
-                 layer's tiles must match the grid",
-                tile_set.name,
-                tile_set.tile_size.0,
-                tile_set.tile_size.1,
-                doc.tile_size.0,
-                doc.tile_size.1
-            )));
-        }
-        if flip.diagonal && tile_size.x != tile_size.y {
-            return Err(at("only square tiles can be flipped diagonally".into()));
-        }
-        let shape = tile_shape(tile_set, local, flip, tile_size)?;
+        let placement = Placement {
+            tile: Vec2::new(tile_set.tile_size.0 as f32, tile_set.tile_size.1 as f32),
+            cell: tile_size,
+            flip,
+        };
+        let shape = tile_shape(tile_set, local, &placement).map_err(|e| match e {
+            // The tile cannot go where it is placed: name the layer and cell.
+            ShapeFailure::Placement(m) => {
+                at(format!("tile set {:?}, tile {local}: {m}", tile_set.name))
+            }
+            ShapeFailure::Definition(e) => e,
+        })?;
         set.insert(TileId(gid), shape).map_err(|e| {
             invalid(
                 &tile_set.file,
@@ -135,25 +134,45 @@ pub(super) fn build(
     })
 }
 
-/// The shape of tile `local` of `set` placed with `flip`.
+/// Why a placed tile has no shape.
+enum ShapeFailure {
+    /// Its collision cannot be placed in its cell (it reaches a neighbour, or the flip is
+    /// not defined for the tile): a message for the layer's error.
+    Placement(String),
+    /// The tile's own definition is wrong: an error naming its tile set's file.
+    Definition(LoadError),
+}
+
+/// The shape of tile `local` of `set` as `placement` puts it in its cell. A tile without
+/// collision objects is empty, whatever its size and flips.
 fn tile_shape(
     set: &TileSetDoc,
     local: u32,
-    flip: Flip,
-    size: Vec2,
-) -> Result<TileShape, LoadError> {
+    placement: &Placement,
+) -> Result<TileShape, ShapeFailure> {
     let error = |m: String| {
-        invalid(
+        ShapeFailure::Definition(invalid(
             &set.file,
             Location::File,
             format!("tile set {:?}, tile {local}: {m}", set.name),
-        )
+        ))
     };
-    let segments = match set.tiles.get(&local) {
-        Some(tile) => shapes::tile_segments(tile, size).map_err(error)?,
-        None => Vec::new(),
+    let Some(tile) = set.tiles.get(&local) else {
+        return Ok(TileShape::empty());
     };
-    TileShape::from_segments(segments.into_iter().map(|s| flip.apply_segment(s, size)))
+    if placement.flip.diagonal && placement.tile.x != placement.tile.y && !tile.collision.is_empty()
+    {
+        return Err(ShapeFailure::Placement(format!(
+            "its tile is {}×{} and has collision objects, so it cannot be flipped diagonally \
+             (only square tiles can)",
+            placement.tile.x, placement.tile.y
+        )));
+    }
+    let segments = shapes::tile_segments(tile, placement).map_err(|e| match e {
+        TileShapeError::Definition(m) => error(m),
+        TileShapeError::Overhang(m) => ShapeFailure::Placement(m),
+    })?;
+    TileShape::from_segments(segments.into_iter().map(|s| placement.place(s)))
         .map_err(|e| error(e.to_string()))
 }
 

@@ -11,7 +11,11 @@
 //! - **Tile shapes** come from each tile's collision objects (Tiled's collision editor):
 //!   rectangles, polygons, ellipses ([`ELLIPSE_SEGMENTS`] segments) and capsules are solid
 //!   outlines; polylines are two-sided thin walls, or one-way with `one_way = true`. A tile
-//!   without collision objects blocks nothing. Properties: `one_way`, `one_way_side`
+//!   without collision objects blocks nothing, whatever its size; a tile of another size
+//!   than the grid is placed from its cell's bottom-left corner, as Tiled draws it, and its
+//!   collision must lie in that cell. A vertex up to one pixel (or 1/64 of a cell over 64
+//!   pixels) outside the cell is moved onto its edge; further out is an error naming the
+//!   layer, cell and tile. Properties: `one_way`, `one_way_side`
 //!   (`up`, `down`, `left`, `right`), `flag0`…`flag23` (user bits), `hit_types`.
 //! - **Tile ids**: a cell's [`TileId`] is its gid with its flip bits (the hexagonal bit,
 //!   which Tiled ignores on orthogonal maps, cleared), so each (tile, flips) pair placed is
@@ -45,6 +49,7 @@ mod build;
 mod document;
 mod flip;
 mod objects;
+mod placement;
 mod properties;
 mod shapes;
 mod tile_data;

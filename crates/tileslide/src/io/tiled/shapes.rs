@@ -20,6 +20,7 @@ use glam::Vec2;
 
 use super::document::TileDoc;
 use super::objects::{MapObject, ObjectShape};
+use super::placement::Placement;
 use super::properties::Lookup;
 use crate::tiles::{SegmentFlags, TileSegment, TileShape};
 
@@ -28,34 +29,50 @@ use crate::tiles::{SegmentFlags, TileSegment, TileShape};
 /// round ends take half as many each.
 pub const ELLIPSE_SEGMENTS: usize = 16;
 
-/// How far (as a fraction of the tile size) a collision object may reach outside its tile,
-/// as [`TileSet::insert`](crate::TileSet::insert) allows.
-const TILE_TOLERANCE: f32 = 1e-5;
-
 /// Below this, a normal is taken as perpendicular to the one-way side.
 const PARALLEL: f32 = 1e-6;
 
-/// The segments of a tile's collision objects, in its own pixels (y down), unflipped. Errors
-/// name the object.
-pub(super) fn tile_segments(tile: &TileDoc, size: Vec2) -> Result<Vec<TileSegment>, String> {
+/// Why a tile's collision objects give no segments.
+#[derive(Debug, PartialEq)]
+pub(super) enum TileShapeError {
+    /// The tile's own definition is wrong (a property, a degenerate outline): the same
+    /// wherever the tile is placed.
+    Definition(String),
+    /// An object reaches further outside the cell the tile is placed in than a vertex is
+    /// moved (see [`Placement::snap`]).
+    Overhang(String),
+}
+
+/// The segments of a tile's collision objects, in its own pixels (y down), unflipped, with
+/// vertices just outside the part of the tile that lands in its cell moved onto its edge
+/// (`placement`). Errors name the object.
+pub(super) fn tile_segments(
+    tile: &TileDoc,
+    placement: &Placement,
+) -> Result<Vec<TileSegment>, TileShapeError> {
     // The tile's own properties are checked even when it has no collision objects.
     let own = Lookup::of(&tile.properties);
-    own.bool("one_way")?;
-    own.one_way_side()?;
-    own.user_flags()?;
+    let definition = TileShapeError::Definition;
+    own.bool("one_way").map_err(definition)?;
+    own.one_way_side().map_err(definition)?;
+    own.user_flags().map_err(definition)?;
     let mut out = Vec::new();
     for object in &tile.collision {
         let lookup = Lookup {
             own: &object.properties,
             inherited: Some(&tile.properties),
         };
-        object_segments(object, lookup, size, &mut out).map_err(|m| {
+        object_segments(object, lookup, placement, &mut out).map_err(|e| {
             let name = if object.name.is_empty() {
                 String::new()
             } else {
                 format!(" ({:?})", object.name)
             };
-            format!("collision object {}{name}: {m}", object.id)
+            let named = |m: String| format!("collision object {}{name}: {m}", object.id);
+            match e {
+                TileShapeError::Definition(m) => TileShapeError::Definition(named(m)),
+                TileShapeError::Overhang(m) => TileShapeError::Overhang(named(m)),
+            }
         })?;
     }
     Ok(out)
@@ -106,34 +123,48 @@ fn outline(object: &MapObject) -> Result<Option<Outline>, String> {
 fn object_segments(
     object: &MapObject,
     lookup: Lookup<'_>,
-    size: Vec2,
+    placement: &Placement,
     out: &mut Vec<TileSegment>,
-) -> Result<(), String> {
-    let Some(outline) = outline(object)? else {
+) -> Result<(), TileShapeError> {
+    let definition = TileShapeError::Definition;
+    let Some(outline) = outline(object).map_err(definition)? else {
         return Ok(());
     };
-    let one_way = lookup.bool("one_way")?.unwrap_or(false);
-    let side = lookup.one_way_side()?;
-    let user = lookup.user_flags()?;
-    let (sin, cos) = sin_cos(object.rotation)?;
+    let one_way = lookup.bool("one_way").map_err(definition)?.unwrap_or(false);
+    let side = lookup.one_way_side().map_err(definition)?;
+    let user = lookup.user_flags().map_err(definition)?;
+    let (sin, cos) = sin_cos(object.rotation).map_err(definition)?;
     let place = |p: Vec2| object.position + Vec2::new(cos * p.x - sin * p.y, sin * p.x + cos * p.y);
     let (closed, points) = match outline {
         Outline::Closed(p) => (true, p),
         Outline::Open(p) => (false, p),
     };
-    let points: Vec<Vec2> = points.into_iter().map(place).collect();
-    let tolerance = size * TILE_TOLERANCE;
-    if let Some(p) = points
-        .iter()
-        .find(|p| p.cmplt(-tolerance).any() || p.cmpgt(size + tolerance).any())
+    let mut points: Vec<Vec2> = points.into_iter().map(place).collect();
+    if placement
+        .snap(&mut points)
+        .map_err(TileShapeError::Overhang)?
     {
-        return Err(format!(
-            "it reaches ({}, {}), outside the tile's {}×{} pixels",
-            p.x, p.y, size.x, size.y
-        ));
+        // Neighbours that landed on the same point of the edge are one vertex.
+        points.dedup();
+        if closed && points.len() > 1 && points.first() == points.last() {
+            points.pop();
+        }
     }
+    outline_segments(closed, &points, one_way, side, user, out).map_err(definition)
+}
+
+/// The segments of an outline already in the tile: closed (solid, or its edges facing
+/// `side` one-way) or open (a two-sided or one-way chain).
+fn outline_segments(
+    closed: bool,
+    points: &[Vec2],
+    one_way: bool,
+    side: Vec2,
+    user: SegmentFlags,
+    out: &mut Vec<TileSegment>,
+) -> Result<(), String> {
     if closed {
-        let polygon = TileShape::polygon(&points).map_err(|e| e.to_string())?;
+        let polygon = TileShape::polygon(points).map_err(|e| e.to_string())?;
         for s in polygon.segments() {
             if !one_way {
                 out.push(TileSegment::new(
@@ -264,7 +295,12 @@ mod tests {
     use crate::HitTypes;
     use crate::io::tiled::properties::{Properties, PropertyValue};
 
-    const SIZE: Vec2 = Vec2::splat(16.0);
+    /// A 16-pixel tile in a 16-pixel cell, unflipped.
+    const SIZE: &Placement = &Placement {
+        tile: Vec2::splat(16.0),
+        cell: Vec2::splat(16.0),
+        flip: crate::io::tiled::Flip::NONE,
+    };
 
     fn object(shape: ObjectShape, position: Vec2, size: Vec2) -> MapObject {
         MapObject {
@@ -402,8 +438,8 @@ mod tests {
         )
         .unwrap_err();
         assert!(
-            e.contains("collision object 1") && e.contains("parallel"),
-            "{e}"
+            matches!(&e, TileShapeError::Definition(m) if m.contains("collision object 1") && m.contains("parallel")),
+            "{e:?}"
         );
     }
 
@@ -414,7 +450,40 @@ mod tests {
             Vec2::new(8.0, 8.0),
             Vec2::new(16.0, 4.0),
         );
-        let e = tile_segments(&tile(vec![o], &[]), SIZE).unwrap_err();
-        assert!(e.contains("outside the tile's 16×16"), "{e}");
+        let TileShapeError::Overhang(e) = tile_segments(&tile(vec![o], &[]), SIZE).unwrap_err()
+        else {
+            panic!("not an overhang");
+        };
+        assert!(
+            e.starts_with("collision object 1: it reaches (24, 8), 8 px outside the tile's 16×16"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn a_polygon_snapped_onto_the_edge_loses_the_vertices_it_merges() {
+        // Two vertices 0.3 and 0.6 px past the right edge at the same height become one.
+        let o = object(
+            ObjectShape::Polygon(vec![
+                Vec2::new(0.0, 0.0),
+                Vec2::new(16.3, 0.0),
+                Vec2::new(16.6, 0.0),
+                Vec2::new(16.0, 16.0),
+                Vec2::new(0.0, 16.0),
+            ]),
+            Vec2::ZERO,
+            Vec2::ZERO,
+        );
+        let segments = tile_segments(&tile(vec![o], &[]), SIZE).unwrap();
+        let corners: Vec<Vec2> = segments.iter().map(|s| s.a).collect();
+        assert_eq!(
+            corners,
+            [
+                Vec2::new(0.0, 0.0),
+                Vec2::new(16.0, 0.0),
+                Vec2::new(16.0, 16.0),
+                Vec2::new(0.0, 16.0)
+            ]
+        );
     }
 }
