@@ -27,6 +27,20 @@ pub struct MapArgs {
     /// property `collision = true`, else the first tile layer).
     #[arg(long, value_name = "NAME")]
     pub layer: Option<String>,
+    #[command(flatten)]
+    pub limits: TiledLimits,
+}
+
+/// Bounds on what a Tiled map may cost to load.
+#[derive(Args, Debug, Default)]
+pub struct TiledLimits {
+    /// Most cells a Tiled map's layer may hold (default and most: 2^26).
+    #[arg(long, value_name = "CELLS")]
+    pub max_cells: Option<u64>,
+    /// Most cells an infinite Tiled map may span per cell its chunks hold, once over 2^20
+    /// cells (default 64): refuses a few chunks far apart.
+    #[arg(long, value_name = "RATIO")]
+    pub max_chunk_spread: Option<u64>,
 }
 
 /// The kind of map file, from its extension.
@@ -82,6 +96,12 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
             args.map.display()
         );
     }
+    if (args.limits.max_cells.is_some() || args.limits.max_chunk_spread.is_some()) && !tiled {
+        bail!(
+            "{}: --max-cells and --max-chunk-spread bound Tiled maps (.tmx, .tmj, .json); drop them",
+            args.map.display()
+        );
+    }
     let map = match format {
         MapFormat::Ascii => {
             if args.tileset.is_some() {
@@ -124,8 +144,14 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
                     args.map.display()
                 );
             }
+            let defaults = TiledOptions::default();
             let options = TiledOptions {
                 layer: args.layer.clone(),
+                max_cells: args.limits.max_cells.unwrap_or(defaults.max_cells),
+                max_chunk_spread: args
+                    .limits
+                    .max_chunk_spread
+                    .unwrap_or(defaults.max_chunk_spread),
             };
             tiled::load(&args.map, &options)?.map
         }

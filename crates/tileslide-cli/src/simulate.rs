@@ -290,6 +290,7 @@ fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<(TileMap, MapFormat)
                 tileset: scene.tileset.as_ref().map(|t| dir.join(t)),
                 cell: scene.cell,
                 layer: scene.layer.clone(),
+                limits: map_file::TiledLimits::default(),
             };
             map_file::load(&args)
         }

@@ -316,3 +316,45 @@ fn layer_chooses_between_layers_that_share_a_name() {
         stderr(&o)
     );
 }
+
+#[test]
+fn load_limits_refuse_far_apart_chunks_until_raised() {
+    // Two one-cell chunks 1024 cells apart: 1025² cells, two of them drawn.
+    let map = scratch(
+        "far.tmj",
+        r#"{"type": "map", "orientation": "orthogonal", "infinite": true, "width": 1,
+            "height": 1, "tilewidth": 16, "tileheight": 16,
+            "tilesets": [{"firstgid": 1, "name": "t", "tilewidth": 16, "tileheight": 16,
+              "tilecount": 1}],
+            "layers": [{"type": "tilelayer", "name": "l", "width": 1, "height": 1, "chunks": [
+              {"x": 0, "y": 0, "width": 1, "height": 1, "data": [1]},
+              {"x": 1024, "y": 1024, "width": 1, "height": 1, "data": [1]}]}]}"#,
+    );
+    let map = map.to_str().unwrap();
+    let o = tileslide(&["info", map]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("raise `max_chunk_spread`"),
+        "{}",
+        stderr(&o)
+    );
+    let o = tileslide(&["info", map, "--max-chunk-spread", "1000000", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["width"], 1025);
+    let o = tileslide(&[
+        "info",
+        map,
+        "--max-chunk-spread",
+        "1000000",
+        "--max-cells",
+        "1000",
+    ]);
+    assert!(
+        stderr(&o).contains("more than 1000 cells"),
+        "{}",
+        stderr(&o)
+    );
+    let o = tileslide(&["info", &example("cave.txt"), "--max-cells", "10"]);
+    assert!(stderr(&o).contains("bound Tiled maps"), "{}", stderr(&o));
+}

@@ -1205,3 +1205,97 @@ fn json_that_is_not_a_tiled_map_says_what_it_is() {
     );
     assert_same_tiled(&load(&json), &load(&fixture("flips_tsx.tmj")));
 }
+
+/// A 16-pixel infinite `.tmj` map (a few hundred bytes) of two one-cell chunks, at Tiled
+/// cells (0, 0) and (`far`, `far`): its bounding box is (far + 1)² cells, all but two empty.
+fn far_flung(far: i32) -> String {
+    format!(
+        r#"{{"type": "map", "orientation": "orthogonal", "infinite": true, "width": 1,
+  "height": 1, "tilewidth": 16, "tileheight": 16,
+  "tilesets": [{{"firstgid": 1, "name": "t", "tilewidth": 16, "tileheight": 16,
+    "tilecount": 1}}],
+  "layers": [{{"type": "tilelayer", "name": "l", "width": 1, "height": 1, "chunks": [
+    {{"x": 0, "y": 0, "width": 1, "height": 1, "data": [1]}},
+    {{"x": {far}, "y": {far}, "width": 1, "height": 1, "data": [1]}}]}}]}}"#
+    )
+}
+
+#[test]
+fn an_infinite_map_of_chunks_far_apart_is_refused_unless_allowed() {
+    let parse =
+        |text: &str, options: &TiledOptions| tiled::parse_tmj(text, fixture("far.tmj"), options);
+    // (Not `unwrap_err`: a map that loads by mistake would print its million cells.)
+    let refused = |text: &str, options: &TiledOptions| match parse(text, options) {
+        Ok(m) => panic!("a {}×{} map loaded", m.map.width(), m.map.height()),
+        Err(e) => e,
+    };
+    // 1025² cells, two of them in chunks: past the 2²⁰ cells any spread may take, and far
+    // more than 64 times what the chunks hold.
+    let far = far_flung(1024);
+    assert!(far.len() < 600);
+    let e = refused(&far, &TiledOptions::default());
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "{}: `width × height` = 1050625 is out of range: layers[0] (\"l\"): the infinite \
+             layer's chunks hold 2 cells spread over 1025×1025 = 1050625 cells, more than 64 \
+             times as many (`TiledOptions::max_chunk_spread`, for maps over 1048576 cells): \
+             nearly all of it empty, and each empty cell costs memory; raise \
+             `max_chunk_spread` to load it",
+            fixture("far.tmj").display()
+        )
+    );
+    // Raised, it loads: the two chunks' cells at the corners of the box.
+    let map = parse(
+        &far,
+        &TiledOptions::default().with_max_chunk_spread(1 << 20),
+    )
+    .unwrap();
+    assert_eq!((map.map.width(), map.map.height()), (1025, 1025));
+    assert_eq!(map.map.tile(Cell::new(1024, 1024)), Some(TileId(1)));
+    // Up to 2²⁰ cells, any spread loads: 1024² here.
+    let near = parse(&far_flung(1023), &TiledOptions::default()).unwrap();
+    assert_eq!((near.map.width(), near.map.height()), (1024, 1024));
+    // `max_cells` bounds the bounding box too, and says how to raise it.
+    let e = refused(
+        &far_flung(1023),
+        &TiledOptions::default().with_max_cells(1000),
+    );
+    assert!(
+        e.to_string().contains(
+            "the layer spans 1024×1024 cells, more than 1000 cells (`TiledOptions::max_cells`; \
+             raise it to load this map)"
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn max_cells_bounds_every_layer_before_it_is_read() {
+    let small = TiledOptions::default().with_max_cells(1);
+    let tmx = two_cells(r#"<data encoding="csv">1,1</data>"#);
+    let e = tiled::parse_tmx(&tmx, scratch("max_cells.tmx", b""), &small).unwrap_err();
+    assert_eq!(e.location, line_col(1, 1));
+    assert!(
+        matches!(&e.kind, LoadErrorKind::BadSize { field: "width × height", value: 2, reason }
+            if reason.contains("2×1 is more than 1 cells (`TiledOptions::max_cells`")),
+        "{e}"
+    );
+    let tmj = std::fs::read_to_string(fixture("flips.tmj")).unwrap();
+    let e = tiled::parse_tmj(&tmj, fixture("inline.tmj"), &small).unwrap_err();
+    assert!(e.to_string().contains("`TiledOptions::max_cells`"), "{e}");
+    // Above MAX_CELLS is taken as MAX_CELLS.
+    let huge = TiledOptions::default().with_max_cells(u64::MAX);
+    let e = tiled::parse_tmx(
+        r#"<map version="1.10" orientation="orthogonal" width="100000" height="100000" tilewidth="16" tileheight="16">
+</map>"#,
+        fixture("inline.tmx"),
+        &huge,
+    )
+    .unwrap_err();
+    assert!(
+        e.to_string()
+            .contains(&format!("is more than {MAX_CELLS} cells")),
+        "{e}"
+    );
+}

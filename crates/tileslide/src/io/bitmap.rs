@@ -28,7 +28,15 @@ pub struct BitmapOptions {
     pub threshold: u8,
     /// Outline simplification, in pixels (see [`TileShape::trace`]). Default 1.
     pub tolerance: f32,
+    /// Most tiles the sheet may be cut into, checked before the image is decoded: each
+    /// traced tile costs about 300 bytes, so a 3 KB image cut into 1 × 1 tiles would cost
+    /// 300 MB. Default [`DEFAULT_MAX_TILES`].
+    pub max_tiles: u32,
 }
+
+/// The default [`BitmapOptions::max_tiles`]: 2¹⁸ tiles (about 80 MB of shapes), a 512 × 512
+/// sheet of single-pixel tiles or a 8192 × 8192 sheet of 16-pixel ones.
+pub const DEFAULT_MAX_TILES: u32 = 1 << 18;
 
 impl BitmapOptions {
     /// Tiles of `tile_width × tile_height` pixels, default threshold and tolerance.
@@ -39,6 +47,7 @@ impl BitmapOptions {
             tile_height,
             threshold: 128,
             tolerance: 1.0,
+            max_tiles: DEFAULT_MAX_TILES,
         }
     }
 }
@@ -86,6 +95,19 @@ pub fn parse_tile_set(
     let mut reader = decoder
         .read_info()
         .map_err(|e| invalid(format!("not a readable PNG image: {e}")))?;
+    let (width, height) = (reader.info().width, reader.info().height);
+    let tiles = u64::from(width / tw) * u64::from(height / th);
+    if tiles > u64::from(options.max_tiles) {
+        return Err(error(LoadErrorKind::BadSize {
+            field: "tiles",
+            value: tiles as i64,
+            reason: format!(
+                "a {width} × {height} image cut into {tw} × {th} tiles gives {tiles} tiles, \
+                 more than `BitmapOptions::max_tiles` ({}); raise it to load this sheet",
+                options.max_tiles
+            ),
+        }));
+    }
     let size = reader
         .output_buffer_size()
         .filter(|&n| n <= MAX_DECODED_BYTES)
@@ -246,6 +268,32 @@ mod tests {
                 Err(e) => assert!(e.to_string().starts_with("sheet.png"), "{e}"),
             }
         }
+    }
+
+    #[test]
+    fn a_small_image_cut_into_too_many_tiles_is_refused_before_decoding() {
+        // 600 × 600 pixels of one grey (a few hundred bytes of PNG) in 1 × 1 tiles: 360 000
+        // tiles, more than the default 2^18.
+        let png = png_bytes(600, 600, png::ColorType::Grayscale, |_, _| vec![10]);
+        assert!(png.len() < 2000, "{}", png.len());
+        let e = parse_tile_set(&png, "dots.png", &BitmapOptions::new(1, 1)).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "dots.png: `tiles` = 360000 is out of range: a 600 × 600 image cut into 1 × 1 tiles \
+             gives 360000 tiles, more than `BitmapOptions::max_tiles` (262144); raise it to load \
+             this sheet"
+        );
+        // The bound is the caller's: 400 tiles load under a bound of 400, not of 399.
+        let small = png_bytes(20, 20, png::ColorType::Grayscale, |_, _| vec![10]);
+        let with = |max_tiles| BitmapOptions {
+            max_tiles,
+            ..BitmapOptions::new(1, 1)
+        };
+        assert_eq!(
+            parse_tile_set(&small, "s.png", &with(400)).unwrap().len(),
+            400
+        );
+        assert!(parse_tile_set(&small, "s.png", &with(399)).is_err());
     }
 
     #[test]

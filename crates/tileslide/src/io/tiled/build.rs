@@ -11,7 +11,7 @@ use super::document::{Document, LayerCells, TileLayerDoc, TileSetDoc};
 use super::placement::Placement;
 use super::properties::Lookup;
 use super::shapes::{self, TileShapeError};
-use super::{Flip, TileInfo, TiledMap, TiledOptions, invalid};
+use super::{Flip, SPREAD_FREE_CELLS, TileInfo, TiledMap, TiledOptions, invalid};
 use crate::io::{LoadError, LoadErrorKind, Location};
 use crate::tiles::{MAX_CELLS, TileId, TileMap, TileSet, TileShape};
 
@@ -25,7 +25,7 @@ pub(super) fn build(
     let layer = &doc.tile_layers[index];
     let layer_error =
         |message: String| invalid(path, layer.location, format!("{}: {message}", layer.label));
-    let grid = Grid::of(layer, doc.tile_size, path)?;
+    let grid = Grid::of(layer, doc.tile_size, path, options)?;
     let tile_size = Vec2::new(doc.tile_size.0 as f32, doc.tile_size.1 as f32);
 
     // The gids placed, checked; each becomes the tile id of its cells.
@@ -270,8 +270,25 @@ struct Grid {
 
 impl Grid {
     /// The grid of a finite layer, or the bounding box of an infinite layer's chunks,
-    /// refused before anything is allocated if it has more than [`MAX_CELLS`] cells.
-    fn of(layer: &TileLayerDoc, tile_size: (u32, u32), path: &Path) -> Result<Self, LoadError> {
+    /// refused before anything is allocated if it has more cells than the options allow (or
+    /// an infinite layer's chunks are spread too thinly over it).
+    fn of(
+        layer: &TileLayerDoc,
+        tile_size: (u32, u32),
+        path: &Path,
+        options: &TiledOptions,
+    ) -> Result<Self, LoadError> {
+        let bad_size = |value: u64, reason: String| {
+            LoadError::new(
+                path,
+                layer.location,
+                LoadErrorKind::BadSize {
+                    field: "width × height",
+                    value: value as i64,
+                    reason: format!("{}: {reason}", layer.label),
+                },
+            )
+        };
         let (min, max) = match &layer.cells {
             LayerCells::Finite { width, height, .. } => {
                 ((0, 0), (i64::from(*width), i64::from(*height)))
@@ -301,19 +318,39 @@ impl Grid {
         };
         let (width, height) = (max.0 - min.0, max.1 - min.1);
         let cells = width.saturating_mul(height);
-        if width <= 0 || height <= 0 || cells as u64 > MAX_CELLS {
-            return Err(LoadError::new(
-                path,
-                layer.location,
-                LoadErrorKind::BadSize {
-                    field: "width × height",
-                    value: cells,
-                    reason: format!(
-                        "{}: the layer spans {width}×{height} cells, more than {MAX_CELLS}",
-                        layer.label
-                    ),
-                },
+        let bound = options.max_cells.min(MAX_CELLS);
+        if width <= 0 || height <= 0 || cells as u64 > bound {
+            return Err(bad_size(
+                cells as u64,
+                format!(
+                    "the layer spans {width}×{height} cells, more than {}",
+                    super::cell_limit(bound)
+                ),
             ));
+        }
+        if let LayerCells::Chunks(chunks) = &layer.cells {
+            // Every cell of the bounding box is built, so chunks far apart cost memory for
+            // every empty cell between them: bound the box by what the chunks hold.
+            let held: u64 = chunks
+                .iter()
+                .map(|c| u64::from(c.width) * u64::from(c.height))
+                .sum();
+            let spread_bound = held
+                .saturating_mul(options.max_chunk_spread)
+                .max(SPREAD_FREE_CELLS);
+            if cells as u64 > spread_bound {
+                return Err(bad_size(
+                    cells as u64,
+                    format!(
+                        "the infinite layer's chunks hold {held} cells spread over {width}×{height} \
+                         = {cells} cells, more than {} times as many (`TiledOptions::\
+                         max_chunk_spread`, for maps over {SPREAD_FREE_CELLS} cells): nearly \
+                         all of it empty, and each empty cell costs memory; raise \
+                         `max_chunk_spread` to load it",
+                        options.max_chunk_spread
+                    ),
+                ));
+            }
         }
         let origin = Vec2::new(
             (min.0 * i64::from(tile_size.0)) as f32,

@@ -76,20 +76,47 @@ use crate::tiles::{TileId, TileMap};
 /// that many before reading them.
 pub const MAX_TILE_COUNT: u32 = 1 << 18;
 
-/// How to load a Tiled map.
+/// How to load a Tiled map, and the bounds a game loading its players' levels can set on
+/// what one file may cost.
 ///
 /// ```
 /// # use tileslide::io::tiled::TiledOptions;
-/// let options = TiledOptions::default().with_layer("ground");
+/// let options = TiledOptions::default().with_layer("ground").with_max_cells(1 << 20);
 /// assert_eq!(options.layer.as_deref(), Some("ground"));
+/// assert_eq!((options.max_cells, options.max_chunk_spread), (1 << 20, 64));
 /// ```
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TiledOptions {
     /// The tile layer that collides: the first named so; else, as `NAME#N`, the N-th (from 1)
     /// tile layer named `NAME` (Tiled lets layers share a name), or as `#N` the N-th tile layer
     /// of the file. `None` (the default): the first tile layer with the bool property
     /// `collision = true`, else the first tile layer.
     pub layer: Option<String>,
+    /// Most cells a tile layer may hold (`width × height`; for an infinite layer, its
+    /// chunks together, and the collision layer's bounding box), checked before anything is
+    /// allocated from them. A map costs about 16 bytes a cell. Default, and most:
+    /// [`MAX_CELLS`](crate::MAX_CELLS) (2²⁶); a larger value is taken as that.
+    pub max_cells: u64,
+    /// Most cells an infinite collision layer's bounding box may span for each cell its
+    /// chunks hold, once it spans more than [`SPREAD_FREE_CELLS`]. The map is built over the
+    /// whole bounding box, so a few chunks far apart (a 500-byte file with two chunks 8000
+    /// cells apart) cost memory for every empty cell between them; the default, 64,
+    /// refuses such a map and loads any whose chunks cover a 64th of their extent.
+    pub max_chunk_spread: u64,
+}
+
+/// Cells an infinite layer's bounding box may span whatever its chunks hold (about 16 MB of
+/// map): [`TiledOptions::max_chunk_spread`] bounds only maps larger than this.
+pub const SPREAD_FREE_CELLS: u64 = 1 << 20;
+
+impl Default for TiledOptions {
+    fn default() -> Self {
+        Self {
+            layer: None,
+            max_cells: crate::MAX_CELLS,
+            max_chunk_spread: 64,
+        }
+    }
 }
 
 impl TiledOptions {
@@ -99,6 +126,35 @@ impl TiledOptions {
     pub fn with_layer(mut self, name: impl Into<String>) -> Self {
         self.layer = Some(name.into());
         self
+    }
+
+    /// These options with at most `cells` cells a layer (see [`max_cells`](Self::max_cells)).
+    #[must_use]
+    pub fn with_max_cells(mut self, cells: u64) -> Self {
+        self.max_cells = cells;
+        self
+    }
+
+    /// These options with an infinite layer's bounding box at most `spread` times its chunks'
+    /// cells (see [`max_chunk_spread`](Self::max_chunk_spread)).
+    #[must_use]
+    pub fn with_max_chunk_spread(mut self, spread: u64) -> Self {
+        self.max_chunk_spread = spread;
+        self
+    }
+
+    /// The cell bound in force: [`max_cells`](Self::max_cells), at most `MAX_CELLS`.
+    fn cell_bound(&self) -> u64 {
+        self.max_cells.min(crate::MAX_CELLS)
+    }
+}
+
+/// How errors name the cell bound `limit`, and how to raise it.
+fn cell_limit(limit: u64) -> String {
+    if limit >= crate::MAX_CELLS {
+        format!("{limit} cells")
+    } else {
+        format!("{limit} cells (`TiledOptions::max_cells`; raise it to load this map)")
     }
 }
 
@@ -187,7 +243,8 @@ pub fn parse_tmx(
     options: &TiledOptions,
 ) -> Result<TiledMap, LoadError> {
     let path = path.as_ref();
-    build::build(tmx::parse(strip_bom(text), path)?, options, path)
+    let doc = tmx::parse(strip_bom(text), path, options.cell_bound())?;
+    build::build(doc, options, path)
 }
 
 /// Parses `.tmj` text. `path` names it in errors; its external tile sets are read from disk
@@ -223,7 +280,8 @@ pub fn parse_tmj(
     options: &TiledOptions,
 ) -> Result<TiledMap, LoadError> {
     let path = path.as_ref();
-    build::build(tmj::parse(strip_bom(text), path)?, options, path)
+    let doc = tmj::parse(strip_bom(text), path, options.cell_bound())?;
+    build::build(doc, options, path)
 }
 
 /// The text without a leading byte-order mark.

@@ -16,7 +16,6 @@ use super::tile_data::{self, Encoding, count_message};
 use super::tmj_schema::{JsonData, JsonKind, JsonLayer, JsonMap, JsonTileSet, object, properties};
 use super::{Flip, invalid, line_column, tmx};
 use crate::io::{LoadError, LoadErrorKind, Location};
-use crate::tiles::MAX_CELLS;
 
 /// A JSON syntax or shape error at serde_json's line and column (converted to characters).
 fn json_error(text: &str, path: &Path, e: &serde_json::Error) -> LoadError {
@@ -56,7 +55,7 @@ fn json_error(text: &str, path: &Path, e: &serde_json::Error) -> LoadError {
 }
 
 /// Parses a `.tmj` map's text; `path` names it and locates its external tile sets.
-pub(super) fn parse(text: &str, path: &Path) -> Result<Document, LoadError> {
+pub(super) fn parse(text: &str, path: &Path, max_cells: u64) -> Result<Document, LoadError> {
     let error = |message: String| invalid(path, Location::File, message);
     let json: JsonMap = match serde_json::from_str(text) {
         Ok(json) => json,
@@ -85,7 +84,7 @@ pub(super) fn parse(text: &str, path: &Path) -> Result<Document, LoadError> {
         }
     }
     if !json.infinite {
-        check_grid(path, "map", json.width, json.height)?;
+        check_grid(path, "map", json.width, json.height, max_cells)?;
     }
     let mut tile_sets = Vec::with_capacity(json.tilesets.len());
     for (i, set) in json.tilesets.iter().enumerate() {
@@ -94,6 +93,7 @@ pub(super) fn parse(text: &str, path: &Path) -> Result<Document, LoadError> {
     let mut walk = LayerWalk {
         path,
         infinite: json.infinite,
+        max_cells,
         tile_layers: Vec::new(),
         object_layers: Vec::new(),
     };
@@ -146,12 +146,13 @@ fn bad_size(path: &Path, field: &'static str, value: i64, reason: String) -> Loa
     )
 }
 
-/// `width` and `height` present, at least 1, and at most [`MAX_CELLS`] cells together.
+/// `width` and `height` present, at least 1, and at most `max_cells` cells together.
 fn check_grid(
     path: &Path,
     what: &str,
     width: Option<u32>,
     height: Option<u32>,
+    max_cells: u64,
 ) -> Result<(u32, u32), LoadError> {
     let (Some(width), Some(height)) = (width, height) else {
         return Err(invalid(
@@ -171,12 +172,15 @@ fn check_grid(
         }
     }
     let cells = u64::from(width) * u64::from(height);
-    if cells > MAX_CELLS {
+    if cells > max_cells {
         return Err(bad_size(
             path,
             "width × height",
             cells as i64,
-            format!("{what}: {width}×{height} is more than {MAX_CELLS} cells"),
+            format!(
+                "{what}: {width}×{height} is more than {}",
+                super::cell_limit(max_cells)
+            ),
         ));
     }
     Ok((width, height))
@@ -288,6 +292,8 @@ fn tile_set_doc(
 struct LayerWalk<'a> {
     path: &'a Path,
     infinite: bool,
+    /// Most cells a layer (or an infinite layer's chunks together) may hold.
+    max_cells: u64,
     tile_layers: Vec<TileLayerDoc>,
     object_layers: Vec<ObjectLayer>,
 }
@@ -337,7 +343,8 @@ impl LayerWalk<'_> {
         let error = |m: String| invalid(self.path, Location::File, format!("{label}: {m}"));
         let compression = layer.compression.as_deref().filter(|c| !c.is_empty());
         if !self.infinite {
-            let (width, height) = check_grid(self.path, label, layer.width, layer.height)?;
+            let (width, height) =
+                check_grid(self.path, label, layer.width, layer.height, self.max_cells)?;
             let data = layer
                 .data
                 .as_ref()
@@ -364,15 +371,23 @@ impl LayerWalk<'_> {
                     format!("{what}: chunks must lie within ±{FAR} cells"),
                 ));
             }
-            let (width, height) =
-                check_grid(self.path, &what, Some(chunk.width), Some(chunk.height))?;
+            let (width, height) = check_grid(
+                self.path,
+                &what,
+                Some(chunk.width),
+                Some(chunk.height),
+                self.max_cells,
+            )?;
             total += u64::from(width) * u64::from(height);
-            if total > MAX_CELLS {
+            if total > self.max_cells {
                 return Err(bad_size(
                     self.path,
                     "width × height",
                     total as i64,
-                    format!("{label}: the layer's chunks hold more than {MAX_CELLS} cells"),
+                    format!(
+                        "{label}: the layer's chunks hold more than {}",
+                        super::cell_limit(self.max_cells)
+                    ),
                 ));
             }
             let gids = gids(

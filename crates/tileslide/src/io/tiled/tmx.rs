@@ -85,8 +85,8 @@ fn crate_error(path: &Path, e: &::tiled::Error) -> LoadError {
 }
 
 /// Parses a `.tmx` map's text; `path` names it and locates its external files.
-pub(super) fn parse(text: &str, path: &Path) -> Result<Document, LoadError> {
-    let scan = tmx_scan::scan_map(text, path)?;
+pub(super) fn parse(text: &str, path: &Path, max_cells: u64) -> Result<Document, LoadError> {
+    let scan = tmx_scan::scan_map(text, path, max_cells)?;
     let dir = path.parent().unwrap_or(Path::new(""));
     let mut reader = GuardedReader::new(path);
     reader.map = Some((path.to_path_buf(), text.as_bytes().to_vec()));

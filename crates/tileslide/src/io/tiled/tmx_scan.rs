@@ -16,7 +16,6 @@ use super::tile_data::{self, DataError, Encoding};
 use super::xml_walker::{Element, Item, Walker};
 use super::{MAX_TILE_COUNT, line_column};
 use crate::io::{LoadError, Location};
-use crate::tiles::MAX_CELLS;
 
 /// What the first pass learned about a map.
 #[derive(Debug)]
@@ -47,7 +46,7 @@ pub(super) struct ScannedLayer {
 }
 
 impl Walker<'_> {
-    /// `width` and `height` of at least 1 whose product is at most [`MAX_CELLS`].
+    /// `width` and `height` of at least 1 whose product is at most the walk's `max_cells`.
     fn grid_size(&self, element: &Element) -> Result<(u32, u32), LoadError> {
         let width: u32 = self.required(element, "width", "a whole number")?;
         let height: u32 = self.required(element, "height", "a whole number")?;
@@ -89,12 +88,15 @@ fn check_cells(
     height: u32,
 ) -> Result<(), LoadError> {
     let cells = u64::from(width) * u64::from(height);
-    if cells > MAX_CELLS {
+    if cells > w.max_cells {
         return Err(w.size_error(
             element.offset,
             "width × height",
             cells as i64,
-            format!("{width}×{height} is more than {MAX_CELLS} cells"),
+            format!(
+                "{width}×{height} is more than {}",
+                super::cell_limit(w.max_cells)
+            ),
         ));
     }
     Ok(())
@@ -141,9 +143,10 @@ struct PendingLayer {
     chunk_blocks: u64,
 }
 
-/// Checks a `.tmx` map and decodes its tile layers.
-pub(super) fn scan_map(text: &str, path: &Path) -> Result<ScannedMap, LoadError> {
+/// Checks a `.tmx` map and decodes its tile layers, each of at most `max_cells` cells.
+pub(super) fn scan_map(text: &str, path: &Path, max_cells: u64) -> Result<ScannedMap, LoadError> {
     let mut w = Walker::new(text, path);
+    w.max_cells = max_cells;
     let mut header: Option<((u32, u32), bool)> = None;
     let mut tile_sets = Vec::new();
     let mut tile_layers = Vec::new();
@@ -341,15 +344,16 @@ fn chunk_header(
         };
         layer.chunk_cells += u64::from(width) * u64::from(height);
         layer.chunk_blocks += blocks(x, width) * blocks(y, height);
-        if layer.chunk_cells > MAX_CELLS || layer.chunk_blocks > MAX_CELLS / 256 {
+        let max_blocks = w.max_cells.div_ceil(256);
+        if layer.chunk_cells > w.max_cells || layer.chunk_blocks > max_blocks {
             return Err(w.size_error(
                 element.offset,
                 "width × height",
                 layer.chunk_cells as i64,
                 format!(
-                    "the layer's chunks hold more than {MAX_CELLS} cells, or spread over more \
-                     than {} blocks of 16×16 cells",
-                    MAX_CELLS / 256
+                    "the layer's chunks hold more than {}, or spread over more than \
+                     {max_blocks} blocks of 16×16 cells",
+                    super::cell_limit(w.max_cells)
                 ),
             ));
         }
@@ -427,6 +431,7 @@ impl PendingLayer {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::tiles::MAX_CELLS;
 
     #[test]
     fn line_column_counts_characters_from_one() {
@@ -457,7 +462,7 @@ mod tests {
  <tileset firstgid="1" source="t.tsx"/>
  <group name="g"><layer name="a" width="2" height="1"><data encoding="csv">1,2</data></layer></group>
 </map>"#;
-        let scan = scan_map(tmx, Path::new("m.tmx")).unwrap();
+        let scan = scan_map(tmx, Path::new("m.tmx"), MAX_CELLS).unwrap();
         assert_eq!(scan.tile_size, (8, 8));
         assert_eq!(scan.tile_sets[0].first_gid, 1);
         assert_eq!(scan.tile_layers.len(), 1);
@@ -471,7 +476,7 @@ mod tests {
     fn a_bad_csv_entry_is_named_at_its_own_line_and_column() {
         let tmx = "<map version=\"1.10\" orientation=\"orthogonal\" width=\"2\" height=\"2\" tilewidth=\"8\" \
                    tileheight=\"8\">\n<layer name=\"a\" width=\"2\" height=\"2\"><data encoding=\"csv\">\n1,2,\n3,x\n</data></layer></map>";
-        let e = scan_map(tmx, Path::new("m.tmx")).unwrap_err();
+        let e = scan_map(tmx, Path::new("m.tmx"), MAX_CELLS).unwrap_err();
         assert_eq!(e.location, Location::LineColumn { line: 4, column: 3 });
         assert!(e.to_string().contains("\"x\""), "{e}");
     }

@@ -8,6 +8,7 @@ use quick_xml::events::{BytesStart, Event};
 
 use super::{invalid, line_column};
 use crate::io::{LoadError, LoadErrorKind, Location};
+use crate::tiles::MAX_CELLS;
 
 /// An element's name, attributes (unescaped) and byte offset.
 pub(super) struct Element {
@@ -37,6 +38,8 @@ pub(super) struct Walker<'a> {
     reader: Reader<&'a [u8]>,
     /// Open elements: name and offset.
     open: Vec<(String, usize)>,
+    /// Most cells a grid the walk reads may hold ([`MAX_CELLS`] unless the caller lowers it).
+    pub max_cells: u64,
 }
 
 impl<'a> Walker<'a> {
@@ -48,6 +51,7 @@ impl<'a> Walker<'a> {
             path,
             reader,
             open: Vec::new(),
+            max_cells: MAX_CELLS,
         }
     }
 
