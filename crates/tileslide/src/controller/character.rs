@@ -6,7 +6,7 @@ use glam::Vec2;
 use super::contact::{Contact, Contacts, Surface};
 use super::platform::Riding;
 use super::{CharacterShape, ControllerError};
-use crate::geometry::{Aabb, SweepHit};
+use crate::geometry::{Aabb, MAX_COORD, SweepHit, in_range};
 use crate::query::{RayFilter, Wall};
 use crate::tiles::{Owner, SegmentFlags, TileMap};
 
@@ -135,15 +135,17 @@ enum Phase {
 impl Character {
     /// A character of `shape` centred at `position`, with unit-length-or-not `up` (it is
     /// normalized), moving by `config`; an error naming the bad value when the position is
-    /// not finite, `up` is zero or not finite, or the configuration is out of range.
+    /// not finite or beyond [`MAX_COORD`], `up` is zero or not finite, the shape's size is
+    /// not positive or beyond `MAX_COORD`, or the configuration is out of range.
     pub fn new(
         shape: CharacterShape,
         position: Vec2,
         up: Vec2,
         config: ControllerConfig,
     ) -> Result<Self, ControllerError> {
-        finite("position", position)?;
-        let up = up.try_normalize().ok_or(ControllerError::NonFinite {
+        placed("position", position)?;
+        let shape = shape.validated()?;
+        let up = unit(up).ok_or(ControllerError::NonFinite {
             what: "up",
             value: up,
         })?;
@@ -188,9 +190,10 @@ impl Character {
         self.ground.as_ref()
     }
 
-    /// Moves the character to `position` (a teleport: no sweep), forgetting its ground.
+    /// Moves the character to `position` (a teleport: no sweep), forgetting its ground; an
+    /// error when it is not finite or beyond [`MAX_COORD`] (the character does not move).
     pub fn teleport(&mut self, position: Vec2) -> Result<(), ControllerError> {
-        finite("position", position)?;
+        placed("position", position)?;
         self.position = position;
         self.ground = None;
         self.riding = None;
@@ -199,7 +202,8 @@ impl Character {
 
     /// Moves the character by `displacement` (velocity × dt) through `map` and its
     /// temporary segments, as described on the type, and returns what it touched. An error
-    /// when the displacement is not finite (the character does not move).
+    /// when the displacement is not finite or would end beyond [`MAX_COORD`] (the character
+    /// does not move): within that range no length or product inside the move overflows.
     pub fn move_by(
         &mut self,
         map: &TileMap,
@@ -208,11 +212,10 @@ impl Character {
     ) -> Result<Contacts, ControllerError> {
         finite("displacement", displacement)?;
         // (`position` is a public field: checked here too.)
-        finite("position", self.position)?;
-        if !displacement.length().is_finite() {
-            // Finite components whose length overflows: no sweep can take it.
-            return Err(ControllerError::NonFinite {
-                what: "displacement length",
+        placed("position", self.position)?;
+        if !in_range(self.position + displacement) {
+            return Err(ControllerError::OutOfRange {
+                what: "displacement",
                 value: displacement,
             });
         }
@@ -450,6 +453,29 @@ fn finite(what: &'static str, value: Vec2) -> Result<Vec2, ControllerError> {
     }
 }
 
+/// The position `value`, or an error naming it (`what`) when it is not finite or is beyond
+/// [`MAX_COORD`].
+fn placed(what: &'static str, value: Vec2) -> Result<Vec2, ControllerError> {
+    finite(what, value)?;
+    if in_range(value) {
+        Ok(value)
+    } else {
+        Err(ControllerError::OutOfRange { what, value })
+    }
+}
+
+/// `v` scaled to unit length, `None` when it is zero or not finite. Scaled by its largest
+/// component first, so a finite direction whose length squared overflows (or underflows)
+/// still has one.
+fn unit(v: Vec2) -> Option<Vec2> {
+    let largest = v.abs().max_element();
+    if largest > 0.0 && largest.is_finite() {
+        (v / largest).try_normalize()
+    } else {
+        None
+    }
+}
+
 /// The move along a surface with `normal` that makes `sideways` progress along `side`: the
 /// surface's tangent scaled so that its sideways part is `sideways`. Zero for a surface
 /// with no sideways extent (a vertical one).
@@ -473,17 +499,13 @@ fn check_config(config: &ControllerConfig) -> Result<(), ControllerError> {
         (
             "snap_distance",
             config.snap_distance,
-            config.snap_distance >= 0.0 && config.snap_distance.is_finite(),
+            distance(config.snap_distance),
         ),
-        (
-            "skin",
-            config.skin,
-            config.skin >= 0.0 && config.skin.is_finite(),
-        ),
+        ("skin", config.skin, distance(config.skin)),
         (
             "step_height",
             config.step_height,
-            config.step_height >= 0.0 && config.step_height.is_finite(),
+            distance(config.step_height),
         ),
     ];
     for (field, value, ok) in checks {
@@ -498,4 +520,9 @@ fn check_config(config: &ControllerConfig) -> Result<(), ControllerError> {
         });
     }
     Ok(())
+}
+
+/// Whether a configured distance is in range: not negative, at most [`MAX_COORD`].
+fn distance(value: f32) -> bool {
+    (0.0..=MAX_COORD).contains(&value)
 }
