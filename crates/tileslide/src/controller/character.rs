@@ -7,8 +7,8 @@ use super::contact::{Contact, Contacts, Surface};
 use super::platform::Riding;
 use super::{CharacterShape, ControllerError};
 use crate::geometry::{Aabb, MAX_COORD, Segment, SweepHit, in_range};
-use crate::query::{RayFilter, Wall};
-use crate::tiles::{Owner, SegmentFlags, TileMap};
+use crate::query::{Capsule, RayFilter, SegmentSource, Wall};
+use crate::tiles::{ActiveSegment, Owner, SegmentFlags, TileMap};
 
 /// How a character moves: slope limit, ground snapping, the gap it keeps from surfaces.
 /// Distances are in map units; the defaults suit maps with cells of size 1 (scale them with
@@ -126,6 +126,11 @@ pub struct Character {
 
 /// Moves shorter than this are not swept (they are rounding, not motion).
 const MIN_MOVE: f32 = 1e-7;
+
+/// A neighbour turns away from a segment's end (a convex corner) when its normal leans
+/// along the segment's outward direction there by more than this cosine (as seam culling
+/// decides it, `tiles::continuity`).
+const CONVEX_COSINE: f32 = 1e-4;
 
 /// A circle whose contact normal with a corner rises more than this (its sine) is above
 /// the corner: only the rise or fall of a move rolls it (see `Character::roll`). Not zero,
@@ -600,24 +605,100 @@ impl Character {
         let mut best: Option<(SweepHit, Wall)> = None;
         for wall in &self.walls {
             let capsule = &wall.capsule;
-            if wall.flags.contains(SegmentFlags::ONE_WAY)
-                && !wall.flags.contains(SegmentFlags::SOLID)
-            {
-                // A one-way platform holds only a character whose lowest point (towards
-                // the platform) is on or above it, give or take the skin.
-                let height = (self.position - capsule.segment.a).dot(capsule.normal)
-                    - self.shape.support(capsule.normal);
-                if options.drop_through || height < -2.0 * self.config.skin {
-                    continue;
+            if !self.held_by(wall.flags, capsule.segment.a, capsule.normal, options) {
+                continue;
+            }
+            let Some(mut hit) = self.shape.sweep(capsule, self.position, motion) else {
+                continue;
+            };
+            // Met at a rounded end: unless the surface goes on there for this character.
+            if hit.normal != capsule.normal {
+                let caps = self.caps_needed(map, wall, options);
+                if caps != capsule.caps {
+                    let bare = Capsule { caps, ..*capsule };
+                    let Some(face) = self.shape.sweep(&bare, self.position, motion) else {
+                        continue;
+                    };
+                    hit = face;
                 }
             }
-            if let Some(hit) = self.shape.sweep(capsule, self.position, motion)
-                && best.is_none_or(|(b, _)| hit.t < b.t)
-            {
+            if best.is_none_or(|(b, _)| hit.t < b.t) {
                 best = Some((hit, *wall));
             }
         }
         best
+    }
+
+    /// Whether a segment with `flags`, through `point` with unit `normal`, can stop the
+    /// character on this move: any segment the mask takes, but a one-way platform only
+    /// when the character's lowest point (towards the platform) is on or above it, give or
+    /// take two skins, and it is not dropping through.
+    fn held_by(
+        &self,
+        flags: SegmentFlags,
+        point: Vec2,
+        normal: Vec2,
+        options: MoveOptions,
+    ) -> bool {
+        if !flags.intersects(self.config.mask) {
+            return false;
+        }
+        if flags.contains(SegmentFlags::ONE_WAY) && !flags.contains(SegmentFlags::SOLID) {
+            let height = (self.position - point).dot(normal) - self.shape.support(normal);
+            return !options.drop_through && height >= -2.0 * self.config.skin;
+        }
+        true
+    }
+
+    /// `wall`'s rounded ends, less those its neighbours cover for this character on this
+    /// move: an end where the surface continues, flat or turning concave, into a neighbour
+    /// that stops the character too; and an end (a side face's top, say) on a seam of a
+    /// floor that goes on flat or concave past it on both sides, both halves stopping the
+    /// character, which is in front of both.
+    ///
+    /// Seam culling keeps these caps where a one-way platform meets another or a solid tile
+    /// (and where flags change), and keeps a solid tile's side face beside a one-way
+    /// platform (the platform hides nothing): a body coming from below a platform must meet
+    /// them. A character the platform holds is above them, where the floor's faces cover
+    /// them: through rounding they tilted a rolling circle's ground normal by 2e-4 and moved
+    /// it by 1e-5 of a cell. So for it they are flat, as on an all-solid floor.
+    fn caps_needed(&self, map: &TileMap, wall: &Wall, options: MoveOptions) -> [bool; 2] {
+        let mut caps = wall.capsule.caps;
+        let SegmentSource::Tile { segment, .. } = wall.source else {
+            return caps;
+        };
+        let Some(this) = map.active_segment(segment) else {
+            return caps;
+        };
+        for (end, cap) in caps.iter_mut().enumerate() {
+            let point = end_point(&this.segment, end);
+            let Some(next) = this.continues[end].and_then(|r| map.active_segment(r)) else {
+                continue;
+            };
+            if !*cap || !self.held_by(next.flags, next.segment.a, next.normal, options) {
+                continue;
+            }
+            if next.normal.dot(outward(&this.segment, end)) <= CONVEX_COSINE {
+                *cap = false;
+                continue;
+            }
+            // A convex end: is it a seam inside a floor that holds the character?
+            let far = usize::from(
+                next.segment.b.distance_squared(point) < next.segment.a.distance_squared(point),
+            );
+            let Some(beyond) = next.continues[far].and_then(|r| map.active_segment(r)) else {
+                continue;
+            };
+            let in_front = |s: &ActiveSegment| (self.position - s.segment.a).dot(s.normal) >= 0.0;
+            if beyond.normal.dot(outward(&next.segment, far)) <= CONVEX_COSINE
+                && self.held_by(beyond.flags, beyond.segment.a, beyond.normal, options)
+                && in_front(&next)
+                && in_front(&beyond)
+            {
+                *cap = false;
+            }
+        }
+        caps
     }
 }
 
@@ -711,4 +792,16 @@ fn nearest_end(segment: &Segment, point: Vec2) -> Vec2 {
     } else {
         segment.b
     }
+}
+
+/// `segment`'s end `end` (0: `a`, 1: `b`).
+fn end_point(segment: &Segment, end: usize) -> Vec2 {
+    if end == 0 { segment.a } else { segment.b }
+}
+
+/// The direction out of `segment` at its end `end`: back along it at `a`, on along it at
+/// `b`.
+fn outward(segment: &Segment, end: usize) -> Vec2 {
+    let along = segment.delta().normalize_or_zero();
+    if end == 0 { -along } else { along }
 }
