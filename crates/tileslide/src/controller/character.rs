@@ -6,9 +6,9 @@ use glam::Vec2;
 use super::contact::{Contact, Contacts, Surface};
 use super::platform::Riding;
 use super::{CharacterShape, ControllerError};
-use crate::geometry::{Aabb, SweepHit};
-use crate::query::{RayFilter, Wall};
-use crate::tiles::{Owner, SegmentFlags, TileMap};
+use crate::geometry::{Aabb, MAX_COORD, Segment, SweepHit, in_range};
+use crate::query::{Capsule, RayFilter, SegmentSource, Wall};
+use crate::tiles::{ActiveSegment, Owner, SegmentFlags, TileMap};
 
 /// How a character moves: slope limit, ground snapping, the gap it keeps from surfaces.
 /// Distances are in map units; the defaults suit maps with cells of size 1 (scale them with
@@ -27,7 +27,8 @@ pub struct ControllerConfig {
     /// How many times one move may hit a surface and slide on. Default 4.
     pub max_slides: u32,
     /// The highest ledge a walking character steps up onto instead of stopping at it (its
-    /// top must be walkable). Default 0: no stepping up.
+    /// top must be walkable), measured from the ground it walks on, for every shape: a
+    /// circle does not roll up a corner higher than this either. Default 0: no stepping up.
     pub step_height: f32,
     /// Segments block the character when they have one of these flags. Default
     /// `SOLID | ONE_WAY`.
@@ -66,8 +67,11 @@ pub struct MoveOptions {
 ///   without a bump. A steeper surface is a wall.
 /// - Downward motion while on the ground only presses the character onto it: standing on a
 ///   ramp it does not creep down.
-/// - Falling onto walkable ground stops there; falling along a wall or a steep slope slides
-///   down it; rising into a ceiling stops (or slides along a slanted one).
+/// - In the air the whole displacement is swept at once, so the frame rate does not decide
+///   whether a ledge is caught. Landing on walkable ground walks on along it with the rest
+///   of the move's sideways part; falling along a wall or a steep slope slides down it;
+///   rising into a ceiling stops (or slides along a slanted one); a circle meeting a corner
+///   rolls around it exactly.
 /// - After the move, a character that was on the ground and is not moving up looks
 ///   [`snap_distance`](ControllerConfig::snap_distance) below its feet and stays on any
 ///   walkable ground there.
@@ -123,27 +127,58 @@ pub struct Character {
 /// Moves shorter than this are not swept (they are rounding, not motion).
 const MIN_MOVE: f32 = 1e-7;
 
-/// Which part of a move is being swept: a walk along the ground, the sideways part of a
-/// move in the air, or the rise or fall (along up).
+/// A neighbour turns away from a segment's end (a convex corner) when its normal leans
+/// along the segment's outward direction there by more than this cosine (as seam culling
+/// decides it, `tiles::continuity`).
+const CONVEX_COSINE: f32 = 1e-4;
+
+/// A circle whose contact normal with a corner rises more than this (its sine) is above
+/// the corner: only the rise or fall of a move rolls it (see `Character::roll`). Not zero,
+/// so that a circle rolled to exactly level is not taken for above it through rounding.
+const ROLL_LEVEL: f32 = 1e-5;
+
+/// The most a circle's contact normal turns on one swept leg of a roll around a corner
+/// (radians): the legs run along the arc's tangents, at most `1/cos(ROLL_STEP/2) − 1`
+/// (0.9 %) of the distance outside it.
+const ROLL_STEP: f32 = 0.27;
+
+/// How a move is being swept: a walk along the ground, or a move through the air (which
+/// becomes a walk where it lands).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Phase {
     Walk,
-    Sideways,
-    Vertical,
+    Air,
+}
+
+/// The line of the ground a walk follows: a point on it and its unit normal. The height of
+/// a corner above it is what stepping onto that corner climbs.
+#[derive(Clone, Copy, Debug)]
+struct GroundLine {
+    point: Vec2,
+    normal: Vec2,
+}
+
+impl GroundLine {
+    /// How far `point` is above the line, along its normal.
+    fn height_of(&self, point: Vec2) -> f32 {
+        (point - self.point).dot(self.normal)
+    }
 }
 
 impl Character {
     /// A character of `shape` centred at `position`, with unit-length-or-not `up` (it is
     /// normalized), moving by `config`; an error naming the bad value when the position is
-    /// not finite, `up` is zero or not finite, or the configuration is out of range.
+    /// not finite or beyond [`MAX_COORD`], `up` is zero or not finite, the shape's size is
+    /// not positive or beyond `MAX_COORD`, or the configuration is out of range.
     pub fn new(
         shape: CharacterShape,
         position: Vec2,
         up: Vec2,
         config: ControllerConfig,
     ) -> Result<Self, ControllerError> {
-        finite("position", position)?;
-        let up = up.try_normalize().ok_or(ControllerError::NonFinite {
+        placed("position", position)?;
+        let shape = shape.validated()?;
+        let up = unit(up).ok_or(ControllerError::NonFinite {
             what: "up",
             value: up,
         })?;
@@ -188,9 +223,10 @@ impl Character {
         self.ground.as_ref()
     }
 
-    /// Moves the character to `position` (a teleport: no sweep), forgetting its ground.
+    /// Moves the character to `position` (a teleport: no sweep), forgetting its ground; an
+    /// error when it is not finite or beyond [`MAX_COORD`] (the character does not move).
     pub fn teleport(&mut self, position: Vec2) -> Result<(), ControllerError> {
-        finite("position", position)?;
+        placed("position", position)?;
         self.position = position;
         self.ground = None;
         self.riding = None;
@@ -199,7 +235,8 @@ impl Character {
 
     /// Moves the character by `displacement` (velocity × dt) through `map` and its
     /// temporary segments, as described on the type, and returns what it touched. An error
-    /// when the displacement is not finite (the character does not move).
+    /// when the displacement is not finite or would end beyond [`MAX_COORD`] (the character
+    /// does not move): within that range no length or product inside the move overflows.
     pub fn move_by(
         &mut self,
         map: &TileMap,
@@ -208,11 +245,10 @@ impl Character {
     ) -> Result<Contacts, ControllerError> {
         finite("displacement", displacement)?;
         // (`position` is a public field: checked here too.)
-        finite("position", self.position)?;
-        if !displacement.length().is_finite() {
-            // Finite components whose length overflows: no sweep can take it.
-            return Err(ControllerError::NonFinite {
-                what: "displacement length",
+        placed("position", self.position)?;
+        if !in_range(self.position + displacement) {
+            return Err(ControllerError::OutOfRange {
+                what: "displacement",
                 value: displacement,
             });
         }
@@ -228,23 +264,20 @@ impl Character {
         let walking = self.ground.filter(|ground| {
             rise <= 0.0 && !(options.drop_through && ground.flags.contains(SegmentFlags::ONE_WAY))
         });
-        if let Some(ground) = walking {
+        // In the air the whole displacement is swept at once: the path a smaller step would
+        // take is the same straight line, so where it lands (or meets a ledge's face) does
+        // not depend on the frame rate.
+        let ends = if let Some(ground) = walking {
             let walk = along(ground.normal, self.side, sideways);
-            self.slide(map, walk, Phase::Walk, options, &mut contacts);
+            let line = self.ground_line(ground.normal);
+            self.slide(map, walk, Some(line), options, &mut contacts)
         } else {
-            self.slide(
-                map,
-                self.side * sideways,
-                Phase::Sideways,
-                options,
-                &mut contacts,
-            );
-            self.slide(map, self.up * rise, Phase::Vertical, options, &mut contacts);
-        }
-        // Find the ground under the character: within the snap distance when it was
-        // walking (so it follows ramps down and steps down small ledges), within two skins
-        // otherwise (touching, not snapping).
-        let reach = if walking.is_some() {
+            self.slide(map, displacement, None, options, &mut contacts)
+        };
+        // Find the ground under the character: within the snap distance when it walked (so
+        // it follows ramps down and steps down small ledges; a landing walks on, as the
+        // next step would), within two skins otherwise (touching, not snapping).
+        let reach = if ends == Phase::Walk {
             self.config.snap_distance
         } else {
             2.0 * self.config.skin
@@ -255,28 +288,49 @@ impl Character {
         Ok(contacts)
     }
 
-    /// Sweeps `motion` with collide and slide, recording contacts.
+    /// Sweeps `motion` with collide and slide, recording contacts: a walk along the ground
+    /// `line` when there is one, a move through the air otherwise. Returns the phase it
+    /// ended in (a move through the air that lands walks on).
     fn slide(
         &mut self,
         map: &TileMap,
         motion: Vec2,
-        phase: Phase,
+        mut line: Option<GroundLine>,
         options: MoveOptions,
         contacts: &mut Contacts,
-    ) {
+    ) -> Phase {
         let mut remaining = motion;
         for _ in 0..self.config.max_slides {
-            let Some((hit, wall, rest)) = self.go(map, remaining, options, None) else {
-                return;
+            let phase = if line.is_some() {
+                Phase::Walk
+            } else {
+                Phase::Air
             };
-            let surface = Surface::of(hit.normal, self.up, self.side, self.walkable);
+            let Some((hit, wall, rest)) = self.go(map, remaining, options, None) else {
+                return phase;
+            };
+            let mut surface = Surface::of(hit.normal, self.up, self.side, self.walkable);
+            // A corner (a segment's end, met by a circle's rounded side) higher above the
+            // ground than the step height is a ledge's edge: a wall to a walk, however
+            // walkable its normal, so a circle climbs no more than a box does.
+            if let Some(line) = line
+                && surface == Surface::Ground
+                && hit.normal != wall.capsule.normal
+                && self.climb(&line, hit.normal) > self.config.step_height + self.slack()
+            {
+                surface = if rest.dot(self.side) > 0.0 {
+                    Surface::Right
+                } else {
+                    Surface::Left
+                };
+            }
             // A ledge low enough to step onto: stepped over, not a wall.
-            if phase == Phase::Walk
+            if let Some(line) = line
                 && self.config.step_height > 0.0
                 && matches!(surface, Surface::Left | Surface::Right)
-                && self.step_up(map, rest, options)
+                && self.step_up(map, rest, &line, options)
             {
-                return;
+                return Phase::Walk;
             }
             let contact = Contact {
                 normal: hit.normal,
@@ -289,26 +343,146 @@ impl Character {
                 Surface::Left => contacts.left = Some(contact),
                 Surface::Right => contacts.right = Some(contact),
             }
+            let landing =
+                surface == Surface::Ground && (phase == Phase::Walk || rest.dot(self.up) <= 0.0);
+            if phase == Phase::Air && !landing && self.at_rounded_corner(&hit, &wall) {
+                let corner = nearest_end(&wall.capsule.segment, self.position);
+                remaining = self.roll(map, corner, rest, options);
+                continue;
+            }
+            let slid = rest - hit.normal * rest.dot(hit.normal);
             remaining = match (phase, surface) {
-                // Walking onto walkable ground (a ramp up, or down onto a floor): on along
-                // it, keeping the sideways progress still to make.
-                (Phase::Walk | Phase::Sideways, Surface::Ground) => {
+                // Walking onto walkable ground (a ramp up, or down onto a floor), or landing
+                // on it: on along it, keeping the sideways progress still to make (a smaller
+                // step would walk on from there in its next steps).
+                (_, Surface::Ground) if landing => {
+                    line = Some(self.ground_line(hit.normal));
                     along(hit.normal, self.side, rest.dot(self.side))
                 }
-                // Landing.
-                (Phase::Vertical, Surface::Ground) => Vec2::ZERO,
                 // A wall or steep slope: slide along it, but a walk never climbs it.
-                (Phase::Walk | Phase::Sideways, Surface::Left | Surface::Right) => {
-                    let slid = rest - hit.normal * rest.dot(hit.normal);
+                (Phase::Walk, Surface::Left | Surface::Right) => {
                     if slid.dot(self.up) > 0.0 {
                         Vec2::ZERO
                     } else {
                         slid
                     }
                 }
-                _ => rest - hit.normal * rest.dot(hit.normal),
+                // In the air, sideways motion does not carry the character up a steep slope
+                // either: where sliding would rise more than the move does, only the move's
+                // rise or fall slides on.
+                (Phase::Air, Surface::Left | Surface::Right)
+                    if slid.dot(self.up) > rest.dot(self.up) =>
+                {
+                    let vertical = self.up * rest.dot(self.up);
+                    let into = vertical.dot(hit.normal).min(0.0);
+                    vertical - hit.normal * into
+                }
+                _ => slid,
             };
         }
+        if line.is_some() {
+            Phase::Walk
+        } else {
+            Phase::Air
+        }
+    }
+
+    /// Whether `hit` is a circle meeting `wall`'s rounded end (its normal is not the face's).
+    fn at_rounded_corner(&self, hit: &SweepHit, wall: &Wall) -> bool {
+        matches!(self.shape, CharacterShape::Circle { .. }) && hit.normal != wall.capsule.normal
+    }
+
+    /// Rolls the circle, touching `corner`, around it by as much of `rest` as presses it
+    /// there, and returns what is left of `rest` once it leaves the corner (or is stopped by
+    /// another surface on the way).
+    ///
+    /// Sliding by the projection of each step's motion on the tangent (as on a flat face)
+    /// would follow the arc by chords, one a step, and end in a different place at each
+    /// frame rate. Rolling is exact instead: pressed by a constant displacement `d` (length
+    /// `L`) at distance `R`, the angle `ψ` from `d` to the contact normal obeys
+    /// `dψ/ds = −(L/R)·sin ψ` over the fraction `s` of the move, so
+    /// `tan(ψ/2) = tan(ψ₀/2)·e^(−L·s/R)`, and the circle leaves the corner when `|ψ| = 90°`.
+    /// Steps compose exactly, so any frame rate ends in the same place. As on a steep slope,
+    /// sideways motion does not lift the character over a corner it is above: there only the
+    /// move's rise or fall rolls it (until it is level with the corner, where the whole
+    /// move presses again). The arc is travelled by swept legs along its tangents (at most
+    /// [`ROLL_STEP`] of turn each), so nothing on the way is passed through.
+    fn roll(&mut self, map: &TileMap, corner: Vec2, rest: Vec2, options: MoveOptions) -> Vec2 {
+        let offset = self.position - corner;
+        let radius = offset.length();
+        let driver = if offset.dot(self.up) > ROLL_LEVEL * radius {
+            self.up * rest.dot(self.up)
+        } else {
+            rest
+        };
+        let length = driver.length();
+        if radius <= 0.0 || length <= MIN_MOVE {
+            return Vec2::ZERO;
+        }
+        if driver.dot(offset) >= 0.0 {
+            // Moving off the corner: free.
+            return driver;
+        }
+        let start = driver.angle_to(offset);
+        let k = (0.5 * start).tan();
+        // The fraction of the move at which the normal turns square to the motion.
+        let leave = radius / length * k.abs().ln();
+        let done = leave.clamp(0.0, 1.0);
+        let end = 2.0 * (k * (-length * done / radius).exp()).atan();
+        let dir = driver / length;
+        let pieces = ((end - start).abs() / ROLL_STEP).ceil().max(1.0);
+        let mut from = start;
+        for i in 1..=pieces as u32 {
+            let to = start + (end - start) * (i as f32 / pieces);
+            let middle = dir.rotate(Vec2::from_angle(0.5 * (from + to)));
+            let apex = corner + middle * (radius / (0.5 * (to - from)).cos());
+            let arrival = corner + dir.rotate(Vec2::from_angle(to)) * radius;
+            let stopped = self.go(map, apex - self.position, options, None).is_some()
+                || self
+                    .go(map, arrival - self.position, options, None)
+                    .is_some();
+            if stopped {
+                // The part of the move rolled so far, from the angle reached.
+                let now = driver.angle_to(self.position - corner);
+                // (A ratio that rounding made negative gives NaN: taken as nothing rolled.)
+                let rolled = radius / length * (k / (0.5 * now).tan()).ln();
+                let rolled = if rolled.is_nan() {
+                    0.0
+                } else {
+                    rolled.clamp(0.0, 1.0)
+                };
+                return rest * (1.0 - rolled);
+            }
+            from = to;
+        }
+        rest * (1.0 - done)
+    }
+
+    /// The line of the ground with `normal` that the character stands on where it is (a
+    /// skin below it).
+    fn ground_line(&self, normal: Vec2) -> GroundLine {
+        GroundLine {
+            point: self.ground_point(normal),
+            normal,
+        }
+    }
+
+    /// The point of a surface with `normal` that the character, a skin away from it, would
+    /// touch: for a corner met by a circle, the corner itself.
+    fn ground_point(&self, normal: Vec2) -> Vec2 {
+        self.position - normal * (self.shape.support(normal) + self.config.skin)
+    }
+
+    /// How high above `line` the surface the character touches with `normal` is: what
+    /// standing on it climbs.
+    fn climb(&self, line: &GroundLine, normal: Vec2) -> f32 {
+        line.height_of(self.ground_point(normal))
+    }
+
+    /// The rounding allowed in comparing a climb with the step height: a few units in the
+    /// last place of the coordinates.
+    fn slack(&self) -> f32 {
+        8.0 * f32::EPSILON * self.position.abs().max_element().max(1.0)
     }
 
     /// Moves by `motion` up to the first surface in the way (ignoring `exclude`'s temporary
@@ -349,11 +523,21 @@ impl Character {
         Some((hit, wall, motion - dir * advance))
     }
 
-    /// Tries to step over the ledge a walk just met: up by the step height (as far as there
-    /// is room), forward by the walk's sideways remainder `rest`, then down onto walkable
-    /// ground no lower than where it started. Undone (false) when it makes no progress or
-    /// finds no walkable ground.
-    fn step_up(&mut self, map: &TileMap, rest: Vec2, options: MoveOptions) -> bool {
+    /// Tries to step over the ledge a walk on `line` just met: up by the step height (as far
+    /// as there is room), forward by the walk's sideways remainder `rest`, then down onto
+    /// walkable ground no lower than where it started and no higher above `line` than the
+    /// step height. Undone (false) when it makes no progress or finds no such ground.
+    ///
+    /// The height is checked where the character lands, not only by how far it was lifted:
+    /// a circle lifted by the step height can come down on a higher ledge's rounded corner
+    /// (as much as `radius · (1 − cos max_slope)` higher) with a walkable normal.
+    fn step_up(
+        &mut self,
+        map: &TileMap,
+        rest: Vec2,
+        line: &GroundLine,
+        options: MoveOptions,
+    ) -> bool {
         let start = self.position;
         let forward = self.side * rest.dot(self.side);
         if forward.length() <= MIN_MOVE {
@@ -369,6 +553,7 @@ impl Character {
                 .go(map, -self.up * (raised + self.config.skin), options, None)
                 .is_some_and(|(hit, _, _)| {
                     Surface::of(hit.normal, self.up, self.side, self.walkable) == Surface::Ground
+                        && self.climb(line, hit.normal) <= self.config.step_height + self.slack()
                 });
         if !landed {
             self.position = start;
@@ -420,24 +605,100 @@ impl Character {
         let mut best: Option<(SweepHit, Wall)> = None;
         for wall in &self.walls {
             let capsule = &wall.capsule;
-            if wall.flags.contains(SegmentFlags::ONE_WAY)
-                && !wall.flags.contains(SegmentFlags::SOLID)
-            {
-                // A one-way platform holds only a character whose lowest point (towards
-                // the platform) is on or above it, give or take the skin.
-                let height = (self.position - capsule.segment.a).dot(capsule.normal)
-                    - self.shape.support(capsule.normal);
-                if options.drop_through || height < -2.0 * self.config.skin {
-                    continue;
+            if !self.held_by(wall.flags, capsule.segment.a, capsule.normal, options) {
+                continue;
+            }
+            let Some(mut hit) = self.shape.sweep(capsule, self.position, motion) else {
+                continue;
+            };
+            // Met at a rounded end: unless the surface goes on there for this character.
+            if hit.normal != capsule.normal {
+                let caps = self.caps_needed(map, wall, options);
+                if caps != capsule.caps {
+                    let bare = Capsule { caps, ..*capsule };
+                    let Some(face) = self.shape.sweep(&bare, self.position, motion) else {
+                        continue;
+                    };
+                    hit = face;
                 }
             }
-            if let Some(hit) = self.shape.sweep(capsule, self.position, motion)
-                && best.is_none_or(|(b, _)| hit.t < b.t)
-            {
+            if best.is_none_or(|(b, _)| hit.t < b.t) {
                 best = Some((hit, *wall));
             }
         }
         best
+    }
+
+    /// Whether a segment with `flags`, through `point` with unit `normal`, can stop the
+    /// character on this move: any segment the mask takes, but a one-way platform only
+    /// when the character's lowest point (towards the platform) is on or above it, give or
+    /// take two skins, and it is not dropping through.
+    fn held_by(
+        &self,
+        flags: SegmentFlags,
+        point: Vec2,
+        normal: Vec2,
+        options: MoveOptions,
+    ) -> bool {
+        if !flags.intersects(self.config.mask) {
+            return false;
+        }
+        if flags.contains(SegmentFlags::ONE_WAY) && !flags.contains(SegmentFlags::SOLID) {
+            let height = (self.position - point).dot(normal) - self.shape.support(normal);
+            return !options.drop_through && height >= -2.0 * self.config.skin;
+        }
+        true
+    }
+
+    /// `wall`'s rounded ends, less those its neighbours cover for this character on this
+    /// move: an end where the surface continues, flat or turning concave, into a neighbour
+    /// that stops the character too; and an end (a side face's top, say) on a seam of a
+    /// floor that goes on flat or concave past it on both sides, both halves stopping the
+    /// character, which is in front of both.
+    ///
+    /// Seam culling keeps these caps where a one-way platform meets another or a solid tile
+    /// (and where flags change), and keeps a solid tile's side face beside a one-way
+    /// platform (the platform hides nothing): a body coming from below a platform must meet
+    /// them. A character the platform holds is above them, where the floor's faces cover
+    /// them: through rounding they tilted a rolling circle's ground normal by 2e-4 and moved
+    /// it by 1e-5 of a cell. So for it they are flat, as on an all-solid floor.
+    fn caps_needed(&self, map: &TileMap, wall: &Wall, options: MoveOptions) -> [bool; 2] {
+        let mut caps = wall.capsule.caps;
+        let SegmentSource::Tile { segment, .. } = wall.source else {
+            return caps;
+        };
+        let Some(this) = map.active_segment(segment) else {
+            return caps;
+        };
+        for (end, cap) in caps.iter_mut().enumerate() {
+            let point = end_point(&this.segment, end);
+            let Some(next) = this.continues[end].and_then(|r| map.active_segment(r)) else {
+                continue;
+            };
+            if !*cap || !self.held_by(next.flags, next.segment.a, next.normal, options) {
+                continue;
+            }
+            if next.normal.dot(outward(&this.segment, end)) <= CONVEX_COSINE {
+                *cap = false;
+                continue;
+            }
+            // A convex end: is it a seam inside a floor that holds the character?
+            let far = usize::from(
+                next.segment.b.distance_squared(point) < next.segment.a.distance_squared(point),
+            );
+            let Some(beyond) = next.continues[far].and_then(|r| map.active_segment(r)) else {
+                continue;
+            };
+            let in_front = |s: &ActiveSegment| (self.position - s.segment.a).dot(s.normal) >= 0.0;
+            if beyond.normal.dot(outward(&next.segment, far)) <= CONVEX_COSINE
+                && self.held_by(beyond.flags, beyond.segment.a, beyond.normal, options)
+                && in_front(&next)
+                && in_front(&beyond)
+            {
+                *cap = false;
+            }
+        }
+        caps
     }
 }
 
@@ -447,6 +708,29 @@ fn finite(what: &'static str, value: Vec2) -> Result<Vec2, ControllerError> {
         Ok(value)
     } else {
         Err(ControllerError::NonFinite { what, value })
+    }
+}
+
+/// The position `value`, or an error naming it (`what`) when it is not finite or is beyond
+/// [`MAX_COORD`].
+fn placed(what: &'static str, value: Vec2) -> Result<Vec2, ControllerError> {
+    finite(what, value)?;
+    if in_range(value) {
+        Ok(value)
+    } else {
+        Err(ControllerError::OutOfRange { what, value })
+    }
+}
+
+/// `v` scaled to unit length, `None` when it is zero or not finite. Scaled by its largest
+/// component first, so a finite direction whose length squared overflows (or underflows)
+/// still has one.
+fn unit(v: Vec2) -> Option<Vec2> {
+    let largest = v.abs().max_element();
+    if largest > 0.0 && largest.is_finite() {
+        (v / largest).try_normalize()
+    } else {
+        None
     }
 }
 
@@ -473,17 +757,13 @@ fn check_config(config: &ControllerConfig) -> Result<(), ControllerError> {
         (
             "snap_distance",
             config.snap_distance,
-            config.snap_distance >= 0.0 && config.snap_distance.is_finite(),
+            distance(config.snap_distance),
         ),
-        (
-            "skin",
-            config.skin,
-            config.skin >= 0.0 && config.skin.is_finite(),
-        ),
+        ("skin", config.skin, distance(config.skin)),
         (
             "step_height",
             config.step_height,
-            config.step_height >= 0.0 && config.step_height.is_finite(),
+            distance(config.step_height),
         ),
     ];
     for (field, value, ok) in checks {
@@ -498,4 +778,30 @@ fn check_config(config: &ControllerConfig) -> Result<(), ControllerError> {
         });
     }
     Ok(())
+}
+
+/// Whether a configured distance is in range: not negative, at most [`MAX_COORD`].
+fn distance(value: f32) -> bool {
+    (0.0..=MAX_COORD).contains(&value)
+}
+
+/// The end of `segment` nearest to `point`.
+fn nearest_end(segment: &Segment, point: Vec2) -> Vec2 {
+    if segment.a.distance_squared(point) <= segment.b.distance_squared(point) {
+        segment.a
+    } else {
+        segment.b
+    }
+}
+
+/// `segment`'s end `end` (0: `a`, 1: `b`).
+fn end_point(segment: &Segment, end: usize) -> Vec2 {
+    if end == 0 { segment.a } else { segment.b }
+}
+
+/// The direction out of `segment` at its end `end`: back along it at `a`, on along it at
+/// `b`.
+fn outward(segment: &Segment, end: usize) -> Vec2 {
+    let along = segment.delta().normalize_or_zero();
+    if end == 0 { -along } else { along }
 }

@@ -3,7 +3,7 @@
 use glam::Vec2;
 
 use super::ControllerError;
-use crate::geometry::{Aabb, SweepHit, sweep_box_segment};
+use crate::geometry::{Aabb, SweepHit, in_range, sweep_box_segment};
 use crate::query::Capsule;
 
 /// A character's collision shape, centred on its position.
@@ -31,27 +31,29 @@ pub enum CharacterShape {
 }
 
 impl CharacterShape {
-    /// A circle of `radius`; an error unless it is positive and finite.
+    /// A circle of `radius`; an error unless it is positive and at most
+    /// [`MAX_COORD`](crate::MAX_COORD).
     pub fn circle(radius: f32) -> Result<Self, ControllerError> {
-        if radius > 0.0 && radius.is_finite() {
-            Ok(Self::Circle { radius })
-        } else {
-            Err(ControllerError::BadShape {
-                what: "radius",
-                value: Vec2::splat(radius),
-            })
-        }
+        Self::Circle { radius }.validated()
     }
 
-    /// A box with half extents `half`; an error unless both are positive and finite.
+    /// A box with half extents `half`; an error unless both are positive and at most
+    /// [`MAX_COORD`](crate::MAX_COORD).
     pub fn rect(half: Vec2) -> Result<Self, ControllerError> {
-        if half.cmpgt(Vec2::ZERO).all() && half.is_finite() {
-            Ok(Self::Rect { half })
+        Self::Rect { half }.validated()
+    }
+
+    /// The shape, or an error naming its size when that is not positive or is beyond
+    /// `MAX_COORD` (the variants' fields are public, so `Character::new` checks again).
+    pub(crate) fn validated(self) -> Result<Self, ControllerError> {
+        let (what, value) = match self {
+            Self::Circle { radius } => ("radius", Vec2::splat(radius)),
+            Self::Rect { half } => ("half extents", half),
+        };
+        if value.cmpgt(Vec2::ZERO).all() && in_range(value) {
+            Ok(self)
         } else {
-            Err(ControllerError::BadShape {
-                what: "half extents",
-                value: half,
-            })
+            Err(ControllerError::BadShape { what, value })
         }
     }
 

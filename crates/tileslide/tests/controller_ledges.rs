@@ -1,0 +1,232 @@
+//! The controller beside ledges (ASCII maps, y down: `up` is −y): stepping up never climbs
+//! more than `step_height`, for boxes and circles, and a move through the air ends in the
+//! same place whatever the frame rate, whether it lands on a ledge or slides down its face.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use proptest::prelude::*;
+use proptest::test_runner::TestCaseError;
+use tileslide::io::ascii;
+use tileslide::{
+    Character, CharacterShape, ControllerConfig, MoveOptions, Owner, Segment, SegmentFlags,
+    TemporarySegment, TileMap, Vec2,
+};
+
+const UP: Vec2 = Vec2::NEG_Y;
+const SKIN: f32 = 1e-3;
+
+fn v(x: f32, y: f32) -> Vec2 {
+    Vec2::new(x, y)
+}
+
+/// A room whose floor is at y = 5.
+const FLOOR: &str = "\
+##############################
+#............................#
+#............................#
+#............................#
+#............................#
+##############################";
+
+/// The floor with a ledge `height` high whose face is at x = 10 (two temporary segments:
+/// the face, facing left, and the top, facing up, meeting at the ledge's corner).
+fn ledge(height: f32) -> TileMap {
+    let mut m = ascii::parse(FLOOR, "floor.txt", 1.0).unwrap();
+    let top = 5.0 - height;
+    for (a, b, normal) in [
+        (v(10.0, 5.0), v(10.0, top), v(-1.0, 0.0)),
+        (v(10.0, top), v(25.0, top), v(0.0, -1.0)),
+    ] {
+        m.add_temporary(TemporarySegment {
+            segment: Segment::new(a, b),
+            normal,
+            flags: SegmentFlags::SOLID,
+            owner: Owner(1),
+            velocity: Vec2::ZERO,
+        })
+        .unwrap();
+    }
+    m
+}
+
+/// Stands `shape` on the floor left of the ledge and walks it right by `speed` a step for
+/// 6 cells; returns whether it got onto the ledge (its centre past the face, on the ledge's
+/// top).
+fn climbs(shape: CharacterShape, config: ControllerConfig, height: f32, speed: f32) -> bool {
+    let m = ledge(height);
+    let mut ch = Character::new(shape, v(7.0, 4.0), UP, config).unwrap();
+    ch.move_by(&m, v(0.0, 1.0), MoveOptions::default()).unwrap();
+    for _ in 0..(6.0 / speed).ceil() as usize {
+        ch.move_by(&m, v(speed, 0.02), MoveOptions::default())
+            .unwrap();
+    }
+    ch.position.x > 10.0 && ch.position.y < 5.0 - height
+}
+
+fn stepping(step_height: f32) -> ControllerConfig {
+    ControllerConfig {
+        step_height,
+        ..ControllerConfig::default()
+    }
+}
+
+#[test]
+fn a_circle_does_not_step_up_a_one_cell_wall_with_a_step_height_of_0_86() {
+    // The step-up once accepted the wall's rounded corner as ground when its normal was
+    // walkable: 0.86 + 0.4·(1 − cos 50°) = 1.003 cells climbed.
+    let ball = CharacterShape::circle(0.4).unwrap();
+    for speed in [0.05, 0.1, 0.2, 0.4] {
+        assert!(!climbs(ball, stepping(0.86), 1.0, speed), "speed {speed}");
+        assert!(!climbs(ball, stepping(0.86), 0.87, speed), "speed {speed}");
+    }
+    // With no step height a circle does not roll up a ledge either (it once rolled up
+    // 0.4·(1 − cos 50°) = 0.143).
+    assert!(!climbs(ball, stepping(0.0), 0.1, 0.2));
+    let hero = CharacterShape::rect(v(0.25, 0.4)).unwrap();
+    assert!(!climbs(hero, stepping(0.86), 0.87, 0.2));
+    assert!(climbs(hero, stepping(0.86), 0.85, 0.2));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    /// Over random shapes, slope limits, step heights, ledge heights and walking speeds: a
+    /// ledge higher than the step height is never climbed (give or take the skin: a
+    /// character may stand closer to the ground than the skin, and the climb is measured
+    /// from where it stands), and a box climbs every ledge lower than it.
+    #[test]
+    fn stepping_up_never_climbs_more_than_the_step_height(
+        circle in any::<bool>(),
+        size in 0.1f32..0.6,
+        aspect in 0.5f32..2.0,
+        max_slope_degrees in 10.0f32..80.0,
+        step_height in 0.0f32..1.2,
+        height in 0.01f32..1.6,
+        speed in 0.02f32..0.5,
+    ) {
+        let shape = if circle {
+            CharacterShape::circle(size).unwrap()
+        } else {
+            CharacterShape::rect(v(size, size * aspect)).unwrap()
+        };
+        let config = ControllerConfig { max_slope_degrees, step_height, ..ControllerConfig::default() };
+        let climbed = climbs(shape, config, height, speed);
+        prop_assert!(!climbed || height <= step_height + SKIN,
+            "{:?} climbed a ledge {} high with a step height of {}", shape, height, step_height);
+        if !circle && height < step_height - 2.0 * SKIN {
+            prop_assert!(climbed, "the box stopped at a ledge {} high with a step height of {}", height, step_height);
+        }
+    }
+}
+
+/// A room with a block two cells high (top at y = 3, left face at x = 10) on a floor at
+/// y = 5.
+const BLOCK: &str = "\
+##############################
+#............................#
+#............................#
+#.........######.............#
+#.........######.............#
+##############################";
+
+/// Moves `shape` from `start` at the constant velocity `velocity` (cells per second) for
+/// 0.2 s at `rate` steps per second; returns where it ends.
+fn fly(m: &TileMap, shape: CharacterShape, start: Vec2, velocity: Vec2, rate: f32) -> Vec2 {
+    let mut ch = Character::new(shape, start, UP, ControllerConfig::default()).unwrap();
+    for _ in 0..(0.2 * rate).round() as usize {
+        ch.move_by(m, velocity / rate, MoveOptions::default())
+            .unwrap();
+    }
+    ch.position
+}
+
+const RATES: [f32; 4] = [30.0, 60.0, 120.0, 240.0];
+
+#[test]
+fn a_box_falling_past_a_ledge_corner_slides_down_its_face_at_30_hz_too() {
+    // One 30 Hz step of (0.2, 0.5): the box's path meets the block's face (its right side
+    // reaches x = 10 when its bottom is 0.1 below the top), so it slides down to the floor.
+    // Split into a sideways then a vertical sweep it once landed on the top, 0.08 onto it.
+    let m = ascii::parse(BLOCK, "block.txt", 1.0).unwrap();
+    let hero = CharacterShape::rect(v(0.25, 0.4)).unwrap();
+    let start = v(10.0 - 0.12 - 0.25, 3.0 - 0.2 - 0.4);
+    for rate in RATES {
+        let end = fly(&m, hero, start, v(6.0, 15.0), rate);
+        let floor = v(10.0 - 0.25 - SKIN, 5.0 - 0.4 - SKIN);
+        assert!(
+            (end - floor).abs().max_element() < 1e-4,
+            "{rate} Hz: {end:?}"
+        );
+    }
+}
+
+/// Moves `shape` (half extents `half`) from `gap` left of the block's face and `above` its
+/// top (its right side and its bottom) at `velocity` for 0.2 s at each of [`RATES`]; an
+/// error unless every end is within [`TOLERANCE`] of the 30 Hz one.
+fn ends_alike(
+    shape: CharacterShape,
+    half: Vec2,
+    gap: f32,
+    above: f32,
+    velocity: Vec2,
+) -> Result<(), TestCaseError> {
+    let m = ascii::parse(BLOCK, "block.txt", 1.0).unwrap();
+    let start = v(10.0 - gap - half.x, 3.0 - above - half.y);
+    let ends = RATES.map(|rate| fly(&m, shape, start, velocity, rate));
+    for (rate, end) in RATES.iter().zip(ends) {
+        prop_assert!(
+            (end - ends[0]).abs().max_element() <= TOLERANCE,
+            "{:?} from {:?} at {:?}: {} Hz ends at {:?}, 30 Hz at {:?}",
+            shape,
+            start,
+            velocity,
+            rate,
+            end,
+            ends[0]
+        );
+    }
+    Ok(())
+}
+
+/// How far apart the end positions at different rates may be (in cells): the skin. Every
+/// stop keeps a skin from the surface along its normal, except a stop on a move that only
+/// grazes a surface, which may end closer (down to the skin times the cosine of the angle
+/// of approach); which step of a run grazes depends on the rate.
+const TOLERANCE: f32 = SKIN;
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// From random places beside the block, at random velocities down and right, the same
+    /// 0.2 s of motion at 30, 60, 120 and 240 steps a second ends in the same place: on the
+    /// block's top, against its face, or on the floor. A circle meeting the block's corner
+    /// rolls around it exactly, whatever the rate.
+    #[test]
+    fn a_circle_moving_past_a_ledge_ends_in_the_same_place_at_30_60_120_and_240_hz(
+        radius in 0.1f32..0.6,
+        gap in 0.01f32..1.0,
+        above in -0.6f32..0.8,
+        vx in 0.5f32..12.0,
+        vy in 1.0f32..25.0,
+    ) {
+        let ball = CharacterShape::circle(radius).unwrap();
+        ends_alike(ball, Vec2::splat(radius), gap, above, v(vx, vy))?;
+    }
+
+    /// The same for a box.
+    #[test]
+    #[ignore = "a box landing on a ledge's top with its centre still beside the face is \
+        stopped by the face when `sweep_box_segment` finds it first: at equal time of \
+        impact the face reports its own normal though the box is already past its line"]
+    fn a_box_moving_past_a_ledge_ends_in_the_same_place_at_30_60_120_and_240_hz(
+        half_width in 0.1f32..0.6,
+        half_height in 0.1f32..0.6,
+        gap in 0.01f32..1.0,
+        above in -0.6f32..0.8,
+        vx in 0.5f32..12.0,
+        vy in 1.0f32..25.0,
+    ) {
+        let half = v(half_width, half_height);
+        let hero = CharacterShape::rect(half).unwrap();
+        ends_alike(hero, half, gap, above, v(vx, vy))?;
+    }
+}
