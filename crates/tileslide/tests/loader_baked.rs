@@ -533,6 +533,52 @@ fn a_cell_whose_segments_were_dropped_is_refused() {
     assert_eq!(at, (HEADER + counts + 2 * cell) as u64);
 }
 
+/// A 96 × 96 map of noise: each cell empty or one of 16 blocks of different heights (a
+/// full one among them), so nearly every cell and its neighbours make a pattern of their own.
+fn noise() -> TileMap {
+    let mut set = tileslide::TileSet::new(Vec2::ONE).unwrap();
+    for k in 1..=16u32 {
+        let top = 1.0 - k as f32 / 16.0;
+        let shape = tileslide::TileShape::polygon(&[
+            Vec2::new(0.0, top),
+            Vec2::new(1.0, top),
+            Vec2::new(1.0, 1.0),
+            Vec2::new(0.0, 1.0),
+        ])
+        .unwrap();
+        set.insert(tileslide::TileId(k), shape).unwrap();
+    }
+    let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+    let tiles: Vec<_> = (0..96 * 96)
+        .map(|_| {
+            seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+            let k = (seed >> 33) % 18;
+            (k > 1).then(|| tileslide::TileId(k as u32 - 1))
+        })
+        .collect();
+    TileMap::from_tiles(Arc::new(set), 96, 96, Vec2::new(-3.0, 5.0), &tiles).unwrap()
+}
+
+#[test]
+fn a_map_of_noise_too_varied_to_check_pattern_by_pattern_is_checked_whole() {
+    let map = noise();
+    let back = baked::parse(&baked::to_bytes(&map), "noise.tsm").unwrap();
+    assert_same(&map, &back);
+    // Its last segment (past the patterns checked one by one) renumbered: only comparing
+    // with the tiles can tell.
+    let (mut p, first) = baked_payload(&map);
+    let last = first + RECORD * (map.active_segment_count() - 1);
+    p[last + SOURCE] ^= 1;
+    let (text, at) = refused(&p);
+    let k = map.active_segment_count() - 1;
+    assert!(
+        text.contains(&format!("active segment {k}: in cell"))
+            && text.contains("not what its tiles make"),
+        "{text}"
+    );
+    assert_eq!(at, (HEADER + last) as u64);
+}
+
 proptest! {
     /// Random corruption of a real baked map: an error (the checksum catches nearly all),
     /// never a panic.

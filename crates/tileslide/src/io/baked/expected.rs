@@ -10,7 +10,8 @@
 //! with it placed at the cell: exactly, bit for bit, for whole tile segments and for the
 //! canonical faces of cells with whole-edge faces; within a ten-thousandth of a cell for a
 //! piece of a partly hidden tile segment (whose cut points are not kept exactly apart from
-//! the cell). Recomputing culling for every cell instead costs several times the load.
+//! the cell). Recomputing culling for every cell instead costs several times the load;
+//! only a map of more than [`MAX_PATTERNS`] patterns (noise) is culled whole and compared.
 
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
@@ -24,6 +25,11 @@ use crate::tiles::{MapError, SegmentFlags, TileId, TileMap, TileSet};
 
 /// The raw tile value of an empty cell (and of the outside of the map).
 const EMPTY: u32 = u32::MAX;
+
+/// Most distinct patterns culled one by one. Each costs a 3 × 3 map (microseconds), so a
+/// map of noise, with a pattern per cell, would take far longer than culling the whole map
+/// at once; past this many the loader does that instead (see [`Expected::gave_up`]).
+const MAX_PATTERNS: usize = 4096;
 
 /// Two ends closer than this (in cells) are the same point: as `tiles/continuity.rs` joins
 /// them.
@@ -108,6 +114,8 @@ pub(super) struct Expected {
     /// The last pattern looked up and its index, for cells with segments and for cells
     /// without: neighbouring cells along a floor or inside a wall share one.
     last: [Option<(Pattern, usize)>; 2],
+    /// Whether more than [`MAX_PATTERNS`] patterns came up: checks by pattern stopped.
+    gave_up: bool,
     scratch: Vec<HotSegment>,
 }
 
@@ -118,20 +126,26 @@ impl Expected {
             patterns: Patterns::default(),
             culled: Vec::new(),
             last: [None; 2],
+            gave_up: false,
             scratch: Vec::new(),
         }
     }
 
     /// The index in `culled` of `pattern`'s middle-cell segments, culled once on a 3 × 3
     /// map.
-    fn lookup(&mut self, pattern: Pattern, slot: usize) -> Result<usize, MapError> {
+    /// `None` once there were too many to cull one by one.
+    fn lookup(&mut self, pattern: Pattern, slot: usize) -> Result<Option<usize>, MapError> {
         if let Some((p, k)) = self.last[slot]
             && p == pattern
         {
-            return Ok(k);
+            return Ok(Some(k));
         }
         let k = match self.patterns.get(&pattern) {
             Some(&k) => k,
+            None if self.gave_up || self.culled.len() == MAX_PATTERNS => {
+                self.gave_up = true;
+                return Ok(None);
+            }
             None => {
                 let locals = cull(&self.set, pattern)?;
                 self.culled.push(locals);
@@ -140,25 +154,33 @@ impl Expected {
             }
         };
         self.last[slot] = Some((pattern, k));
-        Ok(k)
+        Ok(Some(k))
     }
 
-    /// How many active segments `pattern` makes.
+    /// Whether the checks by pattern stopped, there being too many patterns: the caller
+    /// must compare the whole map with its tiles culled at once.
+    pub fn gave_up(&self) -> bool {
+        self.gave_up
+    }
+
+    /// How many active segments `pattern` makes (0 once [`gave_up`](Self::gave_up)).
     pub fn count(&mut self, pattern: Pattern) -> Result<usize, MapError> {
-        let k = self.lookup(pattern, 0)?;
-        Ok(self.culled[k].len())
+        Ok(self.lookup(pattern, 0)?.map_or(0, |k| self.culled[k].len()))
     }
 
     /// Checks the `stored` active segments of a cell with corner `base` and `pattern`
-    /// against what the pattern makes there; returns the cell's kind.
+    /// against what the pattern makes there; returns the cell's kind (once
+    /// [`gave_up`](Self::gave_up), the kind the stored segments make, unchecked).
     pub fn check_cell(
         &mut self,
         pattern: Pattern,
         base: Vec2,
         stored: &[HotSegment],
     ) -> Result<Result<u8, Mismatch>, MapError> {
-        let k = self.lookup(pattern, 1)?;
         let size = self.set.tile_size();
+        let Some(k) = self.lookup(pattern, 1)? else {
+            return Ok(Ok(kind_of(stored, base, size)));
+        };
         let (locals, expected) = (&self.culled[k], &mut self.scratch);
         // Rounding allowed for the cut points of pieces: a ten-thousandth of a cell, and a
         // few roundings of the cell's corner far from the origin.

@@ -288,7 +288,11 @@ pub fn parse(data: &[u8], path: impl AsRef<Path>) -> Result<TileMap, LoadError> 
         origin,
         tiles: &tiles,
     };
-    let store = read_store(&mut r, &grid, Expected::new(set.clone()))?;
+    let mut expected = Expected::new(set.clone());
+    let (store, segments_at) = read_store(&mut r, &grid, &mut expected)?;
+    if expected.gave_up() {
+        compare_culled(&r, &grid, &set, &store, segments_at)?;
+    }
     TileMap::from_store(set, width, height, origin, tiles, store, placed)
         .map_err(|e| r.error_at(tiles_at, e.into()))
 }
@@ -376,11 +380,12 @@ struct Grid<'a> {
 /// edits lay one out (each cell's block at its [`block_capacity`]). Every cell's segments
 /// must be what its tile and its neighbours make there (see [`expected`]), and every link
 /// and cap what joining them gives.
+/// Returns the store and the offset of its first segment record.
 fn read_store(
     r: &mut ByteReader<'_>,
     grid: &Grid<'_>,
-    mut expected: Expected,
-) -> Result<SegmentStore, LoadError> {
+    expected: &mut Expected,
+) -> Result<(SegmentStore, u64), LoadError> {
     let (width, height) = (grid.width, grid.height);
     let cells = (width * height) as usize;
     let counts_at = r.offset();
@@ -528,7 +533,56 @@ fn read_store(
     }
     let store = SegmentStore::from_layout(starts, kinds, hot, links, caps, active as usize);
     check_joins(r, grid, segments_at, &store)?;
-    Ok(store)
+    Ok((store, segments_at))
+}
+
+/// Compares `store`, read from the file, with the map's tiles culled and linked at once:
+/// for a map of too many distinct patterns to check one by one (see [`Expected`]).
+fn compare_culled(
+    r: &ByteReader<'_>,
+    grid: &Grid<'_>,
+    set: &Arc<TileSet>,
+    store: &SegmentStore,
+    segments_at: u64,
+) -> Result<(), LoadError> {
+    let tiles: Vec<Option<TileId>> = grid
+        .tiles
+        .iter()
+        .map(|&t| (t != EMPTY).then_some(TileId(t)))
+        .collect();
+    let map = TileMap::from_tiles(set.clone(), grid.width, grid.height, grid.origin, &tiles)
+        .map_err(|e| r.error_at(segments_at, e.into()))?;
+    let culled = &map.store;
+    let mut rank = 0;
+    for cell in 0..tiles.len() {
+        let (made, stored) = (culled.cell(cell), store.cell(cell));
+        let same = |k: usize| {
+            let (x, s) = (&made[k], &stored[k]);
+            (x.a, x.e, x.normal, x.flags, x.source) == (s.a, s.e, s.normal, s.flags, s.source)
+                && culled.links(cell)[k] == store.links(cell)[k]
+                && culled.caps(cell)[k] == store.caps(cell)[k]
+        };
+        if let Some(k) = (0..stored.len()).find(|&k| k >= made.len() || !same(k)) {
+            return Err(bad_segment(
+                r,
+                segments_at,
+                rank + k,
+                &format!("in cell {cell}, it is not what its tiles make there"),
+            ));
+        }
+        if made.len() != stored.len() {
+            return Err(r.error_at(
+                segments_at,
+                LoadErrorKind::Invalid(format!(
+                    "cell {cell} holds {} active segments, but its tiles make {} there",
+                    stored.len(),
+                    made.len()
+                )),
+            ));
+        }
+        rank += stored.len();
+    }
+    Ok(())
 }
 
 /// Checks every link (it joins two segments that touch there) and cap (as those joins give
