@@ -50,7 +50,10 @@ const CORNER_ROUNDING: f32 = 8.0 * f32::EPSILON;
 /// on equal terms a box side wins over a slanted face, and `±x` over `±y`. So every segment
 /// of a corner reports the same normal for the same contact, whatever order a caller tests
 /// them in: a box moving right and dipping into the top-left corner of a block it is level
-/// with gets the block's side `(-1, 0)` from the block's top as from its side.
+/// with gets the block's side `(-1, 0)` from the block's top as from its side. (In a concave
+/// corner reached exactly, the box's bottom landing on the floor as its side reaches the
+/// wall, both faces are met at once and each reports its own normal: either keeps the box
+/// out, and a caller wanting one answer ranks equal `t` by `-normal · motion`.)
 ///
 /// ```
 /// # use tileslide::{Segment, Vec2, sweep_box_segment};
