@@ -1,6 +1,7 @@
 //! The baked map format (`io::baked`): a baked and loaded map is the same map, bit for bit
 //! (ASCII maps and every Replica Island level), and every malformed file is an error naming
-//! the byte offset of the field at fault, never a panic or a huge allocation.
+//! the byte offset of the field at fault, never a panic or a huge allocation: also a file
+//! whose checksum was recomputed over culled segments that are not what its tiles make.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 mod replica_support;
@@ -312,6 +313,270 @@ fn culled_segments_that_do_not_hold_together_are_refused() {
         p[first..first + 4].copy_from_slice(&f32::NAN.to_le_bytes());
     });
     assert!(text.contains("not finite"), "{text}");
+}
+
+// A baked map's checksum guards against accidents only: a file whose culled segments were
+// rewritten and its checksum recomputed must still be refused, with an error naming the
+// segment (or cell) at fault and its byte offset, whenever a stored segment, link or cap is
+// not what the map's tiles make. Each test below edits a real baked map's payload and puts
+// a right checksum back.
+
+/// Bytes of one baked active segment, and where its fields are.
+const RECORD: usize = 40;
+const NORMAL_X: usize = 16;
+const FLAGS: usize = 24;
+const SOURCE: usize = 28;
+const CAPS: usize = 30;
+const LINK_A: usize = 32;
+
+/// The header's size: payload offsets plus this are file offsets.
+const HEADER: usize = 32;
+
+fn cave() -> TileMap {
+    ascii::parse(CAVE, "cave.txt", 1.0).unwrap()
+}
+
+/// The error for a tampered `payload` (given a right checksum): its text and byte offset.
+fn refused(payload: &[u8]) -> (String, u64) {
+    error(&wrap(payload))
+}
+
+/// The baked payload of `map`, and the payload offset of its first active segment.
+fn baked_payload(map: &TileMap) -> (Vec<u8>, usize) {
+    let payload = baked::to_bytes(map)[HEADER..].to_vec();
+    let first = payload.len() - RECORD * map.active_segment_count();
+    (payload, first)
+}
+
+fn f32_at(p: &[u8], at: usize) -> f32 {
+    f32::from_le_bytes(p[at..at + 4].try_into().unwrap())
+}
+
+fn put_f32(p: &mut [u8], at: usize, v: f32) {
+    p[at..at + 4].copy_from_slice(&v.to_le_bytes());
+}
+
+#[test]
+fn a_segment_moved_out_of_its_cell_with_a_non_unit_normal_is_refused_despite_its_checksum() {
+    // The first active segment shifted ten cells right (out of its cell; past the map's
+    // edge) with its normal doubled: the checksum is right, the segment is not.
+    let map = cave();
+    let (mut p, first) = baked_payload(&map);
+    let ax = f32_at(&p, first);
+    put_f32(&mut p, first, ax + 10.0);
+    for k in 0..2 {
+        let at = first + NORMAL_X + 4 * k;
+        let n = f32_at(&p, at);
+        put_f32(&mut p, at, 2.0 * n);
+    }
+    let (text, at) = refused(&p);
+    assert!(
+        text.contains("active segment 0") && text.contains("not what its tile makes"),
+        "{text}"
+    );
+    assert_eq!(at, (HEADER + first) as u64);
+    // Before this was checked, the file loaded and answered rays differently from its
+    // source; what the source answers is what a loaded map must answer.
+    let ray = Ray::between(Vec2::new(9.5, 0.5), Vec2::new(11.5, 0.5));
+    assert!(map.cast_ray(ray, &RayFilter::default()).is_none());
+}
+
+/// A change to the record at a payload offset.
+type Edit = fn(&mut [u8], usize);
+
+#[test]
+fn any_field_of_any_stored_segment_changed_is_refused_naming_the_segment() {
+    let map = cave();
+    let (good, first) = baked_payload(&map);
+    let active = map.active_segment_count();
+    // Each coordinate moved a little (a hundredth: still inside the cell), the normal
+    // turned, the flags changed, the source renumbered.
+    let edits: [(&str, Edit); 8] = [
+        ("a.x", |p, at| put_f32(p, at, f32_at(p, at) + 0.01)),
+        ("a.y", |p, at| put_f32(p, at + 4, f32_at(p, at + 4) + 0.01)),
+        ("e.x", |p, at| put_f32(p, at + 8, f32_at(p, at + 8) * 0.99)),
+        ("e.y", |p, at| {
+            put_f32(p, at + 12, f32_at(p, at + 12) * 0.99)
+        }),
+        ("normal", |p, at| {
+            let (x, y) = (f32_at(p, at + NORMAL_X), f32_at(p, at + NORMAL_X + 4));
+            let (s, c) = 0.1f32.sin_cos();
+            put_f32(p, at + NORMAL_X, x * c - y * s);
+            put_f32(p, at + NORMAL_X + 4, x * s + y * c);
+        }),
+        ("flags", |p, at| p[at + FLAGS] ^= 0x02),
+        ("source", |p, at| p[at + SOURCE] ^= 0x01),
+        ("caps", |p, at| p[at + CAPS] ^= 0x01),
+    ];
+    for k in 0..active {
+        let at = first + RECORD * k;
+        for (field, edit) in &edits {
+            let mut p = good.clone();
+            edit(&mut p, at);
+            if p == good {
+                continue;
+            }
+            let (text, offset) = refused(&p);
+            let named = format!("active segment {k}:");
+            // A change to one segment can show first as its cell's kind, or in a segment a
+            // link of which reaches it; it is never accepted.
+            assert!(
+                text.contains(&named) || text.contains("active segment") || text.contains("kind"),
+                "{field} of segment {k}: {text}"
+            );
+            if text.contains("not what its tile makes") {
+                assert!(text.contains(&named), "{field} of segment {k}: {text}");
+                assert_eq!(offset, (HEADER + at) as u64, "{field} of segment {k}");
+            }
+        }
+    }
+}
+
+/// Active segment `k` of `map`, counting cell by cell.
+fn nth_active(map: &TileMap, k: usize) -> tileslide::ActiveSegment {
+    (0..map.height())
+        .flat_map(|row| (0..map.width()).map(move |col| Cell::new(col, row)))
+        .flat_map(|cell| map.active_segments(cell).collect::<Vec<_>>())
+        .nth(k)
+        .unwrap()
+}
+
+#[test]
+fn links_that_do_not_join_touching_segments_are_refused() {
+    let map = cave();
+    let (good, first) = baked_payload(&map);
+    let active = map.active_segment_count();
+    let mut rejected = 0;
+    for k in 0..active {
+        let at = first + RECORD * k + LINK_A;
+        let raw = u32::from_le_bytes(good[at..at + 4].try_into().unwrap());
+        if raw == u32::MAX {
+            continue;
+        }
+        // Point it at every other segment of the same neighbour cell, and at itself.
+        let (cell, index) = (raw >> 16, raw & 0xFFFF);
+        for other in (0..4u32).filter(|&i| i != index) {
+            let mut p = good.clone();
+            p[at..at + 4].copy_from_slice(&(cell << 16 | other).to_le_bytes());
+            if let Ok(back) = baked::parse(&wrap(&p), "tampered.tsm") {
+                // Accepted only if that segment touches the end too, as the original does.
+                let s = nth_active(&back, k);
+                let to = back.active_segment(s.continues[0].unwrap()).unwrap();
+                let end = s.segment.a;
+                assert!(
+                    to.segment.a.distance(end) < 1e-4 || to.segment.b.distance(end) < 1e-4,
+                    "segment {k} linked to {to:?}"
+                );
+                continue;
+            }
+            let (text, _) = refused(&p);
+            assert!(text.contains("active segment"), "{text}");
+            rejected += 1;
+        }
+    }
+    assert!(rejected > 10, "only {rejected} links refused");
+}
+
+#[test]
+fn a_cell_whose_segments_were_dropped_is_refused() {
+    // The first wall cell's segments removed (its count zeroed, its kind cleared, its
+    // records cut out): its tiles make segments there.
+    let map = cave();
+    let (good, first) = baked_payload(&map);
+    let cells = (map.width() * map.height()) as usize;
+    let counts = first - 8 - cells - 2 * cells;
+    let cell = (0..cells)
+        .find(|&c| u16::from_le_bytes([good[counts + 2 * c], good[counts + 2 * c + 1]]) > 0)
+        .unwrap();
+    let n = usize::from(u16::from_le_bytes([
+        good[counts + 2 * cell],
+        good[counts + 2 * cell + 1],
+    ]));
+    let before: usize = (0..cell)
+        .map(|c| {
+            usize::from(u16::from_le_bytes([
+                good[counts + 2 * c],
+                good[counts + 2 * c + 1],
+            ]))
+        })
+        .sum();
+    let mut p = good.clone();
+    p[counts + 2 * cell..counts + 2 * cell + 2].copy_from_slice(&0u16.to_le_bytes());
+    p[counts + 2 * cells + cell] = 0;
+    let active_at = first - 8;
+    let active = map.active_segment_count() - n;
+    p[active_at..first].copy_from_slice(&(active as u64).to_le_bytes());
+    let cut = first + RECORD * before;
+    p.drain(cut..cut + RECORD * n);
+    // And no link reaches into it any more.
+    let width = map.width() as i64;
+    let mut record = first;
+    for c in 0..cells {
+        let count = u16::from_le_bytes([p[counts + 2 * c], p[counts + 2 * c + 1]]);
+        for _ in 0..count {
+            for end in 0..2 {
+                let at = record + LINK_A + 4 * end;
+                let raw = u32::from_le_bytes(p[at..at + 4].try_into().unwrap());
+                let (dr, dc) = (i64::from(raw >> 16) / 3 - 1, i64::from(raw >> 16) % 3 - 1);
+                if raw != u32::MAX && c as i64 + dr * width + dc == cell as i64 {
+                    p[at..at + 4].copy_from_slice(&u32::MAX.to_le_bytes());
+                }
+            }
+            record += RECORD;
+        }
+    }
+    let (text, at) = refused(&p);
+    assert!(
+        text.contains(&format!("cell {cell} holds no active segments")),
+        "{text}"
+    );
+    assert_eq!(at, (HEADER + counts + 2 * cell) as u64);
+}
+
+/// A 96 × 96 map of noise: each cell empty or one of 16 blocks of different heights (a
+/// full one among them), so nearly every cell and its neighbours make a pattern of their own.
+fn noise() -> TileMap {
+    let mut set = tileslide::TileSet::new(Vec2::ONE).unwrap();
+    for k in 1..=16u32 {
+        let top = 1.0 - k as f32 / 16.0;
+        let shape = tileslide::TileShape::polygon(&[
+            Vec2::new(0.0, top),
+            Vec2::new(1.0, top),
+            Vec2::new(1.0, 1.0),
+            Vec2::new(0.0, 1.0),
+        ])
+        .unwrap();
+        set.insert(tileslide::TileId(k), shape).unwrap();
+    }
+    let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+    let tiles: Vec<_> = (0..96 * 96)
+        .map(|_| {
+            seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+            let k = (seed >> 33) % 18;
+            (k > 1).then(|| tileslide::TileId(k as u32 - 1))
+        })
+        .collect();
+    TileMap::from_tiles(Arc::new(set), 96, 96, Vec2::new(-3.0, 5.0), &tiles).unwrap()
+}
+
+#[test]
+fn a_map_of_noise_too_varied_to_check_pattern_by_pattern_is_checked_whole() {
+    let map = noise();
+    let back = baked::parse(&baked::to_bytes(&map), "noise.tsm").unwrap();
+    assert_same(&map, &back);
+    // Its last segment (past the patterns checked one by one) renumbered: only comparing
+    // with the tiles can tell.
+    let (mut p, first) = baked_payload(&map);
+    let last = first + RECORD * (map.active_segment_count() - 1);
+    p[last + SOURCE] ^= 1;
+    let (text, at) = refused(&p);
+    let k = map.active_segment_count() - 1;
+    assert!(
+        text.contains(&format!("active segment {k}: in cell"))
+            && text.contains("not what its tiles make"),
+        "{text}"
+    );
+    assert_eq!(at, (HEADER + last) as u64);
 }
 
 proptest! {

@@ -11,6 +11,11 @@ use glam::Vec2;
 
 use super::{Segment, SweepHit};
 
+/// Relative distance within which a slanted face's support corner reaching the line and
+/// reaching the segment's end are one event (a corner contact): a few roundings of the
+/// projections they are computed from.
+const CORNER_ROUNDING: f32 = 8.0 * f32::EPSILON;
+
 /// Time of impact of an axis-aligned box with half extents `half`, centred at `center` and
 /// moving by `motion`, against the front of `segment`, whose unit `normal` points to its
 /// front; `caps` says at which ends (`[at a, at b]`) the box's sides may catch the segment's
@@ -19,12 +24,36 @@ use super::{Segment, SweepHit};
 /// The rules are those of [`sweep_circle_segment`](super::sweep_circle_segment): back faces
 /// never block (a box whose centre is behind the segment's line is not stopped by it); the
 /// flat side is met when the box's lowest point along `-normal` reaches the line, moving
-/// towards it, while the box's extent along the segment overlaps it; a box already touching
-/// or overlapping it and moving closer gets `t = 0`. An end point counts where `caps` says
-/// so, and only while the box's centre is in front of the segment's line (as a circle's cap
-/// counts only its front half): a box whose centre is below a one-way platform passes its
-/// ends, and at a seam (no cap) the neighbour's flat side decides. The contact normal points
-/// from the segment towards the box.
+/// towards it, while the box's extent along the segment overlaps it; a box already across
+/// the line and over the segment, moving closer, gets `t = 0`. An end point counts where
+/// `caps` says so, and only while the box's centre is in front of the segment's line (as a
+/// circle's cap counts only its front half): a box whose centre is below a one-way platform
+/// passes its ends, and at a seam (no cap) the neighbour's flat side decides. The contact
+/// normal points from the segment towards the box.
+///
+/// **Which face a contact reports.** The reported contact is the first moment the box's
+/// *inside* would take in a point of the segment, and its normal is the face through which
+/// that happens (the edge of the Minkowski sum of box and segment the centre's path enters,
+/// Ericson 5.5.7):
+/// - the segment's face, when the box reaches the segment's line while its extent along the
+///   segment overlaps the segment by more than a point;
+/// - an end point's box side (`±x` or `±y`), when the end point comes into the box through
+///   that side: the box reached the extent of a segment whose line it had already crossed
+///   (it is beside a step, not above it), so the end point is what it runs into. Without a
+///   cap there, the segment reports nothing: the surface continuing from that end decides;
+/// - nothing, for a touch that never moves into the box: a side sliding along an end point
+///   (a box flush with a block's top passing over its corner), or a face left just as the
+///   line is reached.
+///
+/// When two of these happen at the same `t` (the box's corner meets the segment's end point
+/// exactly), the one the motion runs into most head-on wins: the largest `-normal · motion`;
+/// on equal terms a box side wins over a slanted face, and `±x` over `±y`. So every segment
+/// of a corner reports the same normal for the same contact, whatever order a caller tests
+/// them in: a box moving right and dipping into the top-left corner of a block it is level
+/// with gets the block's side `(-1, 0)` from the block's top as from its side. (In a concave
+/// corner reached exactly, the box's bottom landing on the floor as its side reaches the
+/// wall, both faces are met at once and each reports its own normal: either keeps the box
+/// out, and a caller wanting one answer ranks equal `t` by `-normal · motion`.)
 ///
 /// ```
 /// # use tileslide::{Segment, Vec2, sweep_box_segment};
@@ -36,6 +65,11 @@ use super::{Segment, SweepHit};
 /// // A box whose edge overhangs the floor's end by less than its half width still lands.
 /// let hit = sweep_box_segment(Vec2::new(5.4, 3.0), Vec2::new(0.5, 1.0), Vec2::new(0.0, -4.0), &floor, Vec2::Y, [true; 2]);
 /// assert_eq!(hit.map(|h| h.t), Some(0.5));
+/// // A box beside a step (its bottom below the step's top at y = 0, from x = 5) moving right
+/// // and down runs into the step's corner with its side: the side's normal, not the top's.
+/// let step = Segment::new(Vec2::new(5.0, 0.0), Vec2::new(8.0, 0.0));
+/// let hit = sweep_box_segment(Vec2::new(3.0, 0.9), Vec2::new(1.0, 1.0), Vec2::new(2.0, -0.1), &step, Vec2::Y, [true; 2]).unwrap();
+/// assert_eq!((hit.t, hit.normal), (0.5, Vec2::NEG_X));
 /// ```
 #[must_use]
 pub fn sweep_box_segment(
@@ -52,52 +86,12 @@ pub fn sweep_box_segment(
     let vn = motion.dot(normal);
     let mut best: Option<SweepHit> = None;
     if h0 >= 0.0 && vn < 0.0 && len2 > 0.0 {
-        // How far the box reaches towards the line from its centre.
-        let support = half.x * normal.x.abs() + half.y * normal.y.abs();
-        let t_near = if h0 <= support {
-            0.0
-        } else {
-            (h0 - support) / -vn
-        };
-        // Past the line the centre is behind the face: no front contact from then on.
-        let t_line = h0 / -vn;
-        // The support feature's extent along the segment, relative to the centre: one
-        // corner, or a whole side when the segment is axis-aligned (its normal has a zero
-        // component, as every grid-aligned tile face has).
-        let len = len2.sqrt();
-        let u = e / len;
-        let corner = Vec2::new(-half.x.copysign(normal.x), -half.y.copysign(normal.y));
-        let (lo, hi) = if normal.x == 0.0 {
-            let r = half.x * u.x.abs();
-            (corner.y * u.y - r, corner.y * u.y + r)
-        } else if normal.y == 0.0 {
-            let r = half.y * u.y.abs();
-            (corner.x * u.x - r, corner.x * u.x + r)
-        } else {
-            let s = corner.dot(u);
-            (s, s)
-        };
-        // The feature overlaps the segment while `s(t) + lo <= len` and `s(t) + hi >= 0`.
-        let (s0, se) = ((center - a).dot(u), motion.dot(u));
-        let (t_in, t_out) = if se == 0.0 {
-            if s0 + lo <= len && s0 + hi >= 0.0 {
-                (0.0, f32::INFINITY)
-            } else {
-                (f32::INFINITY, f32::NEG_INFINITY)
-            }
-        } else {
-            let (t0, t1) = ((-hi - s0) / se, (len - lo - s0) / se);
-            (t0.min(t1), t0.max(t1))
-        };
-        let t = t_near.max(t_in).max(0.0);
-        if t <= 1.0 && t <= t_out && t <= t_line {
-            best = Some(SweepHit { t, normal });
-        }
+        best = sweep_box_face(center, half, motion, segment, normal);
     }
     for (end, capped) in [(a, caps[0]), (segment.b, caps[1])] {
         if capped
             && let Some(hit) = sweep_box_point(center, half, motion, end)
-            && (center + motion * hit.t - a).dot(normal) >= 0.0
+            && in_front_at(h0, vn, hit.t)
             && best.is_none_or(|b| hit.t < b.t)
         {
             best = Some(hit);
@@ -106,17 +100,130 @@ pub fn sweep_box_segment(
     best
 }
 
+/// The flat side of [`sweep_box_segment`]: the time the box, in front of the segment's line
+/// (`h0 >= 0`) and moving towards it, meets the face itself; `None` when it meets only an
+/// end point (the end's business) or nothing.
+fn sweep_box_face(
+    center: Vec2,
+    half: Vec2,
+    motion: Vec2,
+    segment: &Segment,
+    normal: Vec2,
+) -> Option<SweepHit> {
+    let (a, e) = (segment.a, segment.delta());
+    let h0 = (center - a).dot(normal);
+    let vn = motion.dot(normal);
+    // How far the box reaches towards the line from its centre.
+    let support = half.x * normal.x.abs() + half.y * normal.y.abs();
+    // The support feature's extent along the segment, relative to the centre: one corner,
+    // or a whole side when the segment is axis-aligned (its normal has a zero component, as
+    // every grid-aligned tile face has).
+    let len = e.length();
+    let u = e / len;
+    let corner = Vec2::new(-half.x.copysign(normal.x), -half.y.copysign(normal.y));
+    let (lo, hi) = if normal.x == 0.0 {
+        let r = half.x * u.x.abs();
+        (corner.y * u.y - r, corner.y * u.y + r)
+    } else if normal.y == 0.0 {
+        let r = half.y * u.y.abs();
+        (corner.x * u.x - r, corner.x * u.x + r)
+    } else {
+        let s = corner.dot(u);
+        (s, s)
+    };
+    // The feature overlaps the segment by more than a point while `s(t) + lo < len` and
+    // `s(t) + hi > 0`: for `t` strictly between `t_in` and `t_out`.
+    let (s0, se) = ((center - a).dot(u), motion.dot(u));
+    let (t_in, t_out) = if se == 0.0 {
+        if s0 + lo < len && s0 + hi > 0.0 {
+            (f32::NEG_INFINITY, f32::INFINITY)
+        } else {
+            return None;
+        }
+    } else {
+        let (t0, t1) = ((-hi - s0) / se, (len - lo - s0) / se);
+        (t0.min(t1), t0.max(t1))
+    };
+    if h0 < support {
+        // Already across the line: held by the face only if over the segment now (its
+        // support feature, and for a slanted segment the box itself, whose corner may be
+        // over the segment while the box is beside its end). A box that comes over it later,
+        // across its line, runs into its end point instead.
+        let over = t_in < 0.0 && 0.0 < t_out;
+        let b = segment.b;
+        let beside = (normal.x != 0.0 && normal.y != 0.0)
+            && ((center - half).cmpge(a.max(b)).any() || (center + half).cmple(a.min(b)).any());
+        return (over && !beside).then_some(SweepHit { t: 0.0, normal });
+    }
+    let t = (h0 - support) / -vn;
+    if t > 1.0 || t >= t_out {
+        return None;
+    }
+    // The feature reaches the line as it reaches the segment's end: a corner meets the end
+    // point. Exactly so for an axis-aligned face (its terms are exact differences, so equal
+    // times round equal); within rounding for a slanted one, whose terms are rounded
+    // projections (a box walking flush along a floor into a ramp's foot).
+    let corner = if normal.x == 0.0 || normal.y == 0.0 {
+        t == t_in
+    } else {
+        let scale = h0.abs() + support + s0.abs() + lo.abs() + hi.abs() + len;
+        (t - t_in).abs() * (-vn).max(se.abs()) <= CORNER_ROUNDING * scale
+    };
+    if corner {
+        return face_wins_corner(normal, motion, se).then_some(SweepHit { t, normal });
+    }
+    (t > t_in).then_some(SweepHit { t, normal })
+}
+
+/// At a corner contact (the box's support feature meets the segment's end point as it
+/// reaches the line), whether the face's `normal` beats the box's sides there: it must
+/// oppose `motion` strictly more than each side that the end point comes in through (on
+/// equal terms a side wins, and of an axis-aligned face only an `x` face wins). `se` is the
+/// motion along the segment.
+fn face_wins_corner(normal: Vec2, motion: Vec2, se: f32) -> bool {
+    let into_face = -motion.dot(normal);
+    if normal.y == 0.0 {
+        // A side (x) face: the end point comes in through the box's top or bottom.
+        into_face >= se.abs()
+    } else if normal.x == 0.0 {
+        into_face > se.abs()
+    } else {
+        // A slanted face: the end point is at the box's corner, and comes in through both
+        // sides there (those facing the segment, as its normal does) only if the motion runs
+        // into both; otherwise it slides along one of them, and the face near the end point
+        // is what enters the box (a box walking along a floor into a ramp's foot).
+        let (x, y) = (-normal.x.signum() * motion.x, -normal.y.signum() * motion.y);
+        x <= 0.0 || y <= 0.0 || into_face > x.max(y)
+    }
+}
+
+/// Whether the box's centre is on or in front of the segment's line at `t`, for a centre
+/// that starts at height `h0` above it and rises by `vn` over the move: compared as `t`
+/// against the time of crossing, so a contact exactly on the line counts whatever the
+/// rounding of `center + motion · t`.
+fn in_front_at(h0: f32, vn: f32, t: f32) -> bool {
+    if vn < 0.0 {
+        h0 >= 0.0 && t <= h0 / -vn
+    } else if vn > 0.0 {
+        h0 >= 0.0 || t >= -h0 / vn
+    } else {
+        h0 >= 0.0
+    }
+}
+
 /// Time of impact of the box against a point: the point, moving by `-motion`, entering the
-/// box through one of its sides (a slab test). The normal is that side's outward normal,
-/// negated: from the point towards the box. A point already inside the box gives `t = 0`
-/// with the normal of the side it is nearest, if the move takes the box further onto it.
-/// `None` when the point misses the box, enters after `t = 1`, or is inside and the box
+/// box's inside through one of its sides (a slab test). The normal is that side's outward
+/// normal, negated: from the point towards the box. A point that enters through a corner
+/// (both sides at once) takes the side the motion runs into more (`x` on equal terms). A
+/// point strictly inside the box gives `t = 0` with the normal of the side it is nearest,
+/// if the move takes the box further onto it. `None` when the point misses the box, only
+/// slides along a side or touches a corner, enters after `t = 1`, or is inside and the box
 /// moves off it.
 fn sweep_box_point(center: Vec2, half: Vec2, motion: Vec2, point: Vec2) -> Option<SweepHit> {
     // The point relative to the box, moving by -motion.
     let p = point - center;
-    if p.abs().cmple(half).all() {
-        // Inside (or on the boundary): the nearest side decides.
+    if p.abs().cmplt(half).all() {
+        // Inside: the nearest side decides.
         let depth = half - p.abs();
         let normal = if depth.x < depth.y {
             Vec2::new(-p.x.signum(), 0.0)
@@ -129,18 +236,22 @@ fn sweep_box_point(center: Vec2, half: Vec2, motion: Vec2, point: Vec2) -> Optio
     let mut t_enter = f32::NEG_INFINITY;
     let mut t_exit = f32::INFINITY;
     let mut normal = Vec2::ZERO;
+    let mut speed = 0.0;
     for (axis, unit) in [(0, Vec2::X), (1, Vec2::Y)] {
         let (pa, da, ha) = (p[axis], d[axis], half[axis]);
         if da == 0.0 {
-            if pa < -ha || pa > ha {
+            // Never crosses this slab's sides: inside it all along, or (on a side or
+            // beyond) never inside the box.
+            if pa <= -ha || pa >= ha {
                 return None;
             }
             continue;
         }
         let (t0, t1) = ((-ha - pa) / da, (ha - pa) / da);
         let (near, far) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
-        if near > t_enter {
+        if near > t_enter || (near == t_enter && da.abs() > speed) {
             t_enter = near;
+            speed = da.abs();
             // Entering through the side facing the point's approach: the point moves along
             // `da`, so it comes through the side at `-sign(da)`; the contact normal from the
             // point towards the box is `+sign(da)` on this axis.
@@ -148,7 +259,7 @@ fn sweep_box_point(center: Vec2, half: Vec2, motion: Vec2, point: Vec2) -> Optio
         }
         t_exit = t_exit.min(far);
     }
-    (t_enter >= 0.0 && t_enter <= t_exit && t_enter <= 1.0)
+    (t_enter >= 0.0 && t_enter < t_exit && t_enter <= 1.0)
         .then_some(SweepHit { t: t_enter, normal })
 }
 

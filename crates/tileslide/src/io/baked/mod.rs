@@ -26,8 +26,10 @@
 //!
 //! Everything is written as the map holds it, so a baked and loaded map has the very same
 //! tiles, segments and links, bit for bit, and answers every query as the original does.
-//! On load the culled segments are checked (finite, links in range, each cell's kind as its
-//! segments make it), not recomputed.
+//! On load the culled segments are checked against the tiles, not trusted for their
+//! checksum: each cell's segments must be what its tile and its four neighbours make there
+//! (culled once per distinct pattern of five tiles, see `expected`), its kind the one they
+//! make, every link must join two segments that touch, and every cap be what the links give.
 //!
 //! ```
 //! use tileslide::io::{ascii, baked};
@@ -47,10 +49,13 @@ use std::sync::Arc;
 
 use glam::Vec2;
 
+mod expected;
+
+use expected::{Expected, check_link, expected_caps, pattern_of};
+
 use super::bytes::ByteReader;
 use super::error::read_file;
 use super::{LoadError, LoadErrorKind};
-use crate::tiles::face_kind::kind_of;
 use crate::tiles::link::Link;
 use crate::tiles::map::placed_segments;
 use crate::tiles::store::{HotSegment, NO_SEGMENTS, SegmentStore, block_capacity};
@@ -275,8 +280,20 @@ pub fn parse(data: &[u8], path: impl AsRef<Path>) -> Result<TileMap, LoadError> 
             .into(),
         )
     })?;
-    let store = read_store(&mut r, width, height, tile_size, origin)?;
-    TileMap::from_store(Arc::new(set), width, height, origin, tiles, store, placed)
+    let set = Arc::new(set);
+    let grid = Grid {
+        width,
+        height,
+        cell_size: tile_size,
+        origin,
+        tiles: &tiles,
+    };
+    let mut expected = Expected::new(set.clone());
+    let (store, segments_at) = read_store(&mut r, &grid, &mut expected)?;
+    if expected.gave_up() {
+        compare_culled(&r, &grid, &set, &store, segments_at)?;
+    }
+    TileMap::from_store(set, width, height, origin, tiles, store, placed)
         .map_err(|e| r.error_at(tiles_at, e.into()))
 }
 
@@ -350,16 +367,28 @@ fn bad_segment(r: &ByteReader<'_>, segments_at: u64, k: usize, reason: &str) -> 
     )
 }
 
-/// Reads and checks the culled segments written by [`write_store`], into a store laid out as
-/// edits lay one out (each cell's block at its [`block_capacity`]).
-fn read_store(
-    r: &mut ByteReader<'_>,
+/// A baked map's grid: its size, cells and tiles (raw ids, row by row).
+struct Grid<'a> {
     width: u32,
     height: u32,
     cell_size: Vec2,
     origin: Vec2,
-) -> Result<SegmentStore, LoadError> {
+    tiles: &'a [u32],
+}
+
+/// Reads and checks the culled segments written by [`write_store`], into a store laid out as
+/// edits lay one out (each cell's block at its [`block_capacity`]). Every cell's segments
+/// must be what its tile and its neighbours make there (see [`expected`]), and every link
+/// and cap what joining them gives.
+/// Returns the store and the offset of its first segment record.
+fn read_store(
+    r: &mut ByteReader<'_>,
+    grid: &Grid<'_>,
+    expected: &mut Expected,
+) -> Result<(SegmentStore, u64), LoadError> {
+    let (width, height) = (grid.width, grid.height);
     let cells = (width * height) as usize;
+    let counts_at = r.offset();
     let counts_raw = r.take(cells * 2, "counts")?;
     let (counts, _) = counts_raw.as_chunks::<2>();
     let count_of = |cell: usize| usize::from(u16::from_le_bytes(counts[cell]));
@@ -396,13 +425,28 @@ fn read_store(
     let mut caps = Vec::with_capacity(active as usize);
     let (w, h) = (i64::from(width), i64::from(height));
     let (mut row, mut row_start) = (0i64, 0usize);
+    let pattern = |cell| pattern_of(grid.tiles, width as usize, height as usize, cell);
     let mut cell = 0;
     loop {
-        // Most cells are empty: skip a run of them at a time, checking their kinds are 0.
+        // Most cells are empty: skip a run of them at a time, checking their kinds are 0 and
+        // that their tiles make no segments there (a solid among solids).
         let next = (cell + zero_bytes(&counts_raw[2 * cell..]) / 2).min(cells);
         if kinds[cell..next].iter().fold(0, |any, &k| any | k) != 0 {
             let bad = (cell..next).find(|&c| kinds[c] != 0).unwrap_or(cell);
             return Err(bad_kind(r, kinds_at, bad, kinds[bad]));
+        }
+        for c in (cell..next).filter(|&c| grid.tiles[c] != EMPTY) {
+            let made = expected
+                .count(pattern(c))
+                .map_err(|e| r.error_at(counts_at, e.into()))?;
+            if made != 0 {
+                return Err(r.error_at(
+                    counts_at + 2 * c as u64,
+                    LoadErrorKind::Invalid(format!(
+                        "cell {c} holds no active segments, but its tiles make {made} there"
+                    )),
+                ));
+            }
         }
         cell = next;
         if cell == cells {
@@ -464,9 +508,17 @@ fn read_store(
             caps.push(segment.caps);
             rank += 1;
         }
-        // Each cell's kind must be the one its segments make: the ray walk trusts it.
-        let base = origin + Vec2::new(col as f32, row as f32) * cell_size;
-        if kind_of(&hot[block..], base, cell_size) != kinds[cell] {
+        // The segments must be what the cell's tile and its neighbours make there, and the
+        // cell's kind the one they make (the ray walk trusts it).
+        let base = grid.origin + Vec2::new(col as f32, row as f32) * grid.cell_size;
+        let kind = expected
+            .check_cell(pattern(cell), base, &hot[block..])
+            .map_err(|e| r.error_at(counts_at + 2 * cell as u64, e.into()))?
+            .map_err(|m| {
+                let at = rank - count + m.index.min(count.saturating_sub(1));
+                bad_segment(r, segments_at, at, &format!("in cell {cell}, {}", m.reason))
+            })?;
+        if kind != kinds[cell] {
             return Err(bad_kind(r, kinds_at, cell, kinds[cell]));
         }
         // Padding up to the block's capacity (never read; overwritten on reuse).
@@ -479,14 +531,102 @@ fn read_store(
         }
         cell += 1;
     }
-    Ok(SegmentStore::from_layout(
-        starts,
-        kinds,
-        hot,
-        links,
-        caps,
-        active as usize,
-    ))
+    let store = SegmentStore::from_layout(starts, kinds, hot, links, caps, active as usize);
+    check_joins(r, grid, segments_at, &store)?;
+    Ok((store, segments_at))
+}
+
+/// Compares `store`, read from the file, with the map's tiles culled and linked at once:
+/// for a map of too many distinct patterns to check one by one (see [`Expected`]).
+fn compare_culled(
+    r: &ByteReader<'_>,
+    grid: &Grid<'_>,
+    set: &Arc<TileSet>,
+    store: &SegmentStore,
+    segments_at: u64,
+) -> Result<(), LoadError> {
+    let tiles: Vec<Option<TileId>> = grid
+        .tiles
+        .iter()
+        .map(|&t| (t != EMPTY).then_some(TileId(t)))
+        .collect();
+    let map = TileMap::from_tiles(set.clone(), grid.width, grid.height, grid.origin, &tiles)
+        .map_err(|e| r.error_at(segments_at, e.into()))?;
+    let culled = &map.store;
+    let mut rank = 0;
+    for cell in 0..tiles.len() {
+        let (made, stored) = (culled.cell(cell), store.cell(cell));
+        let same = |k: usize| {
+            let (x, s) = (&made[k], &stored[k]);
+            (x.a, x.e, x.normal, x.flags, x.source) == (s.a, s.e, s.normal, s.flags, s.source)
+                && culled.links(cell)[k] == store.links(cell)[k]
+                && culled.caps(cell)[k] == store.caps(cell)[k]
+        };
+        if let Some(k) = (0..stored.len()).find(|&k| k >= made.len() || !same(k)) {
+            return Err(bad_segment(
+                r,
+                segments_at,
+                rank + k,
+                &format!("in cell {cell}, it is not what its tiles make there"),
+            ));
+        }
+        if made.len() != stored.len() {
+            return Err(r.error_at(
+                segments_at,
+                LoadErrorKind::Invalid(format!(
+                    "cell {cell} holds {} active segments, but its tiles make {} there",
+                    stored.len(),
+                    made.len()
+                )),
+            ));
+        }
+        rank += stored.len();
+    }
+    Ok(())
+}
+
+/// Checks every link (it joins two segments that touch there) and cap (as those joins give
+/// it) of the segments read into `store`.
+fn check_joins(
+    r: &ByteReader<'_>,
+    grid: &Grid<'_>,
+    segments_at: u64,
+    store: &SegmentStore,
+) -> Result<(), LoadError> {
+    let width = grid.width as usize;
+    let mut rank = 0;
+    for cell in 0..width * grid.height as usize {
+        let (segments, links, caps) = (store.cell(cell), store.links(cell), store.caps(cell));
+        for (i, segment) in segments.iter().enumerate() {
+            let mut others = [None; 2];
+            for (end, link) in links[i].iter().enumerate() {
+                if let Some((dc, dr, index)) = link.target() {
+                    // In the map, and below its cell's count: checked as the link was read.
+                    let target = (cell as i64 + dr * width as i64 + dc) as usize;
+                    let other = &store.cell(target)[index as usize];
+                    let fault = if target == cell && index as usize == i {
+                        Some("a link names its own segment")
+                    } else {
+                        check_link(segment, end, other, grid.cell_size)
+                    };
+                    if let Some(reason) = fault {
+                        return Err(bad_segment(r, segments_at, rank, reason));
+                    }
+                    others[end] = Some(other);
+                }
+            }
+            if caps[i] != expected_caps(segment, others) {
+                return Err(bad_segment(
+                    r,
+                    segments_at,
+                    rank,
+                    "its caps are not what its links give",
+                ));
+            }
+            rank += 1;
+        }
+    }
+    Ok(())
 }
 
 /// How many bytes at the start of `bytes` are zero (eight at a time).
