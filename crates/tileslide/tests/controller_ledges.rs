@@ -214,9 +214,6 @@ proptest! {
 
     /// The same for a box.
     #[test]
-    #[ignore = "a box landing on a ledge's top with its centre still beside the face is \
-        stopped by the face when `sweep_box_segment` finds it first: at equal time of \
-        impact the face reports its own normal though the box is already past its line"]
     fn a_box_moving_past_a_ledge_ends_in_the_same_place_at_30_60_120_and_240_hz(
         half_width in 0.1f32..0.6,
         half_height in 0.1f32..0.6,
