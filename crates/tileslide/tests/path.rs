@@ -22,7 +22,7 @@ use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
     Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, NavConfig, NavError, NavGrid,
-    Path, RayFilter, TileMap, Vec2,
+    Path, RayFilter, SegmentFlags, TileMap, Vec2,
 };
 
 use path_support::any_angle::{InflatedScene, room_and_blocks};
@@ -763,9 +763,15 @@ fn a_body_touching_another_slides_round_it_when_moving_obliquely_into_it() {
 // 5. Updates equal a full recompute
 // ----------------------------------------------------------------------------------------
 
-/// A tile for an edit: `None` digs (`clear_tile`), `Some` fills.
+/// A tile for an edit: `None` digs (`clear_tile`), `Some` fills (one-way platforms too).
 fn edit_tile() -> impl Strategy<Value = Option<char>> {
-    prop_oneof![5 => Just(None), 4 => Just(Some('#')), 1 => Just(Some('/')), 1 => Just(Some('\\'))]
+    prop_oneof![
+        5 => Just(None),
+        4 => Just(Some('#')),
+        1 => Just(Some('/')),
+        1 => Just(Some('\\')),
+        2 => Just(Some('=')),
+    ]
 }
 
 const UPDATE_RADII: [f32; 4] = [0.2, 0.45, 0.8, 1.0];
@@ -812,9 +818,14 @@ proptest! {
                 if p.is_affected_by(&change) {
                     path = nav.find_path(&map, from, goal, r).unwrap();
                 } else {
+                    // Solid walls from both sides, one-way platforms from the front.
+                    let solid = both_faces().with_mask(SegmentFlags::SOLID);
+                    let one_way = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
                     for run in p.points().windows(2) {
+                        let (a, motion) = (run[0], run[1] - run[0]);
                         prop_assert!(
-                            map.cast_circle(run[0], r, run[1] - run[0], &both_faces()).is_none(),
+                            map.cast_circle(a, r, motion, &solid).is_none()
+                                && map.cast_circle(a, r, motion, &one_way).is_none(),
                             "editing {} blocked the run {} -> {} of a path it does not affect\n{}",
                             cell, run[0], run[1], random.text()
                         );

@@ -9,10 +9,10 @@
 
 use glam::Vec2;
 
-use super::clearance::open_moves;
+use super::clearance::incoming_moves;
 use super::lattice::MOVES;
 use super::radix_heap::RadixHeap;
-use super::{NavChange, NavError, NavGrid};
+use super::{End, NavChange, NavError, NavGrid, check_point};
 use crate::tiles::TileMap;
 
 /// Distance of a node the goal cannot be reached from.
@@ -40,12 +40,7 @@ impl FlowField {
     /// The field of `goal` for circles of `radius` on `map` (whose grid is `nav`). If the
     /// circle does not fit at the goal, no node reaches it.
     pub fn new(nav: &NavGrid, map: &TileMap, goal: Vec2, radius: f32) -> Result<Self, NavError> {
-        if !goal.is_finite() {
-            return Err(NavError::NonFinite {
-                what: "goal",
-                point: goal,
-            });
-        }
+        check_point("goal", goal)?;
         let need = nav.check(map, radius)?;
         let nodes = nav.table.lattice.len();
         let mut field = Self {
@@ -60,14 +55,16 @@ impl FlowField {
         Ok(field)
     }
 
-    /// Dijkstra from the nodes that join the goal straight.
+    /// Dijkstra from the nodes that join the goal straight, along the moves into each node
+    /// (one-way platforms make a move and its reverse differ: agents go from the node to
+    /// the goal, the search from the goal outwards).
     fn fill(&mut self, nav: &NavGrid, map: &TileMap) {
         let table = &nav.table;
         let lattice = &table.lattice;
         self.distance.fill(UNREACHED);
         self.next.fill(TO_GOAL);
         let mut open = RadixHeap::default();
-        for a in nav.attach(map, self.goal, self.radius) {
+        for a in nav.attach(map, self.goal, self.radius, End::Goal) {
             let n = a.node as usize;
             if a.cost < self.distance[n] {
                 self.distance[n] = a.cost;
@@ -80,11 +77,11 @@ impl FlowField {
                 continue;
             }
             let (i, j) = lattice.coords(n);
-            for (dir, m) in lattice.neighbours(n, open_moves(table, n, i, j, self.need)) {
+            for (dir, m) in lattice.neighbours(n, incoming_moves(table, n, i, j, self.need)) {
                 let nd = d.saturating_add(lattice.costs[dir]);
                 if nd < self.distance[m] {
                     self.distance[m] = nd;
-                    // From m, the way on is the opposite move.
+                    // From m, the way on is the opposite move, the one found open.
                     self.next[m] = ((dir + 4) % 8) as u8;
                     open.push(nd, m as u32);
                 }
@@ -106,7 +103,7 @@ impl FlowField {
 
     /// The best node `p` joins and the cost through it, if `p` reaches the goal.
     fn entry(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Option<(u32, u32)> {
-        nav.attach(map, p, self.radius)
+        nav.attach(map, p, self.radius, End::Start)
             .into_iter()
             .filter(|a| self.distance[a.node as usize] != UNREACHED)
             .map(|a| {
@@ -205,12 +202,7 @@ impl FlowField {
     }
 
     fn check(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Result<(), NavError> {
-        if !p.is_finite() {
-            return Err(NavError::NonFinite {
-                what: "p",
-                point: p,
-            });
-        }
+        check_point("p", p)?;
         nav.check(map, self.radius)?;
         if self.distance.len() != nav.table.lattice.len() {
             return Err(NavError::Stale);

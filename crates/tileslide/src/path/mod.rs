@@ -79,19 +79,31 @@ pub struct NavConfig {
     /// The widest circle the grid serves (map units). Clearances are measured up to this,
     /// so building costs more for larger values. At most 31 of the map's shorter cell side.
     pub max_radius: f32,
-    /// Segments with one of these flags block (from both sides: a path never relies on a
-    /// one-way platform letting it through).
+    /// Segments with one of these flags block. Those with the `ONE_WAY` flag block only
+    /// from their front, as the resolver's do: a path crosses a one-way platform only from
+    /// behind, moving the way its normal points (up through a floor platform, never down).
     pub mask: SegmentFlags,
 }
 
 impl Default for NavConfig {
-    /// Circles up to one cell (of a unit-cell map) wide; solid segments block.
+    /// Circles up to one cell (of a unit-cell map) wide; solid segments and one-way
+    /// platforms block.
     fn default() -> Self {
         Self {
             max_radius: 1.0,
-            mask: SegmentFlags::SOLID,
+            mask: SegmentFlags::SOLID | SegmentFlags::ONE_WAY,
         }
     }
+}
+
+/// Which end of a way a point is, so which way the line joining it to the lattice runs
+/// (one-way platforms let it through one way only).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum End {
+    /// The way starts here: lines run from the point to the lattice.
+    Start,
+    /// The way ends here: lines run from the lattice to the point.
+    Goal,
 }
 
 /// What a navigation call refuses.
@@ -133,6 +145,14 @@ pub enum NavError {
         /// Its value.
         point: Vec2,
     },
+    /// A point with a coordinate beyond [`MAX_COORD`](crate::MAX_COORD) in magnitude.
+    #[error("the {what} point {point} is beyond the ±{max} coordinate range (MAX_COORD)", max = crate::MAX_COORD)]
+    OutOfRange {
+        /// Which point (`from`, `to`, `goal`, …).
+        what: &'static str,
+        /// Its value.
+        point: Vec2,
+    },
     /// The map is not the one the grid was built for, or its tiles changed since without
     /// [`NavGrid::update`].
     #[error(
@@ -142,6 +162,18 @@ pub enum NavError {
     /// A cell outside the map.
     #[error("cell ({}, {}) is outside the map", .0.col, .0.row)]
     CellOutside(Cell),
+}
+
+/// Refuses a point that is not finite or lies beyond [`MAX_COORD`](crate::MAX_COORD):
+/// lattice coordinates of such a point overflow the integers nodes are counted in.
+pub(crate) fn check_point(what: &'static str, point: Vec2) -> Result<(), NavError> {
+    if !point.is_finite() {
+        Err(NavError::NonFinite { what, point })
+    } else if !crate::geometry::in_range(point) {
+        Err(NavError::OutOfRange { what, point })
+    } else {
+        Ok(())
+    }
 }
 
 /// Navigation data for one map: move clearances on a half-cell lattice and search scratch.
@@ -380,9 +412,10 @@ impl NavGrid {
             .then(|| (radius + margin).min(own - margin * END_MARGIN * 0.5))
     }
 
-    /// The nodes around `p` a circle of `radius` reaches from `p` in a straight line, with
-    /// the line's cost; empty if the circle does not fit at `p`.
-    pub(crate) fn attach(&self, map: &TileMap, p: Vec2, radius: f32) -> Vec<Attach> {
+    /// The nodes around `p` a circle of `radius` reaches from `p` in a straight line (or,
+    /// for a goal, reaches `p` from), with the line's cost; empty if the circle does not
+    /// fit at `p`.
+    pub(crate) fn attach(&self, map: &TileMap, p: Vec2, radius: f32, end: End) -> Vec<Attach> {
         let lattice = &self.table.lattice;
         let Some(need) = self.end_clearance(map, p, radius) else {
             return Vec::new();
@@ -396,7 +429,11 @@ impl NavGrid {
                     continue;
                 }
                 let q = lattice.position(i as u32, j as u32);
-                if self.table.segment_clearance(map, p, q) >= need {
+                let (a, b) = match end {
+                    End::Start => (p, q),
+                    End::Goal => (q, p),
+                };
+                if self.table.segment_clearance(map, a, b) >= need {
                     out.push(Attach {
                         node: lattice.index(i as u32, j as u32) as u32,
                         cost: lattice.cost_of_length(p.distance(q)),
@@ -418,15 +455,11 @@ impl NavGrid {
         to: Vec2,
         radius: f32,
     ) -> Result<Option<Path>, NavError> {
-        for (what, point) in [("from", from), ("to", to)] {
-            if !point.is_finite() {
-                return Err(NavError::NonFinite { what, point });
-            }
-        }
+        check_point("from", from)?;
+        check_point("to", to)?;
         let need = self.check(map, radius)?;
-        let mask = self.table.mask;
-        let starts = self.attach(map, from, radius);
-        let goals = self.attach(map, to, radius);
+        let starts = self.attach(map, from, radius, End::Start);
+        let goals = self.attach(map, to, radius, End::Goal);
         if starts.is_empty() || goals.is_empty() {
             return Ok(None);
         }
@@ -459,7 +492,7 @@ impl NavGrid {
         points.push(from);
         points.extend(nodes.iter().map(|&n| lattice.position_of(n as usize)));
         points.push(to);
-        let smoothed = smooth::smooth(map, &points, radius, mask);
+        let smoothed = smooth::smooth(map, &points, radius, &self.table);
         Ok(Some(Path::new(smoothed, radius, need)))
     }
 
@@ -522,12 +555,7 @@ impl NavGrid {
     /// grid's margin (2.5·10⁻⁴ of a cell), which takes in every place the resolver leaves
     /// a body of that radius (at least half its default gap, 5·10⁻⁴ of a cell, from walls).
     pub fn fits(&self, map: &TileMap, p: Vec2, radius: f32) -> Result<bool, NavError> {
-        if !p.is_finite() {
-            return Err(NavError::NonFinite {
-                what: "p",
-                point: p,
-            });
-        }
+        check_point("p", p)?;
         self.check(map, radius)?;
         Ok(self.end_clearance(map, p, radius).is_some())
     }
