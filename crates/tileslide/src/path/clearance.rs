@@ -348,7 +348,10 @@ fn one_way_squared(least: f32, walls: &[OneWay], a: Vec2, b: Vec2, tolerance: f3
 /// So:
 /// - moving with the normal (by more than [`ALONG_PLATFORM`]), only the ends count, and
 ///   only while the centre is in front of the line (by more than `tolerance`) and still
-///   closing in: the distance at the closest approach, if the centre is in front by then;
+///   closing in: the distance at the closest approach, if the centre is in front by then
+///   and closes in by more than `tolerance` (less only grazes: the resolver slides the
+///   circle round the end, never stops it, as a move with the normal never meets an end
+///   head-on from the front);
 /// - moving against it or along it, the part of the move in front of the line (or behind
 ///   it by at most `tolerance`) counts whole: its distance to the segment.
 ///
@@ -366,11 +369,21 @@ pub(crate) fn one_way_distance_squared(w: &OneWay, p: Vec2, q: Vec2, tolerance: 
     let mn = m.dot(n);
     if mn > ALONG_PLATFORM * len2.sqrt() {
         let mut least = f32::INFINITY;
+        // In front of the line (by the tolerance) from `front` on.
+        let front = ((tolerance - h0) / mn).max(0.0);
         for end in [w.segment.a, w.segment.b] {
-            // Closing in on the end until `t`, and in front of the line from `h = 0` on.
+            // Closing in on the end until `t`.
             let t = ((end - p).dot(m) / len2).min(1.0);
-            if t > 0.0 && h0 + t * mn > tolerance {
-                least = least.min((p + m * t).distance_squared(end));
+            if t <= front {
+                continue;
+            }
+            let closest = (p + m * t).distance(end);
+            // Closing in by no more than the tolerance only grazes the end: the resolver
+            // stops the circle there and slides it on round the end, off the run by that.
+            // (A circle just through a platform is in reach of both its ends, and only
+            // moves straight on along the normal close in on neither.)
+            if (p + m * front).distance(end) - closest > tolerance {
+                least = least.min(closest * closest);
             }
         }
         return least;

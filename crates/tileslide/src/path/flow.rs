@@ -22,6 +22,15 @@ const TO_GOAL: u8 = u8::MAX;
 /// How many next moves an agent looks ahead along its way.
 const LOOKAHEAD: usize = 8;
 
+/// How a point reaches the goal of a field.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Entry {
+    /// Through this node.
+    Node(u32),
+    /// Straight to the goal.
+    Straight,
+}
+
 /// Distances to one goal for circles of one radius (see the module docs).
 #[derive(Clone, Debug, PartialEq)]
 pub struct FlowField {
@@ -101,18 +110,30 @@ impl FlowField {
         self.radius
     }
 
-    /// The best node `p` joins and the cost through it, if `p` reaches the goal.
-    fn entry(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Option<(u32, u32)> {
-        nav.attach(map, p, self.radius, End::Start)
+    /// How `p` reaches the goal most cheaply, and the cost: through the best node it joins,
+    /// or straight to the goal when that is near, clear (as [`NavGrid::find_path`] joins
+    /// near ends) and cheaper. A point in front of a one-way platform, within its reach, may
+    /// go on straight to a goal there while every node it joins leads back round through
+    /// the platform.
+    fn entry(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Option<(u32, Entry)> {
+        let through = nav
+            .attach(map, p, self.radius, End::Start)
             .into_iter()
             .filter(|a| self.distance[a.node as usize] != UNREACHED)
             .map(|a| {
                 (
                     a.cost.saturating_add(self.distance[a.node as usize]),
-                    a.node,
+                    Entry::Node(a.node),
                 )
             })
-            .min()
+            .min();
+        let straight = nav.table.lattice.cost_of_length(p.distance(self.goal));
+        if through.is_some_and(|(cost, _)| cost <= straight)
+            || !nav.joins_straight(map, p, self.goal, self.radius)
+        {
+            return through;
+        }
+        Some((straight, Entry::Straight))
     }
 
     /// The length of the way from `p` to the goal along the field (map units), or `None`
@@ -134,8 +155,10 @@ impl FlowField {
         p: Vec2,
     ) -> Result<Option<Vec2>, NavError> {
         self.check(nav, map, p)?;
-        let Some((_, node)) = self.entry(nav, map, p) else {
-            return Ok(None);
+        let node = match self.entry(nav, map, p) {
+            Some((_, Entry::Node(node))) => node,
+            Some((_, Entry::Straight)) => return Ok((self.goal - p).try_normalize()),
+            None => return Ok(None),
         };
         let lattice = &nav.table.lattice;
         let Some(need) = nav.end_clearance(map, p, self.radius) else {

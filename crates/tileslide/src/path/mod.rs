@@ -60,6 +60,9 @@ use search::{Attach, Search};
 /// [`NavGrid::end_clearance`]).
 const END_MARGIN: f32 = 0.25;
 
+/// End points at most this many cells apart are joined straight when the line is clear.
+const NEAR_CELLS: f32 = 4.0;
+
 /// Radius classes a grid keeps moves and parts for (the least recently used goes first).
 const CACHED_CLASSES: usize = 8;
 
@@ -412,6 +415,19 @@ impl NavGrid {
             .then(|| (radius + margin).min(own - margin * END_MARGIN * 0.5))
     }
 
+    /// True when `from` and `to` are near (at most [`NEAR_CELLS`] apart) and a circle of
+    /// `radius` goes from one to the other in a straight line, clear as both ends need.
+    pub(crate) fn joins_straight(&self, map: &TileMap, from: Vec2, to: Vec2, radius: f32) -> bool {
+        if from.distance(to) > NEAR_CELLS * map.cell_size().min_element() {
+            return false;
+        }
+        let ends = self
+            .end_clearance(map, from, radius)
+            .zip(self.end_clearance(map, to, radius))
+            .map(|(a, b)| a.min(b));
+        ends.is_some_and(|e| self.table.segment_clearance(map, from, to) >= e)
+    }
+
     /// The nodes around `p` a circle of `radius` reaches from `p` in a straight line (or,
     /// for a goal, reaches `p` from), with the line's cost; empty if the circle does not
     /// fit at `p`.
@@ -464,12 +480,7 @@ impl NavGrid {
             return Ok(None);
         }
         // Near ends joined straight: no search needed.
-        let cells = from.distance(to) / map.cell_size().min_element();
-        let ends = self
-            .end_clearance(map, from, radius)
-            .zip(self.end_clearance(map, to, radius))
-            .map(|(a, b)| a.min(b));
-        if cells <= 4.0 && ends.is_some_and(|e| self.table.segment_clearance(map, from, to) >= e) {
+        if self.joins_straight(map, from, to, radius) {
             return Ok(Some(Path::new(vec![from, to], radius, need)));
         }
         let k = self.class(need);
