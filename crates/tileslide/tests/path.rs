@@ -1040,7 +1040,16 @@ fn radii_that_are_not_positive_or_above_max_radius_are_refused() {
 #[test]
 fn max_radius_that_is_not_positive_finite_or_is_over_31_cells_is_refused() {
     let map = map(ROOM);
-    for max_radius in [f32::NAN, 0.0, -1.0, f32::INFINITY, 31.5] {
+    for max_radius in [
+        f32::NAN,
+        0.0,
+        -1.0,
+        f32::INFINITY,
+        31.5,
+        1e20,
+        f32::MAX,
+        -f32::MAX,
+    ] {
         let err = NavGrid::new(
             &map,
             NavConfig {

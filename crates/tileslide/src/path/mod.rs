@@ -130,6 +130,19 @@ pub enum NavError {
         /// Its lattice nodes.
         nodes: u64,
     },
+    /// The map reaches so far from (0, 0) that `f32` coordinates there are farther apart
+    /// than the grid's margin (1/1000 of a cell), so clearances cannot keep it.
+    #[error(
+        "the map reaches {corner}, where coordinates are {spacing} apart, more than the navigation grid's margin {margin} (1/1000 of a cell): move its origin nearer (0, 0)"
+    )]
+    TooFar {
+        /// The map's corner farthest from (0, 0).
+        corner: Vec2,
+        /// The spacing of `f32` values there (map units).
+        spacing: f32,
+        /// The grid's margin (map units).
+        margin: f32,
+    },
     /// A radius that is not positive and finite, or above the grid's `max_radius`.
     #[error(
         "radius {radius} must be positive, finite and at most the grid's max_radius {max_radius}"
@@ -298,6 +311,23 @@ impl NavGrid {
             return Err(NavError::BadMaxRadius {
                 max_radius: config.max_radius,
                 limit,
+            });
+        }
+        // The corner farthest from (0, 0): float spacing grows with the magnitude.
+        let bounds = map.bounds();
+        let far = |a: f32, b: f32| if b.abs() >= a.abs() { b } else { a };
+        let corner = Vec2::new(
+            far(bounds.min.x, bounds.max.x),
+            far(bounds.min.y, bounds.max.y),
+        );
+        let largest = corner.abs().max_element();
+        let spacing = largest.next_up() - largest;
+        let margin = map.cell_size().min_element() * clearance::MARGIN_PER_CELL;
+        if spacing > margin {
+            return Err(NavError::TooFar {
+                corner,
+                spacing,
+                margin,
             });
         }
         let nodes = (2 * u64::from(map.width()) + 1) * (2 * u64::from(map.height()) + 1);
