@@ -1,4 +1,4 @@
-//! Proves the navigation grid of issue 7 (`NavGrid`, `Path`, `FlowField`) against
+//! Proves the navigation grid (`NavGrid`, `Path`, `FlowField`) against
 //! references built without `tileslide::path` (see `path_support`):
 //!
 //! - the moves it opens and the points it connects equal a brute-force lattice whose
@@ -364,7 +364,7 @@ const PILLARS: &str = "\
 #................#
 ##################";
 
-/// The longest a found path may be over the exact shortest (issue 7).
+/// The longest a found path may be over the exact shortest.
 const LENGTH_RATIO: f64 = 1.08;
 
 /// One query of [`lengths_against_any_angle`]: a found path and the lower bound of the
@@ -447,7 +447,7 @@ fn found_paths_are_never_shorter_than_the_exact_any_angle_shortest_path() {
     assert_eq!(checks.len(), 60);
 }
 
-/// Issue 7: "path length within 8 % of the exact any-angle shortest path on test maps".
+/// Found paths are within 8 % of the exact any-angle shortest path on the test maps.
 #[test]
 fn found_paths_are_within_8_percent_of_the_exact_any_angle_shortest_path() {
     let checks = lengths_against_any_angle(40, 7);
@@ -589,7 +589,7 @@ const CROWD: &str = "\
 #......................#
 ########################";
 
-/// Issue 7: 30 agents of radius 0.3 in a room with pillars steer by one flow field, are
+/// 30 agents of radius 0.3 in a room with pillars steer by one flow field, are
 /// moved 0.05 a step by `Bodies`, and leave through the goal (removed within 1.5 cells of
 /// it) within 2,500 steps; no two overlap and none touches a wall closer than its radius at
 /// any step.

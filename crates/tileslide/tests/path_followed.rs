@@ -234,3 +234,49 @@ proptest! {
         }
     }
 }
+
+/// A floor of one-way platforms (normal up, y down) with a gap at its right end.
+const LEDGE: &str = "\
+#########
+#.......#
+#.......#
+#===.####
+#.......#
+#.......#
+#########";
+
+/// Up through the platforms is the straight way; down, the way goes round through the gap,
+/// for paths and for flow fields alike.
+#[test]
+fn paths_and_flow_fields_cross_a_one_way_platform_only_from_behind() {
+    let map = ascii::parse(LEDGE, "ledge.txt", 1.0).unwrap();
+    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let (below, above, r) = (v(2.5, 4.5), v(2.5, 1.5), 0.3);
+    let up = nav.find_path(&map, below, above, r).unwrap().unwrap();
+    assert_eq!(
+        up.points(),
+        &[below, above],
+        "straight up through the platform"
+    );
+    let down = nav.find_path(&map, above, below, r).unwrap().unwrap();
+    assert!(
+        down.length() > 4.0 && down.points().iter().any(|p| p.x > 4.0),
+        "round through the gap: {:?}",
+        down.points()
+    );
+    let to_above = FlowField::new(&nav, &map, above, r).unwrap();
+    let to_below = FlowField::new(&nav, &map, below, r).unwrap();
+    let d_up = to_above.distance(&nav, &map, below).unwrap().unwrap();
+    let d_down = to_below.distance(&nav, &map, above).unwrap().unwrap();
+    assert!((d_up - 3.0).abs() < 0.01, "{d_up}");
+    assert!(d_down > 4.0, "{d_down}");
+    let dir = to_below.direction(&nav, &map, above).unwrap().unwrap();
+    assert!(
+        dir.x > 0.5,
+        "towards the gap, not down onto the platform: {dir}"
+    );
+    for (points, to) in [(up.points(), above), (down.points(), below)] {
+        let end = follow(&map, points, r).unwrap();
+        assert!(end.distance(to) <= ARRIVED, "{end}");
+    }
+}

@@ -6,6 +6,8 @@
 //! - [`NavGrid::find_path`] runs A* for a circle of radius `r` (8 directions; a diagonal
 //!   move is allowed only if the circle clears the corner) between any two points and
 //!   smooths the result into straight runs, each checked with the map's circle cast;
+//!   one-way platforms are directed edges: a path crosses one only from behind, moving the
+//!   way its normal points, as the resolver lets a body through;
 //! - [`FlowField`] holds, for one goal and one radius, every node's distance to the goal
 //!   and the way there, for crowds that share the goal;
 //! - [`NavGrid::update`] brings the grid up to date after a tile edit, recomputing only the
@@ -71,9 +73,9 @@ const CACHED_CLASSES: usize = 8;
 pub const NAV_MOVES: [(i32, i32); 8] = lattice::MOVES;
 
 /// Most lattice nodes a navigation grid takes (about a 4,096 × 4,096-cell map). A grid
-/// keeps about 22 bytes a node (clearances and search scratch), and 37 more for each radius
-/// class searched (moves, parts and landmark distances), so a 256 × 256 map takes about
-/// 6 MB, plus 10 MB a radius.
+/// keeps about 30 bytes a node (clearances each way and search scratch), and 37 more for
+/// each radius class searched (moves, parts and landmark distances), so a 256 × 256 map
+/// takes about 8 MB, plus 10 MB a radius.
 pub const MAX_NAV_NODES: usize = 1 << 26;
 
 /// How a [`NavGrid`] is built.
