@@ -347,11 +347,12 @@ fn one_way_squared(least: f32, walls: &[OneWay], a: Vec2, b: Vec2, tolerance: f3
 /// end of a one-way segment has one) when its centre is in front and closing in on the end.
 /// So:
 /// - moving with the normal (by more than [`ALONG_PLATFORM`]), only the ends count, and
-///   only while the centre is in front of the line (by more than `tolerance`) and still
-///   closing in: the distance at the closest approach, if the centre is in front by then
-///   and closes in by more than `tolerance` (less only grazes: the resolver slides the
-///   circle round the end, never stops it, as a move with the normal never meets an end
-///   head-on from the front);
+///   only while the centre is in front of the line (or behind it by half the `tolerance`)
+///   and still closing in: the distance at the closest approach, if it closes in by more
+///   than `tolerance` meanwhile (less only grazes: the resolver slides the circle round
+///   the end, never stops it, as a move with the normal never meets an end head-on from
+///   the front; a move straight through a platform's end point closes in by half the
+///   tolerance);
 /// - moving against it or along it, the part of the move in front of the line (or behind
 ///   it by at most `tolerance`) counts whole: its distance to the segment.
 ///
@@ -369,8 +370,8 @@ pub(crate) fn one_way_distance_squared(w: &OneWay, p: Vec2, q: Vec2, tolerance: 
     let mn = m.dot(n);
     if mn > ALONG_PLATFORM * len2.sqrt() {
         let mut least = f32::INFINITY;
-        // In front of the line (by the tolerance) from `front` on.
-        let front = ((tolerance - h0) / mn).max(0.0);
+        // In front of the line (or behind it by half the tolerance) from `front` on.
+        let front = ((-0.5 * tolerance - h0) / mn).max(0.0);
         for end in [w.segment.a, w.segment.b] {
             // Closing in on the end until `t`.
             let t = ((end - p).dot(m) / len2).min(1.0);

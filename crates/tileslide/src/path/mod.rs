@@ -65,6 +65,10 @@ const END_MARGIN: f32 = 0.25;
 /// End points at most this many cells apart are joined straight when the line is clear.
 const NEAR_CELLS: f32 = 4.0;
 
+/// Nodes each way of the wider block an end point joins the lattice through when it joins
+/// none of the 4 × 4 block around it (see [`NavGrid::attach`]): 4 cells.
+const WIDE_JOIN: i64 = 8;
+
 /// Radius classes a grid keeps moves and parts for (the least recently used goes first).
 const CACHED_CLASSES: usize = 8;
 
@@ -463,30 +467,48 @@ impl NavGrid {
     /// The nodes around `p` a circle of `radius` reaches from `p` in a straight line (or,
     /// for a goal, reaches `p` from), with the line's cost; empty if the circle does not
     /// fit at `p`.
+    ///
+    /// The nodes of the 4 × 4 block around `p`, or if it reaches none of those, of the
+    /// block [`WIDE_JOIN`] nodes each way: a circle just behind a one-way platform, near
+    /// its end, goes on through the platform only nearly straight along its normal (any
+    /// other line closes in on the end in front of it), where the nearest node may be a
+    /// few cells away.
     pub(crate) fn attach(&self, map: &TileMap, p: Vec2, radius: f32, end: End) -> Vec<Attach> {
         let lattice = &self.table.lattice;
         let Some(need) = self.end_clearance(map, p, radius) else {
             return Vec::new();
         };
         let base = lattice.local(p).floor();
+        let (bi, bj) = (base.x as i64, base.y as i64);
+        let near = |d: i64| (-1..=2).contains(&d);
         let mut out = Vec::new();
-        for dj in -1..=2 {
-            for di in -1..=2 {
-                let (i, j) = (base.x as i64 + di, base.y as i64 + dj);
-                if i < 0 || j < 0 || i >= i64::from(lattice.nx) || j >= i64::from(lattice.ny) {
-                    continue;
+        for span in [2, WIDE_JOIN] {
+            for dj in 1 - span..=span {
+                for di in 1 - span..=span {
+                    let (i, j) = (bi + di, bj + dj);
+                    if (span != 2 && near(di) && near(dj))
+                        || i < 0
+                        || j < 0
+                        || i >= i64::from(lattice.nx)
+                        || j >= i64::from(lattice.ny)
+                    {
+                        continue;
+                    }
+                    let q = lattice.position(i as u32, j as u32);
+                    let (a, b) = match end {
+                        End::Start => (p, q),
+                        End::Goal => (q, p),
+                    };
+                    if self.table.segment_clearance(map, a, b) >= need {
+                        out.push(Attach {
+                            node: lattice.index(i as u32, j as u32) as u32,
+                            cost: lattice.cost_of_length(p.distance(q)),
+                        });
+                    }
                 }
-                let q = lattice.position(i as u32, j as u32);
-                let (a, b) = match end {
-                    End::Start => (p, q),
-                    End::Goal => (q, p),
-                };
-                if self.table.segment_clearance(map, a, b) >= need {
-                    out.push(Attach {
-                        node: lattice.index(i as u32, j as u32) as u32,
-                        cost: lattice.cost_of_length(p.distance(q)),
-                    });
-                }
+            }
+            if !out.is_empty() {
+                break;
             }
         }
         out
