@@ -1,4 +1,4 @@
-//! Proves the navigation grid of issue 7 (`NavGrid`, `Path`, `FlowField`) against
+//! Proves the navigation grid (`NavGrid`, `Path`, `FlowField`) against
 //! references built without `tileslide::path` (see `path_support`):
 //!
 //! - the moves it opens and the points it connects equal a brute-force lattice whose
@@ -22,7 +22,7 @@ use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
     Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, NavConfig, NavError, NavGrid,
-    Path, RayFilter, TileMap, Vec2,
+    Path, RayFilter, SegmentFlags, TileMap, Vec2,
 };
 
 use path_support::any_angle::{InflatedScene, room_and_blocks};
@@ -364,7 +364,7 @@ const PILLARS: &str = "\
 #................#
 ##################";
 
-/// The longest a found path may be over the exact shortest (issue 7).
+/// The longest a found path may be over the exact shortest.
 const LENGTH_RATIO: f64 = 1.08;
 
 /// One query of [`lengths_against_any_angle`]: a found path and the lower bound of the
@@ -447,7 +447,7 @@ fn found_paths_are_never_shorter_than_the_exact_any_angle_shortest_path() {
     assert_eq!(checks.len(), 60);
 }
 
-/// Issue 7: "path length within 8 % of the exact any-angle shortest path on test maps".
+/// Found paths are within 8 % of the exact any-angle shortest path on the test maps.
 #[test]
 fn found_paths_are_within_8_percent_of_the_exact_any_angle_shortest_path() {
     let checks = lengths_against_any_angle(40, 7);
@@ -589,7 +589,7 @@ const CROWD: &str = "\
 #......................#
 ########################";
 
-/// Issue 7: 30 agents of radius 0.3 in a room with pillars steer by one flow field, are
+/// 30 agents of radius 0.3 in a room with pillars steer by one flow field, are
 /// moved 0.05 a step by `Bodies`, and leave through the goal (removed within 1.5 cells of
 /// it) within 2,500 steps; no two overlap and none touches a wall closer than its radius at
 /// any step.
@@ -763,9 +763,15 @@ fn a_body_touching_another_slides_round_it_when_moving_obliquely_into_it() {
 // 5. Updates equal a full recompute
 // ----------------------------------------------------------------------------------------
 
-/// A tile for an edit: `None` digs (`clear_tile`), `Some` fills.
+/// A tile for an edit: `None` digs (`clear_tile`), `Some` fills (one-way platforms too).
 fn edit_tile() -> impl Strategy<Value = Option<char>> {
-    prop_oneof![5 => Just(None), 4 => Just(Some('#')), 1 => Just(Some('/')), 1 => Just(Some('\\'))]
+    prop_oneof![
+        5 => Just(None),
+        4 => Just(Some('#')),
+        1 => Just(Some('/')),
+        1 => Just(Some('\\')),
+        2 => Just(Some('=')),
+    ]
 }
 
 const UPDATE_RADII: [f32; 4] = [0.2, 0.45, 0.8, 1.0];
@@ -812,9 +818,14 @@ proptest! {
                 if p.is_affected_by(&change) {
                     path = nav.find_path(&map, from, goal, r).unwrap();
                 } else {
+                    // Solid walls from both sides, one-way platforms from the front.
+                    let solid = both_faces().with_mask(SegmentFlags::SOLID);
+                    let one_way = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
                     for run in p.points().windows(2) {
+                        let (a, motion) = (run[0], run[1] - run[0]);
                         prop_assert!(
-                            map.cast_circle(run[0], r, run[1] - run[0], &both_faces()).is_none(),
+                            map.cast_circle(a, r, motion, &solid).is_none()
+                                && map.cast_circle(a, r, motion, &one_way).is_none(),
                             "editing {} blocked the run {} -> {} of a path it does not affect\n{}",
                             cell, run[0], run[1], random.text()
                         );
@@ -1029,7 +1040,16 @@ fn radii_that_are_not_positive_or_above_max_radius_are_refused() {
 #[test]
 fn max_radius_that_is_not_positive_finite_or_is_over_31_cells_is_refused() {
     let map = map(ROOM);
-    for max_radius in [f32::NAN, 0.0, -1.0, f32::INFINITY, 31.5] {
+    for max_radius in [
+        f32::NAN,
+        0.0,
+        -1.0,
+        f32::INFINITY,
+        31.5,
+        1e20,
+        f32::MAX,
+        -f32::MAX,
+    ] {
         let err = NavGrid::new(
             &map,
             NavConfig {

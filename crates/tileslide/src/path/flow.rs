@@ -9,10 +9,10 @@
 
 use glam::Vec2;
 
-use super::clearance::open_moves;
+use super::clearance::incoming_moves;
 use super::lattice::MOVES;
 use super::radix_heap::RadixHeap;
-use super::{NavChange, NavError, NavGrid};
+use super::{End, NavChange, NavError, NavGrid, check_point};
 use crate::tiles::TileMap;
 
 /// Distance of a node the goal cannot be reached from.
@@ -21,6 +21,15 @@ const UNREACHED: u32 = u32::MAX;
 const TO_GOAL: u8 = u8::MAX;
 /// How many next moves an agent looks ahead along its way.
 const LOOKAHEAD: usize = 8;
+
+/// How a point reaches the goal of a field.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Entry {
+    /// Through this node.
+    Node(u32),
+    /// Straight to the goal.
+    Straight,
+}
 
 /// Distances to one goal for circles of one radius (see the module docs).
 #[derive(Clone, Debug, PartialEq)]
@@ -40,12 +49,7 @@ impl FlowField {
     /// The field of `goal` for circles of `radius` on `map` (whose grid is `nav`). If the
     /// circle does not fit at the goal, no node reaches it.
     pub fn new(nav: &NavGrid, map: &TileMap, goal: Vec2, radius: f32) -> Result<Self, NavError> {
-        if !goal.is_finite() {
-            return Err(NavError::NonFinite {
-                what: "goal",
-                point: goal,
-            });
-        }
+        check_point("goal", goal)?;
         let need = nav.check(map, radius)?;
         let nodes = nav.table.lattice.len();
         let mut field = Self {
@@ -60,14 +64,16 @@ impl FlowField {
         Ok(field)
     }
 
-    /// Dijkstra from the nodes that join the goal straight.
+    /// Dijkstra from the nodes that join the goal straight, along the moves into each node
+    /// (one-way platforms make a move and its reverse differ: agents go from the node to
+    /// the goal, the search from the goal outwards).
     fn fill(&mut self, nav: &NavGrid, map: &TileMap) {
         let table = &nav.table;
         let lattice = &table.lattice;
         self.distance.fill(UNREACHED);
         self.next.fill(TO_GOAL);
         let mut open = RadixHeap::default();
-        for a in nav.attach(map, self.goal, self.radius) {
+        for a in nav.attach(map, self.goal, self.radius, End::Goal) {
             let n = a.node as usize;
             if a.cost < self.distance[n] {
                 self.distance[n] = a.cost;
@@ -80,11 +86,11 @@ impl FlowField {
                 continue;
             }
             let (i, j) = lattice.coords(n);
-            for (dir, m) in lattice.neighbours(n, open_moves(table, n, i, j, self.need)) {
+            for (dir, m) in lattice.neighbours(n, incoming_moves(table, n, i, j, self.need)) {
                 let nd = d.saturating_add(lattice.costs[dir]);
                 if nd < self.distance[m] {
                     self.distance[m] = nd;
-                    // From m, the way on is the opposite move.
+                    // From m, the way on is the opposite move, the one found open.
                     self.next[m] = ((dir + 4) % 8) as u8;
                     open.push(nd, m as u32);
                 }
@@ -104,18 +110,30 @@ impl FlowField {
         self.radius
     }
 
-    /// The best node `p` joins and the cost through it, if `p` reaches the goal.
-    fn entry(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Option<(u32, u32)> {
-        nav.attach(map, p, self.radius)
+    /// How `p` reaches the goal most cheaply, and the cost: through the best node it joins,
+    /// or straight to the goal when that is near, clear (as [`NavGrid::find_path`] joins
+    /// near ends) and cheaper. A point in front of a one-way platform, within its reach, may
+    /// go on straight to a goal there while every node it joins leads back round through
+    /// the platform.
+    fn entry(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Option<(u32, Entry)> {
+        let through = nav
+            .attach(map, p, self.radius, End::Start)
             .into_iter()
             .filter(|a| self.distance[a.node as usize] != UNREACHED)
             .map(|a| {
                 (
                     a.cost.saturating_add(self.distance[a.node as usize]),
-                    a.node,
+                    Entry::Node(a.node),
                 )
             })
-            .min()
+            .min();
+        let straight = nav.table.lattice.cost_of_length(p.distance(self.goal));
+        if through.is_some_and(|(cost, _)| cost <= straight)
+            || !nav.joins_straight(map, p, self.goal, self.radius)
+        {
+            return through;
+        }
+        Some((straight, Entry::Straight))
     }
 
     /// The length of the way from `p` to the goal along the field (map units), or `None`
@@ -137,8 +155,10 @@ impl FlowField {
         p: Vec2,
     ) -> Result<Option<Vec2>, NavError> {
         self.check(nav, map, p)?;
-        let Some((_, node)) = self.entry(nav, map, p) else {
-            return Ok(None);
+        let node = match self.entry(nav, map, p) {
+            Some((_, Entry::Node(node))) => node,
+            Some((_, Entry::Straight)) => return Ok((self.goal - p).try_normalize()),
+            None => return Ok(None),
         };
         let lattice = &nav.table.lattice;
         let Some(need) = nav.end_clearance(map, p, self.radius) else {
@@ -205,12 +225,7 @@ impl FlowField {
     }
 
     fn check(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Result<(), NavError> {
-        if !p.is_finite() {
-            return Err(NavError::NonFinite {
-                what: "p",
-                point: p,
-            });
-        }
+        check_point("p", p)?;
         nav.check(map, self.radius)?;
         if self.distance.len() != nav.table.lattice.len() {
             return Err(NavError::Stale);

@@ -6,6 +6,8 @@
 //! - [`NavGrid::find_path`] runs A* for a circle of radius `r` (8 directions; a diagonal
 //!   move is allowed only if the circle clears the corner) between any two points and
 //!   smooths the result into straight runs, each checked with the map's circle cast;
+//!   one-way platforms are directed edges: a path crosses one only from behind, moving the
+//!   way its normal points, as the resolver lets a body through;
 //! - [`FlowField`] holds, for one goal and one radius, every node's distance to the goal
 //!   and the way there, for crowds that share the goal;
 //! - [`NavGrid::update`] brings the grid up to date after a tile edit, recomputing only the
@@ -60,6 +62,13 @@ use search::{Attach, Search};
 /// [`NavGrid::end_clearance`]).
 const END_MARGIN: f32 = 0.25;
 
+/// End points at most this many cells apart are joined straight when the line is clear.
+const NEAR_CELLS: f32 = 4.0;
+
+/// Nodes each way of the wider block an end point joins the lattice through when it joins
+/// none of the 4 × 4 block around it (see [`NavGrid::attach`]): 4 cells.
+const WIDE_JOIN: i64 = 8;
+
 /// Radius classes a grid keeps moves and parts for (the least recently used goes first).
 const CACHED_CLASSES: usize = 8;
 
@@ -68,9 +77,9 @@ const CACHED_CLASSES: usize = 8;
 pub const NAV_MOVES: [(i32, i32); 8] = lattice::MOVES;
 
 /// Most lattice nodes a navigation grid takes (about a 4,096 × 4,096-cell map). A grid
-/// keeps about 22 bytes a node (clearances and search scratch), and 37 more for each radius
-/// class searched (moves, parts and landmark distances), so a 256 × 256 map takes about
-/// 6 MB, plus 10 MB a radius.
+/// keeps about 30 bytes a node (clearances each way and search scratch), and 37 more for
+/// each radius class searched (moves, parts and landmark distances), so a 256 × 256 map
+/// takes about 8 MB, plus 10 MB a radius.
 pub const MAX_NAV_NODES: usize = 1 << 26;
 
 /// How a [`NavGrid`] is built.
@@ -79,19 +88,31 @@ pub struct NavConfig {
     /// The widest circle the grid serves (map units). Clearances are measured up to this,
     /// so building costs more for larger values. At most 31 of the map's shorter cell side.
     pub max_radius: f32,
-    /// Segments with one of these flags block (from both sides: a path never relies on a
-    /// one-way platform letting it through).
+    /// Segments with one of these flags block. Those with the `ONE_WAY` flag block only
+    /// from their front, as the resolver's do: a path crosses a one-way platform only from
+    /// behind, moving the way its normal points (up through a floor platform, never down).
     pub mask: SegmentFlags,
 }
 
 impl Default for NavConfig {
-    /// Circles up to one cell (of a unit-cell map) wide; solid segments block.
+    /// Circles up to one cell (of a unit-cell map) wide; solid segments and one-way
+    /// platforms block.
     fn default() -> Self {
         Self {
             max_radius: 1.0,
-            mask: SegmentFlags::SOLID,
+            mask: SegmentFlags::SOLID | SegmentFlags::ONE_WAY,
         }
     }
+}
+
+/// Which end of a way a point is, so which way the line joining it to the lattice runs
+/// (one-way platforms let it through one way only).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum End {
+    /// The way starts here: lines run from the point to the lattice.
+    Start,
+    /// The way ends here: lines run from the lattice to the point.
+    Goal,
 }
 
 /// What a navigation call refuses.
@@ -115,6 +136,19 @@ pub enum NavError {
         /// Its lattice nodes.
         nodes: u64,
     },
+    /// The map reaches so far from (0, 0) that `f32` coordinates there are farther apart
+    /// than the grid's margin (1/1000 of a cell), so clearances cannot keep it.
+    #[error(
+        "the map reaches {corner}, where coordinates are {spacing} apart, more than the navigation grid's margin {margin} (1/1000 of a cell): move its origin nearer (0, 0)"
+    )]
+    TooFar {
+        /// The map's corner farthest from (0, 0).
+        corner: Vec2,
+        /// The spacing of `f32` values there (map units).
+        spacing: f32,
+        /// The grid's margin (map units).
+        margin: f32,
+    },
     /// A radius that is not positive and finite, or above the grid's `max_radius`.
     #[error(
         "radius {radius} must be positive, finite and at most the grid's max_radius {max_radius}"
@@ -133,6 +167,14 @@ pub enum NavError {
         /// Its value.
         point: Vec2,
     },
+    /// A point with a coordinate beyond [`MAX_COORD`](crate::MAX_COORD) in magnitude.
+    #[error("the {what} point {point} is beyond the ±{max} coordinate range (MAX_COORD)", max = crate::MAX_COORD)]
+    OutOfRange {
+        /// Which point (`from`, `to`, `goal`, …).
+        what: &'static str,
+        /// Its value.
+        point: Vec2,
+    },
     /// The map is not the one the grid was built for, or its tiles changed since without
     /// [`NavGrid::update`].
     #[error(
@@ -142,6 +184,18 @@ pub enum NavError {
     /// A cell outside the map.
     #[error("cell ({}, {}) is outside the map", .0.col, .0.row)]
     CellOutside(Cell),
+}
+
+/// Refuses a point that is not finite or lies beyond [`MAX_COORD`](crate::MAX_COORD):
+/// lattice coordinates of such a point overflow the integers nodes are counted in.
+pub(crate) fn check_point(what: &'static str, point: Vec2) -> Result<(), NavError> {
+    if !point.is_finite() {
+        Err(NavError::NonFinite { what, point })
+    } else if !crate::geometry::in_range(point) {
+        Err(NavError::OutOfRange { what, point })
+    } else {
+        Ok(())
+    }
 }
 
 /// Navigation data for one map: move clearances on a half-cell lattice and search scratch.
@@ -265,6 +319,23 @@ impl NavGrid {
                 limit,
             });
         }
+        // The corner farthest from (0, 0): float spacing grows with the magnitude.
+        let bounds = map.bounds();
+        let far = |a: f32, b: f32| if b.abs() >= a.abs() { b } else { a };
+        let corner = Vec2::new(
+            far(bounds.min.x, bounds.max.x),
+            far(bounds.min.y, bounds.max.y),
+        );
+        let largest = corner.abs().max_element();
+        let spacing = largest.next_up() - largest;
+        let margin = map.cell_size().min_element() * clearance::MARGIN_PER_CELL;
+        if spacing > margin {
+            return Err(NavError::TooFar {
+                corner,
+                spacing,
+                margin,
+            });
+        }
         let nodes = (2 * u64::from(map.width()) + 1) * (2 * u64::from(map.height()) + 1);
         if nodes > MAX_NAV_NODES as u64 {
             return Err(NavError::TooLarge {
@@ -380,28 +451,64 @@ impl NavGrid {
             .then(|| (radius + margin).min(own - margin * END_MARGIN * 0.5))
     }
 
-    /// The nodes around `p` a circle of `radius` reaches from `p` in a straight line, with
-    /// the line's cost; empty if the circle does not fit at `p`.
-    pub(crate) fn attach(&self, map: &TileMap, p: Vec2, radius: f32) -> Vec<Attach> {
+    /// True when `from` and `to` are near (at most [`NEAR_CELLS`] apart) and a circle of
+    /// `radius` goes from one to the other in a straight line, clear as both ends need.
+    pub(crate) fn joins_straight(&self, map: &TileMap, from: Vec2, to: Vec2, radius: f32) -> bool {
+        if from.distance(to) > NEAR_CELLS * map.cell_size().min_element() {
+            return false;
+        }
+        let ends = self
+            .end_clearance(map, from, radius)
+            .zip(self.end_clearance(map, to, radius))
+            .map(|(a, b)| a.min(b));
+        ends.is_some_and(|e| self.table.segment_clearance(map, from, to) >= e)
+    }
+
+    /// The nodes around `p` a circle of `radius` reaches from `p` in a straight line (or,
+    /// for a goal, reaches `p` from), with the line's cost; empty if the circle does not
+    /// fit at `p`.
+    ///
+    /// The nodes of the 4 × 4 block around `p`, or if it reaches none of those, of the
+    /// block [`WIDE_JOIN`] nodes each way: a circle just behind a one-way platform, near
+    /// its end, goes on through the platform only nearly straight along its normal (any
+    /// other line closes in on the end in front of it), where the nearest node may be a
+    /// few cells away.
+    pub(crate) fn attach(&self, map: &TileMap, p: Vec2, radius: f32, end: End) -> Vec<Attach> {
         let lattice = &self.table.lattice;
         let Some(need) = self.end_clearance(map, p, radius) else {
             return Vec::new();
         };
         let base = lattice.local(p).floor();
+        let (bi, bj) = (base.x as i64, base.y as i64);
+        let near = |d: i64| (-1..=2).contains(&d);
         let mut out = Vec::new();
-        for dj in -1..=2 {
-            for di in -1..=2 {
-                let (i, j) = (base.x as i64 + di, base.y as i64 + dj);
-                if i < 0 || j < 0 || i >= i64::from(lattice.nx) || j >= i64::from(lattice.ny) {
-                    continue;
+        for span in [2, WIDE_JOIN] {
+            for dj in 1 - span..=span {
+                for di in 1 - span..=span {
+                    let (i, j) = (bi + di, bj + dj);
+                    if (span != 2 && near(di) && near(dj))
+                        || i < 0
+                        || j < 0
+                        || i >= i64::from(lattice.nx)
+                        || j >= i64::from(lattice.ny)
+                    {
+                        continue;
+                    }
+                    let q = lattice.position(i as u32, j as u32);
+                    let (a, b) = match end {
+                        End::Start => (p, q),
+                        End::Goal => (q, p),
+                    };
+                    if self.table.segment_clearance(map, a, b) >= need {
+                        out.push(Attach {
+                            node: lattice.index(i as u32, j as u32) as u32,
+                            cost: lattice.cost_of_length(p.distance(q)),
+                        });
+                    }
                 }
-                let q = lattice.position(i as u32, j as u32);
-                if self.table.segment_clearance(map, p, q) >= need {
-                    out.push(Attach {
-                        node: lattice.index(i as u32, j as u32) as u32,
-                        cost: lattice.cost_of_length(p.distance(q)),
-                    });
-                }
+            }
+            if !out.is_empty() {
+                break;
             }
         }
         out
@@ -418,25 +525,16 @@ impl NavGrid {
         to: Vec2,
         radius: f32,
     ) -> Result<Option<Path>, NavError> {
-        for (what, point) in [("from", from), ("to", to)] {
-            if !point.is_finite() {
-                return Err(NavError::NonFinite { what, point });
-            }
-        }
+        check_point("from", from)?;
+        check_point("to", to)?;
         let need = self.check(map, radius)?;
-        let mask = self.table.mask;
-        let starts = self.attach(map, from, radius);
-        let goals = self.attach(map, to, radius);
+        let starts = self.attach(map, from, radius, End::Start);
+        let goals = self.attach(map, to, radius, End::Goal);
         if starts.is_empty() || goals.is_empty() {
             return Ok(None);
         }
         // Near ends joined straight: no search needed.
-        let cells = from.distance(to) / map.cell_size().min_element();
-        let ends = self
-            .end_clearance(map, from, radius)
-            .zip(self.end_clearance(map, to, radius))
-            .map(|(a, b)| a.min(b));
-        if cells <= 4.0 && ends.is_some_and(|e| self.table.segment_clearance(map, from, to) >= e) {
+        if self.joins_straight(map, from, to, radius) {
             return Ok(Some(Path::new(vec![from, to], radius, need)));
         }
         let k = self.class(need);
@@ -459,7 +557,7 @@ impl NavGrid {
         points.push(from);
         points.extend(nodes.iter().map(|&n| lattice.position_of(n as usize)));
         points.push(to);
-        let smoothed = smooth::smooth(map, &points, radius, mask);
+        let smoothed = smooth::smooth(map, &points, radius, &self.table);
         Ok(Some(Path::new(smoothed, radius, need)))
     }
 
@@ -522,12 +620,7 @@ impl NavGrid {
     /// grid's margin (2.5·10⁻⁴ of a cell), which takes in every place the resolver leaves
     /// a body of that radius (at least half its default gap, 5·10⁻⁴ of a cell, from walls).
     pub fn fits(&self, map: &TileMap, p: Vec2, radius: f32) -> Result<bool, NavError> {
-        if !p.is_finite() {
-            return Err(NavError::NonFinite {
-                what: "p",
-                point: p,
-            });
-        }
+        check_point("p", p)?;
         self.check(map, radius)?;
         Ok(self.end_clearance(map, p, radius).is_some())
     }

@@ -1,6 +1,13 @@
 //! What a navigation grid keeps per radius class (per clearance need): every node's open
 //! moves as one byte, and the connected parts of that graph.
 //!
+//! One-way platforms make the graph directed. Parts and landmark distances are those of
+//! its undirected closure (a move counts if it is open either way): a shorter way there
+//! is no longer than any way on the directed graph, so the parts still prove a goal
+//! unreachable when they differ and the landmark bounds stay admissible and consistent
+//! for the directed search. Where a platform makes a goal unreachable from one side only,
+//! A* finds out by exhausting what it can reach.
+//!
 //! The moves byte turns a search's eight clearance comparisons per node into one load. The
 //! parts answer "is the goal reachable at all?" before any search: A* proves a goal
 //! unreachable only by exhausting the start's whole part, which on a dungeon map is most
@@ -71,15 +78,32 @@ impl RadiusClass {
     /// Per node, an id shared exactly by the nodes connected to it; the landmarks; and the
     /// moves.
     pub fn parts(&mut self, lattice: &Lattice) -> (&[u32], &Landmarks, &[u8]) {
+        // Both are found on the undirected closure (see the module's notes).
+        let mut links: Option<Vec<u8>> = None;
         if !self.parts_current {
-            self.parts = label_parts(lattice, &self.moves);
+            let links = links.insert(undirected(lattice, &self.moves));
+            self.parts = label_parts(lattice, links);
             self.parts_current = true;
         }
-        let landmarks = self
-            .landmarks
-            .get_or_insert_with(|| Landmarks::build(lattice, &self.moves, &self.parts));
-        (&self.parts, landmarks, &self.moves)
+        let (moves, parts) = (&self.moves, &self.parts);
+        let landmarks = self.landmarks.get_or_insert_with(|| {
+            let links = links.unwrap_or_else(|| undirected(lattice, moves));
+            Landmarks::build(lattice, &links, parts)
+        });
+        (parts, landmarks, moves)
     }
+}
+
+/// The moves of the undirected closure of `moves`: bit `d` of a node when its move `d` or
+/// the reverse of it is open.
+fn undirected(lattice: &Lattice, moves: &[u8]) -> Vec<u8> {
+    let mut links = moves.to_vec();
+    for (n, &bits) in moves.iter().enumerate() {
+        for (d, m) in lattice.neighbours(n, bits) {
+            links[m] |= 1 << ((d + 4) % 8);
+        }
+    }
+    links
 }
 
 /// Breadth-first labelling of the graph's connected parts.

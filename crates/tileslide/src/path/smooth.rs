@@ -17,6 +17,7 @@
 
 use glam::Vec2;
 
+use super::clearance::Clearance;
 use crate::query::{Faces, RayFilter};
 use crate::tiles::{SegmentFlags, TileMap};
 
@@ -56,22 +57,30 @@ fn largest_clear(clear: impl Fn(f32) -> bool) -> f32 {
 }
 
 /// True when a circle of `radius` moves from `a` to `b` without touching any segment with
-/// one of `mask`'s flags, from either side.
-pub(crate) fn is_clear(map: &TileMap, a: Vec2, b: Vec2, radius: f32, mask: SegmentFlags) -> bool {
+/// one of the `table`'s mask flags from either side, and with the grid's margin clear of the
+/// front of every one-way platform it could run into going that way.
+///
+/// A one-way platform that carries another flag of the mask too is cast against as well, so
+/// it blocks both ways here: a smoothed run never crosses one, though lattice moves may.
+pub(crate) fn is_clear(map: &TileMap, a: Vec2, b: Vec2, radius: f32, table: &Clearance) -> bool {
+    if a == b {
+        return true;
+    }
     let filter = RayFilter {
         faces: Faces::Both,
         ..RayFilter::default()
     }
-    .with_mask(mask);
-    a == b || map.cast_circle(a, radius, b - a, &filter).is_none()
+    .with_mask(SegmentFlags(table.mask.0 & !SegmentFlags::ONE_WAY.0));
+    map.cast_circle(a, radius, b - a, &filter).is_none()
+        && (!table.has_one_way() || table.one_way_clearance(map, a, b) >= radius + table.margin)
 }
 
 /// The corners of `points` (a path whose every straight piece is clear): drops points in
 /// the middle of straight runs, pulls the path taut, then cuts its corners.
-pub(crate) fn smooth(map: &TileMap, points: &[Vec2], radius: f32, mask: SegmentFlags) -> Vec<Vec2> {
-    let pulled = pull_taut(map, &turning_points(points), radius, mask);
-    let mut cut = round_corners(map, &pulled, radius, mask);
-    relax(map, &mut cut, radius, mask);
+pub(crate) fn smooth(map: &TileMap, points: &[Vec2], radius: f32, table: &Clearance) -> Vec<Vec2> {
+    let pulled = pull_taut(map, &turning_points(points), radius, table);
+    let mut cut = round_corners(map, &pulled, radius, table);
+    relax(map, &mut cut, radius, table);
     cut
 }
 
@@ -83,7 +92,7 @@ pub(crate) fn smooth(map: &TileMap, points: &[Vec2], radius: f32, mask: SegmentF
 /// elastic band (Quinlan & Khatib 1993), with moves checked instead of forces balanced.
 /// It never lengthens the path: the length through a corner is convex in the corner's
 /// position and least on that line.
-fn relax(map: &TileMap, points: &mut [Vec2], radius: f32, mask: SegmentFlags) {
+fn relax(map: &TileMap, points: &mut [Vec2], radius: f32, table: &Clearance) {
     let reach = map.cell_size().min_element() * CUT_REACH;
     for i in 1..points.len().saturating_sub(1) {
         let (a, v, b) = (points[i - 1], points[i], points[i + 1]);
@@ -99,7 +108,7 @@ fn relax(map: &TileMap, points: &mut [Vec2], radius: f32, mask: SegmentFlags) {
         let at = |s: f32| v + (target - v) * s;
         let clear = |s: f32| {
             let p = at(s);
-            is_clear(map, a, p, radius, mask) && is_clear(map, p, b, radius, mask)
+            is_clear(map, a, p, radius, table) && is_clear(map, p, b, radius, table)
         };
         let lo = largest_clear(clear);
         if lo > 0.0 {
@@ -116,7 +125,7 @@ fn relax(map: &TileMap, points: &mut [Vec2], radius: f32, mask: SegmentFlags) {
 /// linear scan casts to every corner up to the first out of reach, so its casts add up
 /// to the square of the run's length on the lattice's staircases of short turns; this
 /// casts a logarithmic number of times, each run still checked by a cast.
-fn pull_taut(map: &TileMap, corners: &[Vec2], radius: f32, mask: SegmentFlags) -> Vec<Vec2> {
+fn pull_taut(map: &TileMap, corners: &[Vec2], radius: f32, table: &Clearance) -> Vec<Vec2> {
     let Some((&first, _)) = corners.split_first() else {
         return Vec::new();
     };
@@ -124,7 +133,7 @@ fn pull_taut(map: &TileMap, corners: &[Vec2], radius: f32, mask: SegmentFlags) -
     let mut out = vec![first];
     let mut anchor = 0;
     while anchor < last {
-        let reaches = |k: usize| is_clear(map, corners[anchor], corners[k], radius, mask);
+        let reaches = |k: usize| is_clear(map, corners[anchor], corners[k], radius, table);
         // `reached` is in reach (the next corner always is: it was a clear piece of the
         // path); `beyond` is not, or is past the end.
         let mut reached = anchor + 1;
@@ -157,7 +166,7 @@ fn pull_taut(map: &TileMap, corners: &[Vec2], radius: f32, mask: SegmentFlags) -
 
 /// `points` (a path whose every straight piece is clear) with every corner cut towards
 /// the walls it turns round (see the module's notes).
-fn round_corners(map: &TileMap, points: &[Vec2], radius: f32, mask: SegmentFlags) -> Vec<Vec2> {
+fn round_corners(map: &TileMap, points: &[Vec2], radius: f32, table: &Clearance) -> Vec<Vec2> {
     let Some((&first, rest)) = points.split_first() else {
         return Vec::new();
     };
@@ -167,7 +176,7 @@ fn round_corners(map: &TileMap, points: &[Vec2], radius: f32, mask: SegmentFlags
         let cutter = Cutter {
             map,
             radius,
-            mask,
+            table,
             cell: map.cell_size().min_element(),
         };
         cutter.cut(&mut out, pair[0], pair[1], CUT_DEPTH);
@@ -182,7 +191,7 @@ fn round_corners(map: &TileMap, points: &[Vec2], radius: f32, mask: SegmentFlags
 struct Cutter<'a> {
     map: &'a TileMap,
     radius: f32,
-    mask: SegmentFlags,
+    table: &'a Clearance,
     /// The map's shorter cell side.
     cell: f32,
 }
@@ -214,12 +223,12 @@ impl Cutter<'_> {
         let chord = |t: f32| (v + back * (t * t_max), v + ahead * (t * t_max));
         let clear = |t: f32| {
             let (p, q) = chord(t);
-            is_clear(self.map, p, q, self.radius, self.mask)
+            is_clear(self.map, p, q, self.radius, self.table)
         };
         // Whole runs: the corner goes. `next` is the following corner, so the path from
         // `prev` runs straight on to it, clear.
         if prev.distance(next) <= 2.0 * reach
-            && is_clear(self.map, prev, next, self.radius, self.mask)
+            && is_clear(self.map, prev, next, self.radius, self.table)
         {
             return;
         }
@@ -290,7 +299,7 @@ mod tests {
             path.points()
         );
         for w in path.points().windows(2) {
-            assert!(is_clear(&map, w[0], w[1], r, SegmentFlags::SOLID), "{w:?}");
+            assert!(is_clear(&map, w[0], w[1], r, &nav.table), "{w:?}");
         }
     }
 

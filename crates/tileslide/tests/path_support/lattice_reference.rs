@@ -1,4 +1,4 @@
-//! The navigation lattice of issue 7 built by brute force: a node every half cell (node
+//! The navigation lattice built by brute force: a node every half cell (node
 //! (i, j) at origin + (i, j) half cells, i in 0..=2W, j in 0..=2H), joined to its eight
 //! neighbours ([`NAV_MOVES`]); a move is open for a circle of radius r iff neither end is
 //! inside a solid tile and the straight move keeps at least r + margin from every wall of

@@ -2,7 +2,7 @@
 //! `tileslide::path`, from the map's own segments, in `f64`.
 //!
 //! - [`walls`]: every blocking segment of a map and exact distances to it;
-//! - [`lattice_reference`]: the half-cell lattice graph of issue 7 by brute force;
+//! - [`lattice_reference`]: the half-cell lattice graph by brute force;
 //! - [`any_angle`]: a lower bound of the exact any-angle shortest path of a disc among
 //!   rectangular obstacles (visibility graph of inscribed polygons);
 //! - [`split_mix`]: a seeded random source for picking query points.

@@ -1,6 +1,6 @@
 //! Every blocking segment of a map, and exact (`f64`) distances from points and straight
-//! moves to them: what "clear of the walls" means in issue 7, computed by brute force over
-//! the whole map instead of the cells near the query.
+//! moves to them: what "clear of the walls" means for the navigation grid, computed by
+//! brute force over the whole map instead of the cells near the query.
 
 use glam::DVec2;
 use tileslide::{Cell, SegmentFlags, TileMap, Vec2};
