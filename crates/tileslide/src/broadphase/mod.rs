@@ -59,7 +59,10 @@ impl PairFinder {
     ///
     /// The order of the pairs is unspecified but deterministic: the same calls with the
     /// same boxes give the same pairs in the same order. A box with a NaN coordinate
-    /// overlaps nothing.
+    /// overlaps nothing. Every finite box is paired exactly, however large or far (up to
+    /// `±f32::MAX`: the boxes are only compared, and the grid's and bands' sizes are
+    /// computed so that no overflow can lose a pair), and a few boxes far from the others
+    /// cost no more than near ones.
     pub fn find(&mut self, kind: Broadphase, boxes: &[Aabb], pairs: &mut Vec<(u32, u32)>) {
         match kind {
             Broadphase::UniformGrid => self.grid.find(boxes, pairs),
