@@ -289,6 +289,39 @@ mod tests {
         }
     }
 
+    proptest! {
+        /// Boxes anywhere in `f32`'s finite range, most of them near each other and some far
+        /// (where sums of coordinates overflow): the pairs are still exactly the all-pairs
+        /// ones, and the sweep's sort keeps its buckets in proportion to the boxes.
+        #[test]
+        fn boxes_of_any_finite_coordinates_match_all_pairs(
+            boxes in prop::collection::vec(
+                (
+                    prop_oneof![4 => Just(1.0f32), 1 => Just(crate::MAX_COORD), 1 => Just(1e30f32), 1 => Just(f32::MAX)],
+                    -1.0f32..1.0,
+                    -1.0f32..1.0,
+                    0.0f32..0.5,
+                    0.0f32..0.5,
+                ),
+                0..40,
+            ),
+        ) {
+            let boxes: Vec<Aabb> = boxes
+                .into_iter()
+                .map(|(scale, x, y, w, h)| {
+                    let min = Vec2::new(x, y) * scale;
+                    Aabb::from_corners(min, min + Vec2::new(w, h) * scale)
+                })
+                .collect();
+            let expected = brute(&boxes);
+            for kind in KINDS {
+                let mut finder = PairFinder::default();
+                prop_assert_eq!(found(&mut finder, kind, &boxes), expected.clone(), "{:?}", kind);
+                prop_assert!(finder.sweep.buckets() <= 3 * (4 * boxes.len() + 257) + 1);
+            }
+        }
+    }
+
     #[test]
     fn sweep_and_prune_reuses_its_order_when_boxes_move() {
         let mut finder = PairFinder::default();
