@@ -128,8 +128,12 @@ pub fn run(
         r.record(&bodies, &crowd)?;
     }
     for step in 1..=steps {
-        for &(h, v) in &crowd {
-            bodies.propose(h, v)?;
+        for (i, &(h, v)) in crowd.iter().enumerate() {
+            // A constant move carries a body out of the coordinate range in the end: the
+            // library refuses the move, naming where it would end.
+            bodies
+                .propose(h, v)
+                .with_context(|| format!("{}: bodies[{i}] at step {step}", scene_path.display()))?;
         }
         let start = Instant::now();
         bodies.step(&map);

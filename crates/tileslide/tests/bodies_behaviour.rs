@@ -175,7 +175,8 @@ fn exact_time_of_impact_never_tunnels_where_bisection_does() {
         let mut bodies = Bodies::with_config(ResolveConfig {
             toi,
             ..ResolveConfig::default()
-        });
+        })
+        .unwrap();
         let h = circle(&mut bodies, v(2.0, 1.5), 0.3);
         push(&mut bodies, &m, h, v(4.0, 0.0), 1)
     };
@@ -189,7 +190,8 @@ fn exact_time_of_impact_never_tunnels_where_bisection_does() {
             toi,
             slide: SlideMode::Stop,
             ..ResolveConfig::default()
-        });
+        })
+        .unwrap();
         let h = circle(&mut bodies, v(2.0, 1.5), 0.3);
         push(&mut bodies, &m, h, v(1.8, 0.0), 1)
     };
@@ -236,4 +238,149 @@ fn stale_handles_and_bad_numbers_are_errors() {
     ));
     assert_eq!(BodyShape::compound([]), Err(BodyError::EmptyShape));
     assert_eq!(bodies.len(), 1);
+}
+
+#[test]
+fn positions_and_move_end_points_past_max_coord_are_refused() {
+    use tileslide::MAX_COORD;
+    let mut bodies = Bodies::new();
+    let shape = BodyShape::circle(0.3).unwrap();
+    let refused = |what: &'static str, value: Vec2| Err(BodyError::OutOfRange { what, value });
+    let far = v(5.0, 1e20);
+    assert_eq!(
+        bodies.add(BodyDesc::new(far, shape.clone())),
+        refused("position", far).map(|()| unreachable!())
+    );
+    let edge = v(-MAX_COORD, MAX_COORD);
+    let h = bodies.add(BodyDesc::new(edge, shape.clone())).unwrap();
+    // A move to the opposite corner is the longest accepted.
+    bodies
+        .propose(h, v(2.0 * MAX_COORD, -2.0 * MAX_COORD))
+        .unwrap();
+    // 3e38 is finite: its end point is refused, and the move stays as it was.
+    assert_eq!(
+        bodies.propose(h, v(3e38, 0.0)),
+        refused("move's end point", v(3e38, MAX_COORD))
+    );
+    assert_eq!(
+        bodies.get(h).unwrap().proposed_move(),
+        v(2.0 * MAX_COORD, -2.0 * MAX_COORD)
+    );
+    // A teleport from which the proposed move would end out of range is refused too.
+    assert_eq!(
+        bodies.set_position(h, v(1.0, -1.0)),
+        refused(
+            "move's end point",
+            v(1.0 + 2.0 * MAX_COORD, -1.0 - 2.0 * MAX_COORD)
+        )
+    );
+    assert_eq!(bodies.get(h).unwrap().position(), edge);
+    let message = bodies.propose(h, v(0.0, 1e20)).unwrap_err().to_string();
+    assert!(
+        message.contains("out of range") && message.contains("16777216"),
+        "{message}"
+    );
+}
+
+#[test]
+fn radii_offsets_and_settings_out_of_range_are_refused() {
+    use tileslide::MAX_COORD;
+    assert!(BodyShape::circle(MAX_COORD).is_ok());
+    for radius in [
+        f32::MAX,
+        MAX_COORD * 1.0001,
+        f32::INFINITY,
+        f32::NAN,
+        0.0,
+        -1.0,
+    ] {
+        assert!(
+            matches!(
+                BodyShape::circle(radius),
+                Err(BodyError::InvalidRadius { index: 0, .. })
+            ),
+            "radius {radius}"
+        );
+    }
+    let offset = [Circle::new(v(0.0, 0.0), 0.5), Circle::new(v(2e7, 0.0), 0.5)];
+    assert!(matches!(
+        BodyShape::compound(offset),
+        Err(BodyError::InvalidOffset { index: 1, .. })
+    ));
+    let default = ResolveConfig::default();
+    for gap in [
+        f32::NAN,
+        f32::INFINITY,
+        2.4e24,
+        -1e-3,
+        ResolveConfig::MAX_GAP * 1.01,
+    ] {
+        let config = ResolveConfig { gap, ..default };
+        assert!(
+            matches!(
+                Bodies::with_config(config),
+                Err(BodyError::BadConfig { field: "gap", .. })
+            ),
+            "gap {gap}"
+        );
+    }
+    for gap in [0.0, ResolveConfig::MAX_GAP] {
+        Bodies::with_config(ResolveConfig { gap, ..default }).unwrap();
+    }
+    let mut bodies = Bodies::new();
+    let slow = ResolveConfig {
+        passes: ResolveConfig::MAX_PASSES + 1,
+        ..default
+    };
+    assert!(matches!(
+        bodies.set_config(slow),
+        Err(BodyError::BadConfig {
+            field: "passes",
+            ..
+        })
+    ));
+    let bisection = TimeOfImpact::Bisection {
+        halvings: ResolveConfig::MAX_HALVINGS + 1,
+    };
+    let slow = ResolveConfig {
+        toi: bisection,
+        ..default
+    };
+    assert!(matches!(
+        bodies.set_config(slow),
+        Err(BodyError::BadConfig {
+            field: "halvings",
+            ..
+        })
+    ));
+    assert_eq!(bodies.config(), &default);
+}
+
+#[test]
+fn a_slide_that_would_end_past_max_coord_stops_at_the_contact() {
+    use tileslide::{MAX_COORD, Owner, Segment, TemporarySegment};
+    let mut m = map(HALL);
+    // A floor along the edge of the range, at y = 1 (y down: the floor faces −y).
+    let floor = TemporarySegment {
+        segment: Segment::new(v(MAX_COORD - 128.0, 1.0), v(MAX_COORD, 1.0)),
+        normal: v(0.0, -1.0),
+        flags: SegmentFlags::SOLID,
+        owner: Owner(1),
+        velocity: Vec2::ZERO,
+    };
+    m.add_temporary(floor).unwrap();
+    // Coarse numbers: at 2²⁴ an f32 has no fractions left.
+    let mut bodies = Bodies::new();
+    let h = circle(&mut bodies, v(MAX_COORD - 40.0, -20.0), 4.0);
+    // Into the floor at 45°, ending inside the range: it meets the floor 17 along, and the
+    // remainder (25.5 long), turned along the floor, would end past MAX_COORD.
+    let end = push(&mut bodies, &m, h, v(35.0, 35.0), 1);
+    assert!(end.x <= MAX_COORD - 22.0, "{end}");
+    assert!(end.y <= -3.0 && end.y > -3.5, "{end}");
+    // Away from the edge, the same slide is taken.
+    let mut free = Bodies::new();
+    let g = circle(&mut free, v(MAX_COORD - 100.0, -20.0), 4.0);
+    let slid = push(&mut free, &m, g, v(35.0, 35.0), 1);
+    assert!(slid.x >= MAX_COORD - 60.0, "{slid}");
+    assert!(slid.y <= -3.0 && slid.y > -3.5, "{slid}");
 }

@@ -20,8 +20,8 @@ use std::sync::Arc;
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Bodies, BodyDesc, BodyFilter, BodyHandle, BodyShape, Broadphase, Cell, Circle, Owner,
-    ResolveConfig, Segment, SegmentFlags, SlideMode, TemporarySegment, TileMap, Vec2,
+    Bodies, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Broadphase, Cell, Circle,
+    Owner, ResolveConfig, Segment, SegmentFlags, SlideMode, TemporarySegment, TileMap, Vec2,
 };
 
 /// Largest overlap allowed after a step, in cells (the skin).
@@ -264,7 +264,7 @@ fn run(
     ) -> Result<(), TestCaseError>,
 ) -> Result<Vec<Vec2>, TestCaseError> {
     let (mut bodies, placed) = place(map, proposals);
-    bodies.set_config(config);
+    bodies.set_config(config).unwrap();
     for step in 0..steps {
         let before = positions(&bodies, &placed);
         for (h, p) in &placed {
@@ -337,6 +337,156 @@ enum Event {
     NoIntegrate,
     /// Fewer passes.
     Config,
+    /// A body's move this step ends at a point of the `MAX_COORD` square (fractions from
+    /// one corner to the other).
+    Fling(f32, f32, f32),
+    /// A body jumps to a point of the `MAX_COORD` square.
+    Far(f32, f32, f32),
+    /// A body of radius `MAX_COORD` times a fraction joins, in the map, pushing right.
+    Giant(f32, f32, f32),
+    /// A call with a value beyond the limits, which must be refused (which call, and the
+    /// body).
+    Absurd(u8, f32),
+    /// The gap becomes this fraction of the largest.
+    Gap(f32),
+    /// The temporary segments are cleared and a wall is submitted near a point of the
+    /// `MAX_COORD` square, where `Far` and `Fling` send bodies.
+    FarWall(f32, f32),
+}
+
+/// Ends of a fraction's range, as likely as the values between.
+fn fraction() -> impl Strategy<Value = f32> {
+    prop_oneof![Just(0.0f32), Just(1.0f32), 0.0f32..1.0]
+}
+
+/// Events at the limits of what is accepted, and beyond (see
+/// `memory_never_changes_a_result_at_the_limits`).
+fn extreme_events() -> impl Strategy<Value = Vec<Event>> {
+    let unit = || 0.0f32..1.0;
+    let one = prop_oneof![
+        6 => Just(Event::Nothing),
+        1 => (unit(), unit(), unit()).prop_map(|(k, x, y)| Event::Teleport(k, x, y)),
+        3 => (unit(), fraction(), fraction()).prop_map(|(k, x, y)| Event::Fling(k, x, y)),
+        2 => (unit(), fraction(), fraction()).prop_map(|(k, x, y)| Event::Far(k, x, y)),
+        1 => (unit(), unit(), fraction()).prop_map(|(x, y, r)| Event::Giant(x, y, r)),
+        3 => (0u8..ABSURD_CALLS, unit()).prop_map(|(which, k)| Event::Absurd(which, k)),
+        1 => fraction().prop_map(Event::Gap),
+        2 => (fraction(), fraction()).prop_map(|(x, y)| Event::FarWall(x, y)),
+        1 => (unit(), unit(), any::<bool>()).prop_map(|(x, y, s)| Event::Edit(x, y, s)),
+        1 => Just(Event::NoIntegrate),
+    ];
+    prop::collection::vec(one, JAM_STEPS)
+}
+
+/// How many kinds of refused call `Event::Absurd` makes.
+const ABSURD_CALLS: u8 = 8;
+
+/// A point of the `MAX_COORD` square, from fractions of its side.
+fn in_square(x: f32, y: f32) -> Vec2 {
+    (Vec2::new(x, y) * 2.0 - Vec2::ONE) * tileslide::MAX_COORD
+}
+
+/// Whether an error is the one expected.
+type ErrorCheck = Box<dyn Fn(&BodyError) -> bool>;
+
+/// Makes refused call `which` on `handle`'s body; checks that it is refused with the right
+/// error and that the body and the settings are as they were.
+fn absurd_call(bodies: &mut Bodies, handle: BodyHandle, which: u8) -> Result<(), TestCaseError> {
+    use tileslide::MAX_COORD;
+    let before = bodies.get(handle).unwrap().clone();
+    let config = *bodies.config();
+    let far = |what: &'static str| move |e: &BodyError| matches!(e, BodyError::OutOfRange { what: w, .. } if *w == what);
+    let end = "move's end point";
+    let (result, expected): (Result<(), BodyError>, ErrorCheck) = match which {
+        0 => (
+            bodies.propose(handle, Vec2::new(1e20, 0.0)),
+            Box::new(far(end)),
+        ),
+        1 => (
+            bodies.propose(handle, Vec2::new(0.0, -3e38)),
+            Box::new(far(end)),
+        ),
+        2 => {
+            let beyond = Vec2::new(2.0 * MAX_COORD, -2.0 * MAX_COORD) - before.position();
+            (bodies.propose(handle, beyond), Box::new(far(end)))
+        }
+        3 => (
+            bodies.propose(handle, Vec2::new(f32::NAN, 0.0)),
+            Box::new(|e: &BodyError| matches!(e, BodyError::NonFinite { .. })),
+        ),
+        4 => (
+            bodies.set_position(handle, Vec2::new(5.0, 1e20)),
+            Box::new(far("position")),
+        ),
+        5 => (
+            bodies.set_position(handle, Vec2::new(-MAX_COORD * 1.0001, 0.0)),
+            Box::new(far("position")),
+        ),
+        6 => {
+            let radius = [f32::MAX, MAX_COORD * 1.0001, f32::INFINITY, f32::NAN];
+            for r in radius {
+                let shape = BodyShape::circle(r);
+                prop_assert!(
+                    matches!(shape, Err(BodyError::InvalidRadius { .. })),
+                    "radius {} accepted",
+                    r
+                );
+            }
+            let offset = Circle::new(Vec2::new(0.0, 3e38), 0.5);
+            (
+                BodyShape::compound([offset]).map(|_| ()),
+                Box::new(|e: &BodyError| matches!(e, BodyError::InvalidOffset { .. })),
+            )
+        }
+        _ => {
+            for gap in [
+                f32::INFINITY,
+                f32::NAN,
+                2.4e24,
+                -1e-3,
+                ResolveConfig::MAX_GAP * 1.01,
+            ] {
+                let refused = bodies.set_config(ResolveConfig { gap, ..config });
+                prop_assert!(
+                    matches!(refused, Err(BodyError::BadConfig { field: "gap", .. })),
+                    "gap {} accepted",
+                    gap
+                );
+            }
+            (
+                bodies.set_config(ResolveConfig {
+                    passes: u32::MAX,
+                    ..config
+                }),
+                Box::new(|e: &BodyError| {
+                    matches!(
+                        e,
+                        BodyError::BadConfig {
+                            field: "passes",
+                            ..
+                        }
+                    )
+                }),
+            )
+        }
+    };
+    match result {
+        Err(e) => prop_assert!(expected(&e), "call {}: wrong error {:?}", which, e),
+        Ok(()) => prop_assert!(false, "call {} was accepted", which),
+    }
+    prop_assert_eq!(
+        bodies.get(handle).unwrap(),
+        &before,
+        "call {} changed the body",
+        which
+    );
+    prop_assert_eq!(
+        bodies.config(),
+        &config,
+        "call {} changed the settings",
+        which
+    );
+    Ok(())
 }
 
 fn events() -> impl Strategy<Value = Vec<Event>> {
@@ -443,86 +593,192 @@ proptest! {
         events in events(),
         sap in any::<bool>(),
     ) {
-        let mut map = build_map(w, h, &chars);
-        let (mut bodies, placed) = place(&map, &proposals);
-        let mut config = ResolveConfig {
-            broadphase: if sap { Broadphase::SweepAndPrune } else { Broadphase::UniformGrid },
-            ..ResolveConfig::default()
-        };
-        bodies.set_config(config);
-        let mut live: Vec<(BodyHandle, Vec2)> =
-            placed.iter().map(|(h, p)| (*h, p.moves[0])).collect();
-        let moves = |b: &Bodies| {
-            b.iter()
-                .map(|(_, b)| (b.resolved_move().x.to_bits(), b.resolved_move().y.to_bits()))
-                .collect::<Vec<_>>()
-        };
-        for (step, event) in events.iter().enumerate() {
-            let mut paused = None;
-            let mut integrate = true;
-            match *event {
-                Event::Nothing => {}
-                Event::Teleport(k, x, y) if !live.is_empty() => {
-                    let to = Vec2::new(x * w as f32, y * h as f32);
-                    bodies.set_position(live[pick(k, live.len())].0, to).unwrap();
-                }
-                Event::Edit(x, y, solid) => {
-                    let cell = Cell::new(pick(x, w as usize) as u32, pick(y, h as usize) as u32);
-                    let id = ascii::tile_for_char(if solid { '#' } else { '.' }).unwrap();
-                    map.set_tile(cell, id).unwrap();
-                }
-                Event::Platform(x, y, solid) => {
-                    map.clear_temporaries();
-                    let a = Vec2::new(x * w as f32, y * h as f32);
-                    map.add_temporary(TemporarySegment {
-                        segment: Segment::new(a, a + Vec2::new(1.5, 0.25)),
-                        normal: Vec2::new(-0.25, 1.5),
-                        flags: if solid { SegmentFlags::SOLID } else { SegmentFlags::ONE_WAY },
-                        owner: Owner(1),
-                        velocity: Vec2::ZERO,
-                    })
+        same_as_without_memory(w, h, &chars, &proposals, &events, sap)?;
+    }
+
+    /// The same model test at the limits of what is accepted, with the refused calls in
+    /// between: moves to the far corners of the `MAX_COORD` square (a body crossing the
+    /// whole map and beyond in one step), teleports far away and back, bodies of radius up
+    /// to `MAX_COORD`, the largest and smallest gaps; and moves, positions, radii and gaps
+    /// beyond the limits (1e20, 3e38, NaN, infinity), each of which must be refused and
+    /// leave everything as it was. The memory of absurd steps must not change a later
+    /// result (a body flung through a floor once used to leave wall lists behind that let
+    /// every later body through).
+    #[test]
+    fn memory_never_changes_a_result_at_the_limits(
+        (w, h, chars) in map_strategy(true),
+        proposals in proposals(1, 0.7),
+        events in extreme_events(),
+        sap in any::<bool>(),
+    ) {
+        same_as_without_memory(w, h, &chars, &proposals, &events, sap)?;
+    }
+}
+
+/// The memory model test: runs `events` between the steps of a crowd with constant moves,
+/// and checks every step's resolved moves and report against a fresh resolver's.
+fn same_as_without_memory(
+    w: u32,
+    h: u32,
+    chars: &[char],
+    proposals: &[Proposal],
+    events: &[Event],
+    sap: bool,
+) -> Result<(), TestCaseError> {
+    let mut map = build_map(w, h, chars);
+    let (mut bodies, placed) = place(&map, proposals);
+    let mut config = ResolveConfig {
+        broadphase: if sap {
+            Broadphase::SweepAndPrune
+        } else {
+            Broadphase::UniformGrid
+        },
+        ..ResolveConfig::default()
+    };
+    bodies.set_config(config).unwrap();
+    let mut live: Vec<(BodyHandle, Vec2)> = placed.iter().map(|(h, p)| (*h, p.moves[0])).collect();
+    let moves = |b: &Bodies| {
+        b.iter()
+            .map(|(_, b)| (b.resolved_move().x.to_bits(), b.resolved_move().y.to_bits()))
+            .collect::<Vec<_>>()
+    };
+    for (step, event) in events.iter().enumerate() {
+        let mut paused = None;
+        let mut flung = None;
+        let mut integrate = true;
+        match *event {
+            Event::Nothing => {}
+            Event::Teleport(k, x, y) if !live.is_empty() => {
+                let to = Vec2::new(x * w as f32, y * h as f32);
+                bodies
+                    .set_position(live[pick(k, live.len())].0, to)
                     .unwrap();
-                }
-                Event::Resubmit => {
-                    let again = map.temporaries().to_vec();
-                    map.clear_temporaries();
-                    for t in again {
-                        map.add_temporary(t).unwrap();
-                    }
-                }
-                Event::Remove(k) if !live.is_empty() => {
-                    let (handle, _) = live.remove(pick(k, live.len()));
-                    bodies.remove(handle).unwrap();
-                }
-                Event::Pause(k) if !live.is_empty() => paused = Some(pick(k, live.len())),
-                Event::Ghost(k) if !live.is_empty() => {
-                    let ghost = BodyFilter { groups: 2, collides_with: 2, ..BodyFilter::default() };
-                    bodies.set_filter(live[pick(k, live.len())].0, ghost).unwrap();
-                }
-                Event::NoIntegrate => integrate = false,
-                Event::Config => {
-                    config.passes = config.passes.saturating_sub(1).max(1);
-                    bodies.set_config(config);
-                }
-                _ => {}
             }
-            for (i, (handle, motion)) in live.iter().enumerate() {
-                let motion = if paused == Some(i) { Vec2::ZERO } else { *motion };
-                bodies.propose(*handle, motion).unwrap();
+            Event::Edit(x, y, solid) => {
+                let cell = Cell::new(pick(x, w as usize) as u32, pick(y, h as usize) as u32);
+                let id = ascii::tile_for_char(if solid { '#' } else { '.' }).unwrap();
+                map.set_tile(cell, id).unwrap();
             }
-            let mut fresh = Bodies::with_config(config);
-            for (_, b) in bodies.iter() {
-                let desc = BodyDesc::new(b.position(), b.shape().clone()).with_filter(b.filter());
-                let handle = fresh.add(desc).unwrap();
-                fresh.propose(handle, b.proposed_move()).unwrap();
+            Event::Platform(x, y, solid) => {
+                map.clear_temporaries();
+                let a = Vec2::new(x * w as f32, y * h as f32);
+                map.add_temporary(TemporarySegment {
+                    segment: Segment::new(a, a + Vec2::new(1.5, 0.25)),
+                    normal: Vec2::new(-0.25, 1.5),
+                    flags: if solid {
+                        SegmentFlags::SOLID
+                    } else {
+                        SegmentFlags::ONE_WAY
+                    },
+                    owner: Owner(1),
+                    velocity: Vec2::ZERO,
+                })
+                .unwrap();
             }
-            let expected = fresh.resolve(&map);
-            let got = bodies.resolve(&map);
-            prop_assert_eq!(got, expected, "step {}: report", step);
-            prop_assert_eq!(moves(&bodies), moves(&fresh), "step {}: resolved moves", step);
-            if integrate {
-                bodies.integrate();
+            Event::Resubmit => {
+                let again = map.temporaries().to_vec();
+                map.clear_temporaries();
+                for t in again {
+                    map.add_temporary(t).unwrap();
+                }
+            }
+            Event::Remove(k) if !live.is_empty() => {
+                let (handle, _) = live.remove(pick(k, live.len()));
+                bodies.remove(handle).unwrap();
+            }
+            Event::Pause(k) if !live.is_empty() => paused = Some(pick(k, live.len())),
+            Event::Ghost(k) if !live.is_empty() => {
+                let ghost = BodyFilter {
+                    groups: 2,
+                    collides_with: 2,
+                    ..BodyFilter::default()
+                };
+                bodies
+                    .set_filter(live[pick(k, live.len())].0, ghost)
+                    .unwrap();
+            }
+            Event::NoIntegrate => integrate = false,
+            Event::Config => {
+                config.passes = config.passes.saturating_sub(1).max(1);
+                bodies.set_config(config).unwrap();
+            }
+            Event::Fling(k, x, y) if !live.is_empty() => {
+                flung = Some((pick(k, live.len()), in_square(x, y)))
+            }
+            Event::Far(k, x, y) if !live.is_empty() => {
+                bodies
+                    .set_position(live[pick(k, live.len())].0, in_square(x, y))
+                    .unwrap();
+            }
+            Event::Giant(x, y, r) => {
+                let radius = (r * tileslide::MAX_COORD).max(0.5);
+                let at = Vec2::new(x * w as f32, y * h as f32);
+                let giant = BodyDesc::new(at, BodyShape::circle(radius).unwrap());
+                live.push((bodies.add(giant).unwrap(), Vec2::new(0.6, -0.1)));
+            }
+            Event::Absurd(which, k) if !live.is_empty() => {
+                absurd_call(&mut bodies, live[pick(k, live.len())].0, which)?;
+            }
+            Event::FarWall(x, y) => {
+                map.clear_temporaries();
+                // Two cells inward from the point, across the way bodies come from the map.
+                let p = in_square(x, y);
+                let a = p - p.signum() * 2.0;
+                map.add_temporary(TemporarySegment {
+                    segment: Segment::new(a - Vec2::new(3.0, -3.0), a + Vec2::new(3.0, -3.0)),
+                    normal: -p.signum(),
+                    flags: SegmentFlags::SOLID,
+                    owner: Owner(2),
+                    velocity: Vec2::ZERO,
+                })
+                .unwrap();
+            }
+            Event::Gap(g) => {
+                config.gap = g * ResolveConfig::MAX_GAP;
+                bodies.set_config(config).unwrap();
+            }
+            _ => {}
+        }
+        for (i, (handle, motion)) in live.iter().enumerate() {
+            let motion = if paused == Some(i) {
+                Vec2::ZERO
+            } else {
+                *motion
+            };
+            let position = bodies.get(*handle).unwrap().position();
+            let motion = match flung {
+                Some((f, to)) if f == i => to - position,
+                _ => motion,
+            };
+            if let Err(e) = bodies.propose(*handle, motion) {
+                // A move from far away can end beyond the square (its end point is refused,
+                // with the move unchanged): no move this step.
+                prop_assert!(
+                    !tileslide::MAX_COORD.ge(&(position + motion).abs().max_element()),
+                    "{}",
+                    e
+                );
+                bodies.propose(*handle, Vec2::ZERO).unwrap();
             }
         }
+        let mut fresh = Bodies::with_config(config).unwrap();
+        for (_, b) in bodies.iter() {
+            let desc = BodyDesc::new(b.position(), b.shape().clone()).with_filter(b.filter());
+            let handle = fresh.add(desc).unwrap();
+            fresh.propose(handle, b.proposed_move()).unwrap();
+        }
+        let expected = fresh.resolve(&map);
+        let got = bodies.resolve(&map);
+        prop_assert_eq!(got, expected, "step {}: report", step);
+        prop_assert_eq!(
+            moves(&bodies),
+            moves(&fresh),
+            "step {}: resolved moves",
+            step
+        );
+        if integrate {
+            bodies.integrate();
+        }
     }
+    Ok(())
 }

@@ -140,10 +140,12 @@ fn lone_body_slides(
     let start = contact + normal * (radius + band * gap());
     let motion = oblique(normal, into, left, length);
     let mut bodies = Bodies::new();
-    bodies.set_config(ResolveConfig {
-        slide,
-        ..ResolveConfig::default()
-    });
+    bodies
+        .set_config(ResolveConfig {
+            slide,
+            ..ResolveConfig::default()
+        })
+        .unwrap();
     let a = bodies
         .add(BodyDesc::new(start, BodyShape::circle(radius).unwrap()))
         .unwrap();
@@ -193,7 +195,7 @@ proptest! {
         let motion = oblique(normal, into, left, length);
 
         let mut bodies = Bodies::new();
-        bodies.set_config(ResolveConfig { slide, ..ResolveConfig::default() });
+        bodies.set_config(ResolveConfig { slide, ..ResolveConfig::default() }).unwrap();
         let mover_desc = BodyDesc::new(mover, BodyShape::circle(r_mover).unwrap());
         let still_desc = BodyDesc::new(still, BodyShape::circle(r_still).unwrap());
         let (a, b) = if mover_first {

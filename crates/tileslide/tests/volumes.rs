@@ -256,6 +256,90 @@ fn a_bullet_ten_times_its_size_per_frame_cannot_pass_through() {
     assert_eq!(hits(&mut world).len(), 1);
 }
 
+#[test]
+fn volumes_and_objects_beyond_max_coord_are_refused_and_take_no_part() {
+    use tileslide::{Aabb, Circle, MAX_COORD, VolumeError};
+    let far = |what: &'static str| move |e: VolumeError| matches!(e, VolumeError::OutOfRange { what: w, .. } if w == what);
+    assert!(Volume::circle(Vec2::new(1e20, 0.0), 1.0, HitTypes::HIT).is_err_and(far("center")));
+    assert!(Volume::circle(Vec2::ZERO, 3e38, HitTypes::HIT).is_err_and(far("radius")));
+    assert!(Volume::rect(Vec2::ZERO, Vec2::splat(3e38), HitTypes::HIT).is_err_and(far("max")));
+    assert!(
+        Volume::rect(
+            Vec2::splat(-MAX_COORD),
+            Vec2::splat(MAX_COORD),
+            HitTypes::HIT
+        )
+        .is_ok()
+    );
+    // Built from the public fields, the check still applies.
+    let huge = Volume {
+        shape: VolumeShape::Circle(Circle::new(Vec2::ZERO, f32::MAX)),
+        hit: HitTypes::HIT,
+    };
+    assert!(huge.check().is_err_and(far("radius")));
+    let inside_out = Volume {
+        shape: VolumeShape::Box(Aabb {
+            min: Vec2::ONE,
+            max: Vec2::ZERO,
+        }),
+        hit: HitTypes::HIT,
+    };
+    assert!(matches!(
+        inside_out.check(),
+        Err(VolumeError::InvertedBox { .. })
+    ));
+    // Objects: position, start of the frame's move, size.
+    let at = |x: f32| object(1, x, 0.0);
+    assert!(at(3e38).check().is_err_and(far("position")));
+    let flung = HitObject {
+        motion: Vec2::new(-3e38, 0.0),
+        ..at(0.0)
+    };
+    assert!(flung.check().is_err_and(far("start")));
+    let wide = HitObject {
+        size: Vec2::new(1e30, 1.0),
+        ..at(0.0)
+    };
+    assert!(wide.check().is_err_and(far("size")));
+    let nan = HitObject {
+        motion: Vec2::new(f32::NAN, 0.0),
+        ..at(0.0)
+    };
+    assert!(matches!(
+        nan.check(),
+        Err(VolumeError::NonFinite { what: "motion", .. })
+    ));
+    // At the edge of the range two overlapping boxes hit, whatever the broadphase (a move
+    // across the whole range included); at 3e38 (where a box's centre overflowed and the
+    // pair was missed) the objects are dropped.
+    for broadphase in [Broadphase::SweepAndPrune, Broadphase::UniformGrid] {
+        let mut world = HitWorld::with_broadphase(broadphase);
+        for (x, expected) in [(MAX_COORD - 1.0, 1), (3e38, 0)] {
+            world.begin_frame();
+            world.register(object(1, x, 0.0), &body(HitTypes::HIT), &[]);
+            world.register(object(2, x, 0.0), &[], &body(HitTypes::HIT));
+            assert_eq!(
+                hits(&mut world).len(),
+                expected,
+                "{broadphase:?} at x = {x}"
+            );
+        }
+        world.begin_frame();
+        let across = HitObject {
+            motion: Vec2::new(2.0 * MAX_COORD - 2.0, 0.0),
+            ..object(1, MAX_COORD - 1.0, 0.0)
+        };
+        world.register(across, &body(HitTypes::HIT), &[]);
+        world.register(object(2, 0.0, 0.0), &[], &body(HitTypes::HIT));
+        world.register(object(3, 0.0, 0.0), &[huge], &[]);
+        assert_eq!(
+            hits(&mut world),
+            [(0, 1, HitTypes::HIT, true)],
+            "{broadphase:?}"
+        );
+    }
+}
+
 // ---- Model test: both broadphases against an independent all-pairs reference. ----
 
 /// A volume placed in the world, for the reference.

@@ -4,7 +4,7 @@
 use glam::Vec2;
 
 use super::BodyError;
-use crate::geometry::Circle;
+use crate::geometry::{Circle, MAX_COORD, in_range};
 use crate::tiles::SegmentFlags;
 
 /// A body's shape: circles at fixed offsets from the body's position (a compound body, for
@@ -33,7 +33,8 @@ impl BodyShape {
     /// One circle of `radius`, centred on the body's position.
     ///
     /// # Errors
-    /// [`BodyError::InvalidRadius`] unless the radius is positive and finite.
+    /// [`BodyError::InvalidRadius`] unless the radius is positive and at most
+    /// [`MAX_COORD`].
     pub fn circle(radius: f32) -> Result<Self, BodyError> {
         Self::compound([Circle::new(Vec2::ZERO, radius)])
     }
@@ -42,21 +43,22 @@ impl BodyShape {
     ///
     /// # Errors
     /// [`BodyError::EmptyShape`] without circles, [`BodyError::InvalidRadius`] for a radius
-    /// that is not positive and finite, [`BodyError::InvalidOffset`] for a non-finite offset
-    /// (each naming the circle's index).
+    /// that is not positive and at most [`MAX_COORD`], [`BodyError::InvalidOffset`] for an
+    /// offset with a coordinate beyond it or not finite (each naming the circle's index).
     pub fn compound(circles: impl IntoIterator<Item = Circle>) -> Result<Self, BodyError> {
         let circles: Vec<Circle> = circles.into_iter().collect();
         if circles.is_empty() {
             return Err(BodyError::EmptyShape);
         }
         for (index, c) in circles.iter().enumerate() {
-            if !(c.radius > 0.0 && c.radius.is_finite()) {
+            // Written so that NaN fails.
+            if !(c.radius > 0.0 && c.radius <= MAX_COORD) {
                 return Err(BodyError::InvalidRadius {
                     index,
                     radius: c.radius,
                 });
             }
-            if !c.center.is_finite() {
+            if !in_range(c.center) {
                 return Err(BodyError::InvalidOffset {
                     index,
                     offset: c.center,

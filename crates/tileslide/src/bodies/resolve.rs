@@ -33,7 +33,7 @@ use super::near_walls::NearWalls;
 use super::neighbours::Neighbours;
 use super::set::Body;
 use super::settled::Settled;
-use crate::geometry::{Aabb, Circle, SweepHit, bisect, sweep_circle_circle};
+use crate::geometry::{Aabb, Circle, SweepHit, bisect, in_range, sweep_circle_circle};
 use crate::query::Capsule;
 use crate::tiles::TileMap;
 
@@ -125,7 +125,7 @@ impl Scratch {
         config: &ResolveConfig,
         map: &TileMap,
     ) -> ResolveReport {
-        let gap = config.gap.max(0.0) * map.cell_size().min_element();
+        let gap = config.gap * map.cell_size().min_element();
         self.load(bodies, gap);
         self.find_neighbours(config, map.cell_size().min_element());
         let change = self.watch.update(map);
@@ -283,6 +283,13 @@ impl Scratch {
             }
             let blocked = remaining * (1.0 - hit.t);
             remaining = slide(blocked, hit.normal, obstacle, b, config.slide);
+            // A slide that would end past MAX_COORD is not taken, so every body stays in
+            // range: a move ends within it (checked by `propose`), and every later position
+            // lies on a straight path between two points within it (the square is convex,
+            // and rounding is monotone).
+            if !in_range(self.position[bi] + remaining) {
+                remaining = Vec2::ZERO;
+            }
         }
     }
 

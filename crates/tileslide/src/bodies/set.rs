@@ -6,6 +6,7 @@ use thiserror::Error;
 use super::body::{BodyDesc, BodyFilter, BodyShape};
 use super::config::ResolveConfig;
 use super::resolve::{ResolveReport, Scratch};
+use crate::geometry::{MAX_COORD, in_range};
 use crate::tiles::TileMap;
 
 /// A body's handle. Handles are generational: once a body is removed its handle is stale
@@ -35,16 +36,23 @@ pub enum BodyError {
     /// A shape without circles.
     #[error("a body shape needs at least one circle")]
     EmptyShape,
-    /// A circle's radius is not positive and finite.
-    #[error("circle {index} of the body shape has radius {radius}: it must be positive and finite")]
+    /// A circle's radius is not positive, or beyond [`MAX_COORD`] (NaN and infinity
+    /// included).
+    #[error(
+        "circle {index} of the body shape has radius {radius}: it must be positive and at most {max}",
+        max = MAX_COORD
+    )]
     InvalidRadius {
         /// The circle's index in the shape.
         index: usize,
         /// Its radius.
         radius: f32,
     },
-    /// A circle's offset is not finite.
-    #[error("circle {index} of the body shape has a non-finite offset {offset}")]
+    /// A circle's offset has a coordinate beyond [`MAX_COORD`] (NaN and infinity included).
+    #[error(
+        "circle {index} of the body shape has offset {offset}: each coordinate must be at most {max} in magnitude",
+        max = MAX_COORD
+    )]
     InvalidOffset {
         /// The circle's index in the shape.
         index: usize,
@@ -58,6 +66,23 @@ pub enum BodyError {
         what: &'static str,
         /// The value given.
         value: Vec2,
+    },
+    /// A position, or the end point of a move (where the body would be after it), with a
+    /// finite coordinate beyond [`MAX_COORD`].
+    #[error("the {what} {value} is out of range: each coordinate must be at most {max} in magnitude", max = MAX_COORD)]
+    OutOfRange {
+        /// `"position"` or `"move's end point"`.
+        what: &'static str,
+        /// The value given (for a move, where it ends).
+        value: Vec2,
+    },
+    /// A [`ResolveConfig`] field out of its range (see the field's documentation).
+    #[error("resolve setting {field} = {value} is out of range")]
+    BadConfig {
+        /// The field's name.
+        field: &'static str,
+        /// The value given.
+        value: f32,
     },
     /// All `u32::MAX` slots are in use.
     #[error("too many bodies (at most {max})")]
@@ -163,12 +188,16 @@ impl Bodies {
     }
 
     /// No bodies, with `config`.
-    #[must_use]
-    pub fn with_config(config: ResolveConfig) -> Self {
-        Self {
+    ///
+    /// # Errors
+    /// [`BodyError::BadConfig`] naming the first field out of its range (see
+    /// [`ResolveConfig`]).
+    pub fn with_config(config: ResolveConfig) -> Result<Self, BodyError> {
+        config.check()?;
+        Ok(Self {
             config,
             ..Self::default()
-        }
+        })
     }
 
     /// The resolve settings.
@@ -178,17 +207,23 @@ impl Bodies {
     }
 
     /// Changes the resolve settings.
-    pub fn set_config(&mut self, config: ResolveConfig) {
+    ///
+    /// # Errors
+    /// [`BodyError::BadConfig`] naming the first field out of its range (see
+    /// [`ResolveConfig`]); the settings are then unchanged.
+    pub fn set_config(&mut self, config: ResolveConfig) -> Result<(), BodyError> {
+        config.check()?;
         self.config = config;
+        Ok(())
     }
 
     /// Adds a body; its proposed move is zero.
     ///
     /// # Errors
-    /// [`BodyError::NonFinite`] for a non-finite position, [`BodyError::TooMany`] when
-    /// every slot is taken.
+    /// [`BodyError::NonFinite`] for a non-finite position, [`BodyError::OutOfRange`] for
+    /// one beyond [`MAX_COORD`], [`BodyError::TooMany`] when every slot is taken.
     pub fn add(&mut self, desc: BodyDesc) -> Result<BodyHandle, BodyError> {
-        finite("position", desc.position)?;
+        check_position(desc.position)?;
         let body = Body {
             position: desc.position,
             shape: desc.shape,
@@ -300,11 +335,19 @@ impl Bodies {
     /// Sets the move `handle`'s body wants to make this step (zero: it stays, and others
     /// slide around it).
     ///
+    /// The move's end point (the body's position plus the move) must be within
+    /// [`MAX_COORD`], so no move is longer than `2√2 · MAX_COORD` and no arithmetic of the
+    /// resolve overflows. Bodies stay within `MAX_COORD` for good: `resolve` stops a body
+    /// rather than slide it past (see [`resolve`](Self::resolve)).
+    ///
     /// # Errors
-    /// [`BodyError::StaleHandle`], or [`BodyError::NonFinite`] for a NaN or infinite move.
+    /// [`BodyError::StaleHandle`], [`BodyError::NonFinite`] for a NaN or infinite move, or
+    /// [`BodyError::OutOfRange`] for a move whose end point is beyond [`MAX_COORD`]; the
+    /// body's move is then unchanged.
     pub fn propose(&mut self, handle: BodyHandle, motion: Vec2) -> Result<(), BodyError> {
         finite("move", motion)?;
         let body = self.get_mut(handle)?;
+        check_end(body.position, motion)?;
         body.proposed = motion;
         body.resolved = motion;
         Ok(())
@@ -313,10 +356,14 @@ impl Bodies {
     /// Moves a body without collision (a teleport); its proposed move is kept.
     ///
     /// # Errors
-    /// [`BodyError::StaleHandle`], or [`BodyError::NonFinite`] for a non-finite position.
+    /// [`BodyError::StaleHandle`], [`BodyError::NonFinite`] for a non-finite position, or
+    /// [`BodyError::OutOfRange`] for a position beyond [`MAX_COORD`] or one from which the
+    /// proposed move would end beyond it; the body is then where it was.
     pub fn set_position(&mut self, handle: BodyHandle, position: Vec2) -> Result<(), BodyError> {
-        finite("position", position)?;
-        self.get_mut(handle)?.position = position;
+        check_position(position)?;
+        let body = self.get_mut(handle)?;
+        check_end(position, body.proposed)?;
+        body.position = position;
         Ok(())
     }
 
@@ -351,6 +398,10 @@ impl Bodies {
     /// cleared and submitted again unchanged cost nothing. Adding or removing a body,
     /// changing a filter or the settings, or passing another map makes the next call resolve
     /// every moving body again.
+    ///
+    /// Every body stays within [`MAX_COORD`]: positions and the end points of proposed
+    /// moves are refused beyond it, and a slide that would end beyond it is not taken (the
+    /// body stops at the contact, as with [`SlideMode::Stop`](crate::SlideMode::Stop)).
     pub fn resolve(&mut self, map: &TileMap) -> ResolveReport {
         let config = self.config;
         let mut scratch = std::mem::take(&mut self.scratch);
@@ -383,4 +434,24 @@ fn finite(what: &'static str, value: Vec2) -> Result<(), BodyError> {
     } else {
         Err(BodyError::NonFinite { what, value })
     }
+}
+
+/// A body's position: finite and within [`MAX_COORD`].
+fn check_position(position: Vec2) -> Result<(), BodyError> {
+    finite("position", position)?;
+    in_range(position)
+        .then_some(())
+        .ok_or(BodyError::OutOfRange {
+            what: "position",
+            value: position,
+        })
+}
+
+/// Where a body at `position` ends after a (finite) `motion`: within [`MAX_COORD`].
+fn check_end(position: Vec2, motion: Vec2) -> Result<(), BodyError> {
+    let end = position + motion;
+    in_range(end).then_some(()).ok_or(BodyError::OutOfRange {
+        what: "move's end point",
+        value: end,
+    })
 }

@@ -59,7 +59,10 @@ impl PairFinder {
     ///
     /// The order of the pairs is unspecified but deterministic: the same calls with the
     /// same boxes give the same pairs in the same order. A box with a NaN coordinate
-    /// overlaps nothing.
+    /// overlaps nothing. Every finite box is paired exactly, however large or far (up to
+    /// `±f32::MAX`: the boxes are only compared, and the grid's and bands' sizes are
+    /// computed so that no overflow can lose a pair), and a few boxes far from the others
+    /// cost no more than near ones.
     pub fn find(&mut self, kind: Broadphase, boxes: &[Aabb], pairs: &mut Vec<(u32, u32)>) {
         match kind {
             Broadphase::UniformGrid => self.grid.find(boxes, pairs),
@@ -282,6 +285,39 @@ mod tests {
                 for (finder, kind) in finders.iter_mut().zip(KINDS) {
                     prop_assert_eq!(found(finder, kind, &boxes), expected.clone(), "{:?}", kind);
                 }
+            }
+        }
+    }
+
+    proptest! {
+        /// Boxes anywhere in `f32`'s finite range, most of them near each other and some far
+        /// (where sums of coordinates overflow): the pairs are still exactly the all-pairs
+        /// ones, and the sweep's sort keeps its buckets in proportion to the boxes.
+        #[test]
+        fn boxes_of_any_finite_coordinates_match_all_pairs(
+            boxes in prop::collection::vec(
+                (
+                    prop_oneof![4 => Just(1.0f32), 1 => Just(crate::MAX_COORD), 1 => Just(1e30f32), 1 => Just(f32::MAX)],
+                    -1.0f32..1.0,
+                    -1.0f32..1.0,
+                    0.0f32..0.5,
+                    0.0f32..0.5,
+                ),
+                0..40,
+            ),
+        ) {
+            let boxes: Vec<Aabb> = boxes
+                .into_iter()
+                .map(|(scale, x, y, w, h)| {
+                    let min = Vec2::new(x, y) * scale;
+                    Aabb::from_corners(min, min + Vec2::new(w, h) * scale)
+                })
+                .collect();
+            let expected = brute(&boxes);
+            for kind in KINDS {
+                let mut finder = PairFinder::default();
+                prop_assert_eq!(found(&mut finder, kind, &boxes), expected.clone(), "{:?}", kind);
+                prop_assert!(finder.sweep.buckets() <= 3 * (4 * boxes.len() + 257) + 1);
             }
         }
     }

@@ -20,6 +20,16 @@ use crate::geometry::Aabb;
 /// Most bands the sort makes buckets for; boxes beyond share the last one.
 const MAX_BANDS: u32 = 1 << 21;
 
+/// The most bands per box (plus [`SPARSE_BANDS_MIN`]) for which the boxes are sorted by
+/// band with a bucket per band. The buckets cost time in proportion to the span of the
+/// bands, not to the boxes: past this the boxes are sorted by comparison, so that one box
+/// far from the others cannot cost everyone (one box a million cells away from nine others
+/// made every call 1,700 times slower).
+const SPARSE_BANDS_PER_BOX: usize = 4;
+
+/// Bands always sorted with buckets, however few the boxes.
+const SPARSE_BANDS_MIN: usize = 256;
+
 /// Sweep and prune's buffers, kept between calls.
 #[derive(Clone, Debug, Default)]
 pub(super) struct SweepPairs {
@@ -63,7 +73,16 @@ impl SweepPairs {
         // buckets whatever the coordinates (the band height keeps real scenes far below).
         let lowest = band_of(lo.y, per_band);
         let highest = band_of(hi.y, per_band).clamp(lowest, lowest.saturating_add(MAX_BANDS));
-        self.sort(lowest, highest);
+        if (highest - lowest) as usize <= SPARSE_BANDS_PER_BOX * count + SPARSE_BANDS_MIN {
+            self.sort(lowest, highest);
+        } else {
+            // Bands spread far apart (one box far from the others): sorting by band costs
+            // more than the boxes, so compare instead.
+            for entry in &mut self.order {
+                entry.0 = self.keys[entry.1 as usize];
+            }
+            self.order.sort_unstable();
+        }
         self.candidates.reset(count);
         self.xs.clear();
         for (slot, &(key, i)) in self.order.iter().enumerate() {
@@ -86,6 +105,12 @@ impl SweepPairs {
             start = end;
         }
         pairs.truncate(n);
+    }
+
+    /// How many buckets the last sort by band used.
+    #[cfg(test)]
+    pub(super) fn buckets(&self) -> usize {
+        self.starts.len()
     }
 
     /// Puts `order` in order of the new `keys`, by (key, box). Bands below `lowest` or
@@ -312,6 +337,52 @@ mod tests {
         assert_eq!(band_height(1.0, f32::INFINITY), f32::INFINITY);
         let tiny = f32::from_bits(1); // the smallest subnormal
         assert!(band_height(tiny, 0.0) > tiny);
+    }
+
+    #[test]
+    fn one_far_box_costs_no_more_than_the_boxes() {
+        // Nine boxes together and one a million cells above (then at the far corner of
+        // the coordinate range): the sort's buckets stay in proportion to the boxes, not to
+        // the distance, and the pairs are still right.
+        let unit = |x: f32, y: f32| Aabb {
+            min: glam::Vec2::new(x, y),
+            max: glam::Vec2::new(x + 0.8, y + 0.8),
+        };
+        for far in [
+            glam::Vec2::new(0.0, 1.0e6),
+            glam::Vec2::splat(crate::MAX_COORD),
+        ] {
+            let mut boxes: Vec<Aabb> = (0..9)
+                .map(|i| unit((i % 3) as f32 * 0.5, (i / 3) as f32 * 0.5))
+                .collect();
+            boxes.push(unit(far.x, far.y));
+            let mut sweep = SweepPairs::default();
+            for step in 0..3 {
+                // Every box drifts a little, the far one too.
+                for b in &mut boxes {
+                    *b = unit(b.min.x + 0.1, b.min.y + 0.05 * step as f32);
+                }
+                let mut pairs = Vec::new();
+                sweep.find(&boxes, &mut pairs);
+                pairs.sort_unstable();
+                let mut expected = Vec::new();
+                for i in 0..boxes.len() {
+                    for j in i + 1..boxes.len() {
+                        if boxes[i].overlaps(&boxes[j]) {
+                            expected.push((i as u32, j as u32));
+                        }
+                    }
+                }
+                assert_eq!(pairs, expected);
+                let most = 3 * (SPARSE_BANDS_PER_BOX * boxes.len() + SPARSE_BANDS_MIN + 1) + 1;
+                assert!(
+                    sweep.buckets() <= most,
+                    "{} buckets for {} boxes",
+                    sweep.buckets(),
+                    boxes.len()
+                );
+            }
+        }
     }
 
     #[test]

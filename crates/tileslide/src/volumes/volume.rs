@@ -10,7 +10,7 @@ use glam::Vec2;
 use thiserror::Error;
 
 use super::HitTypes;
-use crate::geometry::{Aabb, Circle, Segment};
+use crate::geometry::{Aabb, Circle, MAX_COORD, Segment, in_range};
 
 /// A volume's shape in object-local coordinates.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -50,6 +50,17 @@ pub enum VolumeError {
         /// The value's second coordinate.
         y: f32,
     },
+    /// A coordinate or radius beyond [`MAX_COORD`].
+    #[error("{what} ({x}, {y}) is out of range: each coordinate must be at most {max} in magnitude", max = MAX_COORD)]
+    OutOfRange {
+        /// Which value: a volume's `"center"`, `"radius"`, `"min"` or `"max"`, or a hit
+        /// object's `"position"`, `"start"` (its position less its motion) or `"size"`.
+        what: &'static str,
+        /// The value (a radius has `y = 0`).
+        x: f32,
+        /// The value's second coordinate.
+        y: f32,
+    },
     /// A circle with a negative radius.
     #[error("volume circle has a negative radius {0}")]
     NegativeRadius(f32),
@@ -67,15 +78,15 @@ pub enum VolumeError {
     },
 }
 
-fn finite(what: &'static str, v: Vec2) -> Result<(), VolumeError> {
-    if v.is_finite() {
-        Ok(())
+/// `v`, named `what`: finite and within [`MAX_COORD`].
+pub(crate) fn check_range(what: &'static str, v: Vec2) -> Result<(), VolumeError> {
+    let (x, y) = (v.x, v.y);
+    if !v.is_finite() {
+        Err(VolumeError::NonFinite { what, x, y })
+    } else if !in_range(v) {
+        Err(VolumeError::OutOfRange { what, x, y })
     } else {
-        Err(VolumeError::NonFinite {
-            what,
-            x: v.x,
-            y: v.y,
-        })
+        Ok(())
     }
 }
 
@@ -83,38 +94,61 @@ impl Volume {
     /// A disc at `center` (object-local) of `radius` ≥ 0.
     ///
     /// # Errors
-    /// [`VolumeError::NonFinite`] or [`VolumeError::NegativeRadius`].
+    /// [`VolumeError::NonFinite`], [`VolumeError::OutOfRange`] (beyond [`MAX_COORD`]) or
+    /// [`VolumeError::NegativeRadius`].
     pub fn circle(center: Vec2, radius: f32, hit: HitTypes) -> Result<Self, VolumeError> {
-        finite("center", center)?;
-        finite("radius", Vec2::new(radius, 0.0))?;
-        if radius < 0.0 {
-            return Err(VolumeError::NegativeRadius(radius));
-        }
-        Ok(Self {
+        let volume = Self {
             shape: VolumeShape::Circle(Circle::new(center, radius)),
             hit,
-        })
+        };
+        volume.check()?;
+        Ok(volume)
     }
 
     /// The box from `min` to `max` (object-local, `min ≤ max`).
     ///
     /// # Errors
-    /// [`VolumeError::NonFinite`] or [`VolumeError::InvertedBox`].
+    /// [`VolumeError::NonFinite`], [`VolumeError::OutOfRange`] (beyond [`MAX_COORD`]) or
+    /// [`VolumeError::InvertedBox`].
     pub fn rect(min: Vec2, max: Vec2, hit: HitTypes) -> Result<Self, VolumeError> {
-        finite("min", min)?;
-        finite("max", max)?;
-        if !min.cmple(max).all() {
-            return Err(VolumeError::InvertedBox {
-                min_x: min.x,
-                min_y: min.y,
-                max_x: max.x,
-                max_y: max.y,
-            });
-        }
-        Ok(Self {
+        let volume = Self {
             shape: VolumeShape::Box(Aabb { min, max }),
             hit,
-        })
+        };
+        volume.check()?;
+        Ok(volume)
+    }
+
+    /// Whether the volume can be used: what [`circle`](Self::circle) and
+    /// [`rect`](Self::rect) check, for a volume built from its public fields.
+    /// [`HitWorld::register`](super::HitWorld::register) drops the volumes of an object with
+    /// a volume this refuses.
+    ///
+    /// # Errors
+    /// As [`circle`](Self::circle) and [`rect`](Self::rect).
+    pub fn check(&self) -> Result<(), VolumeError> {
+        match self.shape {
+            VolumeShape::Circle(Circle { center, radius }) => {
+                check_range("center", center)?;
+                check_range("radius", Vec2::new(radius, 0.0))?;
+                if radius < 0.0 {
+                    return Err(VolumeError::NegativeRadius(radius));
+                }
+            }
+            VolumeShape::Box(Aabb { min, max }) => {
+                check_range("min", min)?;
+                check_range("max", max)?;
+                if !min.cmple(max).all() {
+                    return Err(VolumeError::InvertedBox {
+                        min_x: min.x,
+                        min_y: min.y,
+                        max_x: max.x,
+                        max_y: max.y,
+                    });
+                }
+            }
+        }
+        Ok(())
     }
 }
 

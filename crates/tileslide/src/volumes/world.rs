@@ -6,7 +6,7 @@ use std::collections::HashSet;
 use glam::Vec2;
 
 use super::HitTypes;
-use super::volume::{Facing, Placed, Volume};
+use super::volume::{Facing, Placed, Volume, VolumeError, check_range};
 use crate::broadphase::{Broadphase, PairFinder};
 use crate::geometry::{Aabb, Circle};
 
@@ -48,6 +48,27 @@ impl HitObject {
             invulnerable: false,
             swing: None,
         }
+    }
+
+    /// Whether the object can be registered with its volumes: its position, where it
+    /// starts the frame (`position − motion`) and its size finite and within
+    /// [`MAX_COORD`](crate::MAX_COORD), so that placing and sweeping its volumes cannot
+    /// overflow. [`HitWorld::register`] drops the volumes of an object this refuses.
+    ///
+    /// # Errors
+    /// [`VolumeError::NonFinite`] or [`VolumeError::OutOfRange`] naming the value.
+    pub fn check(&self) -> Result<(), VolumeError> {
+        check_range("position", self.position)?;
+        if !self.motion.is_finite() {
+            let (x, y) = (self.motion.x, self.motion.y);
+            return Err(VolumeError::NonFinite {
+                what: "motion",
+                x,
+                y,
+            });
+        }
+        check_range("start", self.position - self.motion)?;
+        check_range("size", self.size)
     }
 }
 
@@ -181,8 +202,14 @@ impl HitWorld {
     }
 
     /// Registers an object for this frame with its attack and vulnerability volumes
-    /// (copied). Objects with non-finite positions, motions or sizes are registered but
-    /// never hit nor hit (their volumes are dropped).
+    /// (copied).
+    ///
+    /// An object that [`HitObject::check`] refuses (a NaN, infinite or out-of-range
+    /// position, start or size), or with a volume that [`Volume::check`] refuses, is
+    /// registered but never hits nor is hit: its volumes are dropped. So every pair test
+    /// computes within a few times [`MAX_COORD`](crate::MAX_COORD), where nothing
+    /// overflows (a box at 3·10³⁸ once missed a box it lay in, its centre overflowing to
+    /// infinity). Call the checks first to learn why an object takes no part.
     pub fn register(
         &mut self,
         object: HitObject,
@@ -191,7 +218,7 @@ impl HitWorld {
     ) -> ObjectId {
         let id = ObjectId(self.entries.len() as u32);
         let usable =
-            object.position.is_finite() && object.motion.is_finite() && object.size.is_finite();
+            object.check().is_ok() && attack.iter().chain(vulnerable).all(|v| v.check().is_ok());
         let (attack, vulnerable) = if usable {
             (attack, vulnerable)
         } else {
