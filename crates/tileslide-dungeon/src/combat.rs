@@ -103,7 +103,7 @@ pub fn attack(
 /// burn out are gone.
 ///
 /// # Errors
-/// A bad swing volume (a bug).
+/// A bad swing volume, or a fighter or fireball the hit volumes refuse (bugs).
 pub fn strike(
     world: &mut World,
     level: &Level,
@@ -157,7 +157,7 @@ pub fn strike(
         }
         ball.ttl = ball.ttl.saturating_sub(1);
         ball.position = to;
-        hits.fireball(ball.key, entity, *team, from, to, FIREBALL_DAMAGE);
+        hits.fireball(ball.key, entity, *team, from, to, FIREBALL_DAMAGE)?;
         if wall.is_some() || ball.ttl == 0 {
             spent.push(entity);
         }

@@ -128,7 +128,7 @@ impl Hits {
             None => None,
         };
         self.world
-            .register(object, attack.as_slice(), std::slice::from_ref(&body));
+            .register(object, attack.as_slice(), std::slice::from_ref(&body))?;
         self.registered.push(Registered::Fighter {
             entity: target.entity,
             position: target.position,
@@ -138,6 +138,9 @@ impl Hits {
     }
 
     /// Registers a fireball of `team` that moved from `from` to `to` this step.
+    ///
+    /// # Errors
+    /// A position or move the hit volumes refuse (beyond `MAX_COORD`: a bug).
     pub fn fireball(
         &mut self,
         key: u64,
@@ -146,19 +149,20 @@ impl Hits {
         from: Vec2,
         to: Vec2,
         damage: i32,
-    ) {
+    ) -> Result<(), GameError> {
         let object = HitObject {
             team: team_number(team),
             motion: to - from,
             ..HitObject::new(key, to, Vec2::ZERO)
         };
         self.world
-            .register(object, std::slice::from_ref(&self.fireball), &[]);
+            .register(object, std::slice::from_ref(&self.fireball), &[])?;
         self.registered.push(Registered::Fireball {
             entity,
             from,
             damage,
         });
+        Ok(())
     }
 
     /// Tests the step's volumes (teams: heroes hit creatures and the other way round) and
@@ -261,7 +265,7 @@ mod tests {
             hits.fighter(h, None).unwrap();
         }
         let (from, to) = (Vec2::new(2.0, 0.0), Vec2::new(8.0, 0.0));
-        hits.fireball(99, ball, Team::Keeper, from, to, 6);
+        hits.fireball(99, ball, Team::Keeper, from, to, 6).unwrap();
         let mut events = Vec::new();
         hits.detect(&mut events);
         Shot {

@@ -5,7 +5,7 @@ use thiserror::Error;
 use tileslide::{
     Character, CharacterShape, Contacts, ControllerConfig, ControllerError, HitEvent, HitWorld,
     MapError, MoveOptions, Owner, Ray, RayFilter, Segment, SegmentFlags, SegmentSource,
-    TemporarySegment, Vec2,
+    TemporarySegment, Vec2, VolumeError,
 };
 
 use crate::hits::{self, Boxed, ENEMY_HALF, PLAYER_HALF, Who};
@@ -47,6 +47,9 @@ pub enum GameError {
     /// The map refused the platform's segment.
     #[error("moving platform: {0}")]
     Map(#[from] MapError),
+    /// The hit volumes refused an object (a position beyond `MAX_COORD`).
+    #[error("hit volumes: {0}")]
+    Volume(#[from] VolumeError),
 }
 
 /// The player: a box moved by the controller.
@@ -295,7 +298,7 @@ impl Game {
         let from = self.player.body.position;
         self.move_player(input, dt)?;
         let to = self.player.body.position;
-        self.exchange_hits(to - from);
+        self.exchange_hits(to - from)?;
         let s = self.level.scale;
         let summary = &mut self.summary;
         summary
@@ -419,7 +422,7 @@ impl Game {
         Ok(())
     }
 
-    fn exchange_hits(&mut self, motion: Vec2) {
+    fn exchange_hits(&mut self, motion: Vec2) -> Result<(), GameError> {
         let s = self.level.scale;
         let up = self.level.up;
         let player = &self.player;
@@ -452,7 +455,7 @@ impl Game {
             (&me, falling, player.invulnerable > 0),
             &enemies,
             &coins,
-        );
+        )?;
         for i in outcome.collected {
             if let Some(c) = self.coins.get_mut(i) {
                 c.taken = true;
@@ -474,5 +477,6 @@ impl Game {
             player.rise = KNOCK_SPEED * s;
         }
         self.events = outcome.events;
+        Ok(())
     }
 }

@@ -3,7 +3,8 @@
 //! enemy's body deals `HIT` to the player's body.
 
 use tileslide::{
-    Aabb, Circle, HitEvent, HitObject, HitTypes, HitWorld, TeamRule, Vec2, Volume, VolumeShape,
+    Aabb, Circle, HitEvent, HitObject, HitTypes, HitWorld, TeamRule, Vec2, Volume, VolumeError,
+    VolumeShape,
 };
 
 /// The game's own hit type: a stomp, dealt by the player's feet while falling.
@@ -107,7 +108,7 @@ pub fn exchange(
     player: (&Boxed, bool, bool),
     enemies: &[(usize, Boxed)],
     coins: &[(usize, Vec2)],
-) -> Outcome {
+) -> Result<Outcome, VolumeError> {
     let (me, falling, invulnerable) = player;
     world.begin_frame();
     who.clear();
@@ -119,12 +120,12 @@ pub fn exchange(
         attack.extend(me.strip(up, false, strip, STOMP));
     }
     let vulnerable: Vec<Volume> = me.body(HitTypes::HIT).into_iter().collect();
-    world.register(object, &attack, &vulnerable);
+    world.register(object, &attack, &vulnerable)?;
     who.push(Who::Player);
     for (i, enemy) in enemies {
         let attack: Vec<Volume> = enemy.body(HitTypes::HIT).into_iter().collect();
         let top: Vec<Volume> = enemy.strip(up, true, strip, STOMP).into_iter().collect();
-        world.register(enemy.object(1 + *i as u64, ENEMY_TEAM), &attack, &top);
+        world.register(enemy.object(1 + *i as u64, ENEMY_TEAM), &attack, &top)?;
         who.push(Who::Enemy(*i));
     }
     let radius = COIN_RADIUS * scale;
@@ -136,11 +137,11 @@ pub fn exchange(
             Vec2::splat(2.0 * radius),
         );
         object.team = COIN_TEAM;
-        world.register(object, &[], coin.as_slice());
+        world.register(object, &[], coin.as_slice())?;
         who.push(Who::Coin(*i));
     }
     let events = world.detect(&mut TeamRule).to_vec();
-    outcome(events, who)
+    Ok(outcome(events, who))
 }
 
 fn outcome(events: Vec<HitEvent>, who: &[Who]) -> Outcome {
@@ -199,7 +200,8 @@ mod tests {
             (&player, true, false),
             &[(0, enemy)],
             &[(0, Vec2::new(0.2, 0.0))],
-        );
+        )
+        .unwrap();
         assert_eq!(out.stomped, vec![0]);
         assert_eq!(out.collected, vec![0]);
         assert!(!out.player_hit);
@@ -221,6 +223,7 @@ mod tests {
                 &[enemy()],
                 &[],
             )
+            .unwrap()
         };
         let out = hit(false, &mut world, &mut who);
         assert!(out.player_hit && out.stomped.is_empty());

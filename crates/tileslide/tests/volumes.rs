@@ -44,16 +44,20 @@ fn an_attack_hits_only_a_vulnerability_that_accepts_its_type() {
     let mut world = HitWorld::new();
     world.begin_frame();
     let fist = [circle(1.2, 0.5, 0.3, HitTypes::HIT)];
-    world.register(object(1, 0.0, 0.0), &fist, &[]);
-    world.register(object(2, 1.2, 0.0), &[], &body(HitTypes::COLLECT));
+    world.register(object(1, 0.0, 0.0), &fist, &[]).unwrap();
+    world
+        .register(object(2, 1.2, 0.0), &[], &body(HitTypes::COLLECT))
+        .unwrap();
     assert!(hits(&mut world).is_empty(), "a coin does not take a punch");
     world.begin_frame();
-    world.register(object(1, 0.0, 0.0), &fist, &[]);
-    world.register(
-        object(2, 1.2, 0.0),
-        &[],
-        &body(HitTypes::HIT | HitTypes::DEATH),
-    );
+    world.register(object(1, 0.0, 0.0), &fist, &[]).unwrap();
+    world
+        .register(
+            object(2, 1.2, 0.0),
+            &[],
+            &body(HitTypes::HIT | HitTypes::DEATH),
+        )
+        .unwrap();
     assert_eq!(hits(&mut world), [(0, 1, HitTypes::HIT, true)]);
 }
 
@@ -62,11 +66,19 @@ fn any_matches_on_either_side_and_the_event_names_the_type_dealt() {
     let mut world = HitWorld::new();
     world.begin_frame();
     // A collector touching everything, and a coin.
-    world.register(object(1, 0.0, 0.0), &body(HitTypes::ANY), &[]);
-    world.register(object(2, 0.5, 0.0), &[], &body(HitTypes::COLLECT));
+    world
+        .register(object(1, 0.0, 0.0), &body(HitTypes::ANY), &[])
+        .unwrap();
+    world
+        .register(object(2, 0.5, 0.0), &[], &body(HitTypes::COLLECT))
+        .unwrap();
     // A spike dealing HIT to a body accepting anything.
-    world.register(object(3, 10.0, 0.0), &body(HitTypes::HIT), &[]);
-    world.register(object(4, 10.5, 0.0), &[], &body(HitTypes::ANY));
+    world
+        .register(object(3, 10.0, 0.0), &body(HitTypes::HIT), &[])
+        .unwrap();
+    world
+        .register(object(4, 10.5, 0.0), &[], &body(HitTypes::ANY))
+        .unwrap();
     assert_eq!(
         hits(&mut world),
         [(0, 1, HitTypes::COLLECT, true), (2, 3, HitTypes::HIT, true)]
@@ -83,12 +95,14 @@ fn the_first_attack_volume_in_list_order_that_matches_gives_the_hit() {
         circle(1.2, 0.5, 0.3, HitTypes::LAUNCH),  // the first that counts
         circle(1.2, 0.5, 0.3, HitTypes::HIT),     // would count, but comes later
     ];
-    world.register(object(1, 0.0, 0.0), &attacks, &[]);
-    world.register(
-        object(2, 1.0, 0.0),
-        &[],
-        &body(HitTypes::HIT | HitTypes::LAUNCH | HitTypes::DEATH),
-    );
+    world.register(object(1, 0.0, 0.0), &attacks, &[]).unwrap();
+    world
+        .register(
+            object(2, 1.0, 0.0),
+            &[],
+            &body(HitTypes::HIT | HitTypes::LAUNCH | HitTypes::DEATH),
+        )
+        .unwrap();
     assert_eq!(hits(&mut world), [(0, 1, HitTypes::LAUNCH, true)]);
 }
 
@@ -106,9 +120,13 @@ fn volumes_are_mirrored_when_the_object_faces_the_other_way() {
             },
             ..object(1, 5.0, 0.0)
         };
-        world.register(hero, &sword, &[]);
-        world.register(object(2, 3.5, 0.0), &[], &body(HitTypes::HIT)); // left
-        world.register(object(3, 6.5, 0.0), &[], &body(HitTypes::HIT)); // right
+        world.register(hero, &sword, &[]).unwrap();
+        world
+            .register(object(2, 3.5, 0.0), &[], &body(HitTypes::HIT))
+            .unwrap(); // left
+        world
+            .register(object(3, 6.5, 0.0), &[], &body(HitTypes::HIT))
+            .unwrap(); // right
         let got = hits(&mut world);
         assert_eq!(got.len(), 1, "facing left: {flip_x}: {got:?}");
         assert_eq!(got[0].1, struck);
@@ -123,7 +141,7 @@ fn events_come_pair_by_pair_in_registration_order_both_directions() {
     let mut world = HitWorld::new();
     world.begin_frame();
     for (key, x) in [(1, 1.0), (2, 0.5), (3, 0.0)] {
-        world.register(object(key, x, 0.0), &fist, &fist);
+        world.register(object(key, x, 0.0), &fist, &fist).unwrap();
     }
     let order: Vec<_> = hits(&mut world).iter().map(|h| (h.0, h.1)).collect();
     assert_eq!(order, [(0, 1), (1, 0), (0, 2), (2, 0), (1, 2), (2, 1)]);
@@ -134,24 +152,28 @@ fn the_victim_decides_and_the_attacker_learns_it() {
     let fist = body(HitTypes::HIT);
     let mut world = HitWorld::new();
     world.begin_frame();
-    let a = world.register(object(1, 0.0, 0.0), &fist, &[]);
-    let b = world.register(
-        HitObject {
-            invulnerable: true,
-            ..object(2, 0.5, 0.0)
-        },
-        &[],
-        &fist,
-    );
-    let c = world.register(
-        HitObject {
-            team: 1,
-            ..object(3, 0.5, 0.5)
-        },
-        &[],
-        &fist,
-    );
-    let d = world.register(object(4, 0.0, 0.5), &[], &fist);
+    let a = world.register(object(1, 0.0, 0.0), &fist, &[]).unwrap();
+    let b = world
+        .register(
+            HitObject {
+                invulnerable: true,
+                ..object(2, 0.5, 0.0)
+            },
+            &[],
+            &fist,
+        )
+        .unwrap();
+    let c = world
+        .register(
+            HitObject {
+                team: 1,
+                ..object(3, 0.5, 0.5)
+            },
+            &[],
+            &fist,
+        )
+        .unwrap();
+    let d = world.register(object(4, 0.0, 0.5), &[], &fist).unwrap();
     // Team rule: invulnerable and same-team victims refuse.
     let got = world.detect(&mut TeamRule).to_vec();
     let accepted =
@@ -180,8 +202,10 @@ fn a_volume_reaching_into_the_corner_is_not_missed() {
     let claw = [rect(1.0, 1.0, 1.5, 1.5, HitTypes::HIT)];
     let mut world = HitWorld::new();
     world.begin_frame();
-    world.register(object(1, 0.0, 0.0), &claw, &[]);
-    world.register(object(2, 1.4, 1.4), &[], &body(HitTypes::HIT));
+    world.register(object(1, 0.0, 0.0), &claw, &[]).unwrap();
+    world
+        .register(object(2, 1.4, 1.4), &[], &body(HitTypes::HIT))
+        .unwrap();
     assert_eq!(hits(&mut world), [(0, 1, HitTypes::HIT, true)]);
     let bounds = world.bounding_circle(ObjectId(0)).unwrap();
     for corner in [Vec2::new(1.0, 1.0), Vec2::new(1.5, 1.5)] {
@@ -198,8 +222,8 @@ fn a_swing_hits_each_victim_once_until_it_ends() {
             swing,
             ..object(1, 0.0, 0.0)
         };
-        world.register(hero, &blade, &[]);
-        world.register(object(2, 0.5, 0.0), &[], &blade);
+        world.register(hero, &blade, &[]).unwrap();
+        world.register(object(2, 0.5, 0.0), &[], &blade).unwrap();
         hits(world).len()
     };
     let mut world = HitWorld::new();
@@ -220,12 +244,12 @@ fn a_refused_hit_does_not_use_up_the_swing() {
             swing: Some(1),
             ..object(1, 0.0, 0.0)
         };
-        world.register(hero, &blade, &[]);
+        world.register(hero, &blade, &[]).unwrap();
         let victim = HitObject {
             invulnerable,
             ..object(2, 0.5, 0.0)
         };
-        world.register(victim, &[], &blade);
+        world.register(victim, &[], &blade).unwrap();
         let accepted = hits(&mut world).iter().any(|h| h.3);
         assert_eq!(accepted, expected);
     }
@@ -241,23 +265,25 @@ fn a_bullet_ten_times_its_size_per_frame_cannot_pass_through() {
         motion: Vec2::new(1.0, 0.0),
         ..HitObject::new(1, Vec2::new(0.4, 0.5), Vec2::ZERO)
     };
-    world.register(shot, &bullet, &[]);
+    world.register(shot, &bullet, &[]).unwrap();
     let wall = [rect(0.0, 0.0, 0.1, 1.0, HitTypes::HIT)];
-    world.register(HitObject::new(2, Vec2::ZERO, Vec2::ONE), &[], &wall);
+    world
+        .register(HitObject::new(2, Vec2::ZERO, Vec2::ONE), &[], &wall)
+        .unwrap();
     assert_eq!(hits(&mut world).len(), 1);
     // The target moving too: they pass each other in the frame, meeting in the middle.
     world.begin_frame();
-    world.register(shot, &bullet, &[]);
+    world.register(shot, &bullet, &[]).unwrap();
     let dodging = HitObject {
         motion: Vec2::new(-1.0, 0.0),
         ..HitObject::new(2, Vec2::new(-0.9, 0.0), Vec2::ONE)
     };
-    world.register(dodging, &[], &wall);
+    world.register(dodging, &[], &wall).unwrap();
     assert_eq!(hits(&mut world).len(), 1);
 }
 
 #[test]
-fn volumes_and_objects_beyond_max_coord_are_refused_and_take_no_part() {
+fn volumes_and_objects_beyond_max_coord_are_refused_by_register_too() {
     use tileslide::{Aabb, Circle, MAX_COORD, VolumeError};
     let far = |what: &'static str| move |e: VolumeError| matches!(e, VolumeError::OutOfRange { what: w, .. } if w == what);
     assert!(Volume::circle(Vec2::new(1e20, 0.0), 1.0, HitTypes::HIT).is_err_and(far("center")));
@@ -311,27 +337,38 @@ fn volumes_and_objects_beyond_max_coord_are_refused_and_take_no_part() {
     ));
     // At the edge of the range two overlapping boxes hit, whatever the broadphase (a move
     // across the whole range included); at 3e38 (where a box's centre overflowed and the
-    // pair was missed) the objects are dropped.
+    // pair was missed) register refuses the object, naming the value, and the world is
+    // unchanged.
     for broadphase in [Broadphase::SweepAndPrune, Broadphase::UniformGrid] {
         let mut world = HitWorld::with_broadphase(broadphase);
-        for (x, expected) in [(MAX_COORD - 1.0, 1), (3e38, 0)] {
-            world.begin_frame();
-            world.register(object(1, x, 0.0), &body(HitTypes::HIT), &[]);
-            world.register(object(2, x, 0.0), &[], &body(HitTypes::HIT));
-            assert_eq!(
-                hits(&mut world).len(),
-                expected,
-                "{broadphase:?} at x = {x}"
-            );
-        }
+        world.begin_frame();
+        let x = MAX_COORD - 1.0;
+        world
+            .register(object(1, x, 0.0), &body(HitTypes::HIT), &[])
+            .unwrap();
+        world
+            .register(object(2, x, 0.0), &[], &body(HitTypes::HIT))
+            .unwrap();
+        assert_eq!(hits(&mut world).len(), 1, "{broadphase:?} at x = {x}");
+        world.begin_frame();
+        let refused = world.register(object(1, 3e38, 0.0), &body(HitTypes::HIT), &[]);
+        assert!(refused.is_err_and(far("position")), "{broadphase:?}");
+        let refused = world.register(object(2, 0.0, 0.0), &[], &[huge]);
+        assert!(refused.is_err_and(far("radius")), "{broadphase:?}");
+        assert!(hits(&mut world).is_empty(), "{broadphase:?}");
         world.begin_frame();
         let across = HitObject {
             motion: Vec2::new(2.0 * MAX_COORD - 2.0, 0.0),
             ..object(1, MAX_COORD - 1.0, 0.0)
         };
-        world.register(across, &body(HitTypes::HIT), &[]);
-        world.register(object(2, 0.0, 0.0), &[], &body(HitTypes::HIT));
-        world.register(object(3, 0.0, 0.0), &[huge], &[]);
+        let a = world.register(across, &body(HitTypes::HIT), &[]).unwrap();
+        let b = world
+            .register(object(2, 0.0, 0.0), &[], &body(HitTypes::HIT))
+            .unwrap();
+        // A refused object takes no id: the next one registered gets the one it would have.
+        assert!(world.register(object(3, 0.0, 0.0), &[huge], &[]).is_err());
+        let c = world.register(object(4, 5.0, 5.0), &[], &[]).unwrap();
+        assert_eq!((a.0, b.0, c.0), (0, 1, 2));
         assert_eq!(
             hits(&mut world),
             [(0, 1, HitTypes::HIT, true)],
@@ -462,7 +499,7 @@ proptest! {
             for _ in 0..2 {
                 world.begin_frame();
                 for (o, a, v) in &objects {
-                    world.register(*o, a, v);
+                    world.register(*o, a, v).unwrap();
                 }
                 let got: Vec<_> = world
                     .detect(&mut |_: &HitObject, _: &HitObject, _: HitTypes| true)
@@ -503,8 +540,8 @@ proptest! {
         let target = HitObject { team: 1, ..HitObject::new(2, Vec2::ZERO, Vec2::ONE) };
         let mut world = HitWorld::new();
         world.begin_frame();
-        world.register(shooter, &[a], &[]);
-        world.register(target, &[], &[b]);
+        world.register(shooter, &[a], &[]).unwrap();
+        world.register(target, &[], &[b]).unwrap();
         let reported = !world.detect(&mut TeamRule).is_empty();
         const STEPS: usize = 2000;
         let tb = placed(&b, &target);

@@ -53,7 +53,7 @@ impl HitObject {
     /// Whether the object can be registered with its volumes: its position, where it
     /// starts the frame (`position − motion`) and its size finite and within
     /// [`MAX_COORD`](crate::MAX_COORD), so that placing and sweeping its volumes cannot
-    /// overflow. [`HitWorld::register`] drops the volumes of an object this refuses.
+    /// overflow. [`HitWorld::register`] refuses an object this refuses.
     ///
     /// # Errors
     /// [`VolumeError::NonFinite`] or [`VolumeError::OutOfRange`] naming the value.
@@ -145,9 +145,9 @@ struct Entry {
 /// let hero = HitObject { team: 1, ..HitObject::new(1, Vec2::ZERO, Vec2::new(1.0, 2.0)) };
 /// let fist = [Volume::circle(Vec2::new(1.3, 1.0), 0.3, HitTypes::HIT)?];
 /// let body = [Volume::rect(Vec2::ZERO, Vec2::new(1.0, 2.0), HitTypes::ANY)?];
-/// let hero = world.register(hero, &fist, &body);
+/// let hero = world.register(hero, &fist, &body)?;
 /// let slime = HitObject::new(2, Vec2::new(1.5, 0.0), Vec2::ONE);
-/// let slime = world.register(slime, &[], &body[..1]);
+/// let slime = world.register(slime, &[], &body[..1])?;
 /// let hits = world.detect(&mut TeamRule);
 /// assert_eq!(hits.len(), 1);
 /// assert_eq!((hits[0].attacker, hits[0].victim), (hero, slime));
@@ -204,26 +204,24 @@ impl HitWorld {
     /// Registers an object for this frame with its attack and vulnerability volumes
     /// (copied).
     ///
-    /// An object that [`HitObject::check`] refuses (a NaN, infinite or out-of-range
-    /// position, start or size), or with a volume that [`Volume::check`] refuses, is
-    /// registered but never hits nor is hit: its volumes are dropped. So every pair test
-    /// computes within a few times [`MAX_COORD`](crate::MAX_COORD), where nothing
-    /// overflows (a box at 3·10³⁸ once missed a box it lay in, its centre overflowing to
-    /// infinity). Call the checks first to learn why an object takes no part.
+    /// # Errors
+    ///
+    /// What [`HitObject::check`] or [`Volume::check`] says of the object or of its first
+    /// bad volume (a NaN, infinite or out-of-range position, start, size, centre or
+    /// corner); the world is unchanged. So every pair test computes within a few times
+    /// [`MAX_COORD`](crate::MAX_COORD), where nothing overflows (a box at 3·10³⁸ once
+    /// missed a box it lay in, its centre overflowing to infinity).
     pub fn register(
         &mut self,
         object: HitObject,
         attack: &[Volume],
         vulnerable: &[Volume],
-    ) -> ObjectId {
+    ) -> Result<ObjectId, VolumeError> {
+        object.check()?;
+        for v in attack.iter().chain(vulnerable) {
+            v.check()?;
+        }
         let id = ObjectId(self.entries.len() as u32);
-        let usable =
-            object.check().is_ok() && attack.iter().chain(vulnerable).all(|v| v.check().is_ok());
-        let (attack, vulnerable) = if usable {
-            (attack, vulnerable)
-        } else {
-            (&[][..], &[][..])
-        };
         let a0 = self.attack.len() as u32;
         self.attack.extend_from_slice(attack);
         let v0 = self.vulnerable.len() as u32;
@@ -258,7 +256,7 @@ impl HitWorld {
                 max: Vec2::NAN,
             }),
         });
-        id
+        Ok(id)
     }
 
     /// The object registered as `id` this frame.
