@@ -31,6 +31,19 @@ pub fn run(
     };
     // All at once: `cast_rays` walks them side by side, with each answer `cast_ray`'s.
     let segments: Vec<Ray> = rays.iter().map(|(p0, p1)| Ray::between(*p0, *p1)).collect();
+    // Finite end points can be too far apart for an f32 (from -3e38 to 3e38): such a ray
+    // has no motion to cast, and answering "no hit" would be wrong.
+    if let Some(i) = segments.iter().position(|r| !r.delta.is_finite()) {
+        let (p0, p1) = rays[i];
+        bail!(
+            "ray {} ({}, {}) → ({}, {}): its end points are too far apart for a 32-bit float",
+            i + 1,
+            p0.x,
+            p0.y,
+            p1.x,
+            p1.y
+        );
+    }
     let hits = map.cast_rays(&segments, &filter);
     for (i, ((p0, p1), hit)) in rays.iter().zip(&hits).enumerate() {
         if as_json {

@@ -120,6 +120,43 @@ fn raycast_both_sides_hits_the_ledge_from_below() {
 }
 
 #[test]
+fn raycast_whose_length_overflows_the_grid_answers_instead_of_panicking() {
+    // Delta / cell size overflows f32 here: the walk used to run off the map (exit 101).
+    let map = scratch("open.txt", "...\n...\n..#\n");
+    let m = map.to_str().unwrap();
+    let args = ["raycast", m, "--cell", "0.5", "--from", "0.2565,0.2605"];
+    let o = tileslide(&[&args[..], &["--to", "0.5565,3.4e38", "--json"]].concat());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stdout(&o).trim(), "{\"hit\":false}");
+    // Up the third column it meets the solid cell's floor at y = 1.
+    let o = tileslide(&[
+        "raycast",
+        m,
+        "--cell",
+        "0.5",
+        "--from",
+        "1.25,0.25",
+        "--to",
+        "1.25,3.4e38",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(
+        (v["hit"].clone(), v["y"].clone()),
+        (Value::Bool(true), serde_json::json!(1.0))
+    );
+    // End points too far apart for an f32 motion are an error naming the ray.
+    let o = tileslide(&["raycast", m, "--from", "-3e38,0.5", "--to", "3e38,0.5"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("ray 1") && stderr(&o).contains("too far apart"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
 fn a_miss_is_hit_false() {
     let map = scratch("miss.txt", ROOM);
     let o = tileslide(&[

@@ -603,3 +603,86 @@ fn invalid_circles_and_boxes_overlap_nothing_not_even_temporaries() {
     let all = map.segments_overlapping_circle(&Circle::new(center, 0.6));
     assert!(all.len() >= 5, "{all:?}");
 }
+
+/// Finite but absurd inputs: boxes, circles and points up to `f32::MAX`, where grid
+/// coordinates and squared lengths overflowed (a box covering the whole map found
+/// nothing; a huge circle's squared radius became infinite).
+mod absurd_inputs {
+    use tileslide::io::ascii;
+    use tileslide::{
+        Aabb, Circle, MAX_COORD, Owner, Segment, SegmentFlags, TemporarySegment, Vec2,
+    };
+
+    fn room() -> tileslide::TileMap {
+        let mut map = ascii::parse("###\n#.#\n###", "room.txt", 0.5).unwrap();
+        map.add_temporary(TemporarySegment {
+            segment: Segment::new(Vec2::new(MAX_COORD, 0.0), Vec2::new(MAX_COORD, 1.0)),
+            normal: Vec2::new(-1.0, 0.0),
+            flags: SegmentFlags::SOLID,
+            owner: Owner(3),
+            velocity: Vec2::ZERO,
+        })
+        .unwrap();
+        map
+    }
+
+    /// Every active and temporary segment of the map.
+    fn all(map: &tileslide::TileMap) -> usize {
+        map.segments_overlapping_aabb(&Aabb::from_corners(
+            Vec2::splat(-MAX_COORD),
+            Vec2::splat(MAX_COORD),
+        ))
+        .len()
+    }
+
+    #[test]
+    fn a_box_of_any_finite_size_finds_what_it_covers() {
+        let map = room();
+        let every = all(&map);
+        assert!(every > 5, "{every}");
+        let huge = Aabb::from_corners(Vec2::splat(-f32::MAX), Vec2::splat(f32::MAX));
+        assert_eq!(map.segments_overlapping_aabb(&huge).len(), every);
+        let half = Aabb::from_corners(Vec2::new(-3e38, -3e38), Vec2::new(0.75, 3e38));
+        let found = map.segments_overlapping_aabb(&half);
+        assert!(!found.is_empty() && found.len() < every, "{}", found.len());
+        // A box wholly beyond the range touches nothing, not even what lies on its edge.
+        let beyond = Aabb::from_corners(Vec2::new(MAX_COORD * 2.0, -1e30), Vec2::splat(1e38));
+        assert!(map.segments_overlapping_aabb(&beyond).is_empty());
+    }
+
+    #[test]
+    fn a_circle_of_any_finite_centre_and_radius_finds_what_it_covers() {
+        let map = room();
+        let every = all(&map);
+        let huge = Circle::new(Vec2::ZERO, 3e38);
+        assert_eq!(map.segments_overlapping_circle(&huge).len(), every);
+        // Centred far out on the room's middle row: a radius of exactly the distance to the
+        // room's left side (x = 0) touches it, and the room (within the f64 test's
+        // resolution there, 1e20 · 2⁻⁵³ ≈ 1e4), but not the temporary segment 2²⁴ away;
+        // one float less (8.8e12) touches nothing.
+        let far = Circle::new(Vec2::new(-1e20, 0.75), 1e20);
+        let found = map.segments_overlapping_circle(&far);
+        assert!(
+            found
+                .iter()
+                .any(|o| o.segment.a.x == 0.0 && o.segment.b.x == 0.0),
+            "{found:?}"
+        );
+        assert!(found.iter().all(|o| o.segment.a.x <= 1.5), "{found:?}");
+        let short = Circle::new(Vec2::new(-1e20, 0.75), 1e20f32.next_down());
+        assert!(map.segments_overlapping_circle(&short).is_empty());
+    }
+
+    #[test]
+    fn points_far_out_are_not_solid() {
+        let map = room();
+        assert!(map.is_point_solid(Vec2::new(0.25, 0.25)));
+        for p in [
+            Vec2::splat(f32::MAX),
+            Vec2::new(-3e38, 0.25),
+            Vec2::new(0.25, 1e30),
+        ] {
+            assert!(!map.is_point_solid(p), "{p}");
+        }
+    }
+}

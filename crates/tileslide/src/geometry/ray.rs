@@ -66,7 +66,14 @@ pub struct RaySegmentHit {
 ///   wall still hits the wall, whose end point it meets at an angle. "Parallel" means moving
 ///   across the segment's line by less than [`PARALLEL_TOLERANCE`] segment lengths over
 ///   the ray's whole length, where the intersection is lost to rounding;
-/// - a zero-length ray or a zero-length segment never hits (the denominator is zero).
+/// - a zero-length ray or a zero-length segment never hits (the denominator is zero), nor
+///   does a ray or segment with a NaN or infinite coordinate;
+/// - every finite input has an answer: no product can overflow. Up to [`NARROW`] in every
+///   coordinate of the origin, `delta` and the segment, the kernel runs in `f32` (its
+///   products stay below 2¹²³); beyond, the same rule runs in `f64`, where the product of
+///   any two `f32` values is exact and no sum of them overflows, and `t`, `s` are rounded to
+///   `f32` at the end (so `t` may come out subnormal, or 0 for a hit closer to the origin
+///   than 2⁻¹⁴⁹ of the ray's length).
 ///
 /// ```
 /// # use tileslide::{cast_ray_segment, Ray, Segment, Vec2};
@@ -80,8 +87,55 @@ pub struct RaySegmentHit {
 #[must_use]
 pub fn cast_ray_segment(ray: &Ray, segment: &Segment) -> Option<RaySegmentHit> {
     let e = segment.delta();
-    let (t, s) = solve(ray.origin, ray.delta, segment.a, e)?;
+    let (t, s) = solve_any(ray.origin, ray.delta, segment.a, e)?;
     Some(RaySegmentHit { t, s })
+}
+
+/// The largest coordinate magnitude (2⁶⁰) up to which [`cast_ray_segment`] solves in `f32`:
+/// then `a − origin` stays below 2⁶¹ and every cross product below 2¹²³, far from
+/// `f32::MAX`.
+pub(crate) const NARROW: f32 = 1_152_921_504_606_846_976.0;
+
+/// True when every coordinate of `v` is at most [`NARROW`] in magnitude (false for NaN).
+#[inline(always)]
+pub(crate) fn narrow(v: Vec2) -> bool {
+    v.x.abs() <= NARROW && v.y.abs() <= NARROW
+}
+
+/// [`solve`] where every input is [`narrow`], [`solve_wide`] otherwise: the kernel
+/// `cast_ray_segment` uses, and every ray query for a ray that is not narrow, so that all
+/// of them agree bit for bit on every input.
+#[inline]
+pub(crate) fn solve_any(origin: Vec2, delta: Vec2, a: Vec2, e: Vec2) -> Option<(f32, f32)> {
+    if narrow(origin) && narrow(delta) && narrow(a) && narrow(e) {
+        solve(origin, delta, a, e)
+    } else {
+        solve_wide(origin, delta, a, e)
+    }
+}
+
+/// [`solve`]'s rule in `f64`, for inputs whose `f32` products could overflow. The products
+/// of two `f32` values are exact in `f64` (48 bits of 53) and at most about 10⁷⁷, so
+/// nothing overflows; `t` and `s` are the `f64` quotients rounded to `f32`, which keeps
+/// them in `[0, 1]`.
+#[inline(never)]
+pub(crate) fn solve_wide(origin: Vec2, delta: Vec2, a: Vec2, e: Vec2) -> Option<(f32, f32)> {
+    if !(origin.is_finite() && delta.is_finite() && a.is_finite() && e.is_finite()) {
+        return None;
+    }
+    let (origin, delta, a, e) = (
+        origin.as_dvec2(),
+        delta.as_dvec2(),
+        a.as_dvec2(),
+        e.as_dvec2(),
+    );
+    let den = delta.perp_dot(e);
+    let w = a - origin;
+    let sign = 1.0f64.copysign(den);
+    let (den, tn, sn) = (den * sign, w.perp_dot(e) * sign, w.perp_dot(delta) * sign);
+    let crossing = den > f64::from(PARALLEL_TOLERANCE) * e.length_squared();
+    let inside = crossing && tn >= 0.0 && tn <= den && sn >= 0.0 && sn <= den;
+    inside.then(|| ((tn / den) as f32, (sn / den) as f32))
 }
 
 /// The shared kernel of every ray–segment test in the crate (the grid walk calls it with
@@ -214,6 +268,52 @@ mod tests {
             };
             let hit = cast_ray_segment(&ray, &wall);
             assert!(hit.is_some(), "length {length}");
+        }
+    }
+
+    #[test]
+    fn far_out_ray_never_reports_nan() {
+        // Around 1e27 the f32 products overflowed to infinity, and `tn = den = inf` passed
+        // the range test as a hit at t = NaN.
+        let wall = Segment::new(v(2.0, 0.0), v(2.0, 3.0));
+        for scale in [1e19f32, 1e25, 1e27, 1e30, f32::MAX / 2.0] {
+            for (origin, delta) in [
+                (v(-scale, 1.0), v(2.0 * scale, 0.0)),
+                (v(-scale, -scale), v(2.0 * scale, 2.0 * scale + 3.0)),
+                (v(1.0, 1.0), v(scale, scale * 1e-20)),
+            ] {
+                let hit = cast_ray_segment(&Ray { origin, delta }, &wall);
+                if let Some(h) = hit {
+                    assert!((0.0..=1.0).contains(&h.t), "{scale}: {h:?}");
+                    assert!((0.0..=1.0).contains(&h.s), "{scale}: {h:?}");
+                }
+            }
+            let hit = cast_ray_segment(
+                &Ray {
+                    origin: v(-scale, 1.0),
+                    delta: v(2.0 * scale, 0.0),
+                },
+                &wall,
+            )
+            .unwrap();
+            assert_eq!(hit.t, 0.5, "{scale}");
+        }
+        // Past `NARROW` in the segment too (a short ray would be parallel to it: it moves
+        // across its line by less than 1e-5 of its length).
+        let huge = Segment::new(v(2e30, -1e30), v(2e30, 1e30));
+        let hit = cast_ray_segment(&Ray::between(v(0.0, 0.0), v(4e30, 0.0)), &huge).unwrap();
+        assert_eq!((hit.t, hit.s), (0.5, 0.5));
+    }
+
+    #[test]
+    fn wide_kernel_agrees_with_the_narrow_one_where_both_are_exact() {
+        // Dyadic inputs whose products are exact in f32 too: both kernels give the same bits.
+        for (o, d, a, e) in [
+            (v(0.0, 0.0), v(4.0, 4.0), v(0.0, 2.0), v(4.0, 0.0)),
+            (v(0.5, 1.0), v(8.0, 0.0), v(2.0, -1.0), v(0.0, 2.0)),
+            (v(1.0, 1.0), v(-3.0, 5.0), v(-4.0, 3.0), v(6.0, 1.0)),
+        ] {
+            assert_eq!(solve(o, d, a, e), solve_wide(o, d, a, e));
         }
     }
 

@@ -8,9 +8,16 @@
 use glam::Vec2;
 
 use super::{Faces, RayFilter, SegmentSource};
-use crate::geometry::{Aabb, Segment, SweepHit, sweep_circle_segment};
+use crate::MAX_COORD;
+use crate::geometry::{Aabb, Segment, SweepHit, in_range, sweep_circle_segment};
 use crate::tiles::store::{CAP_A, CAP_B, HotSegment};
 use crate::tiles::{SegmentFlags, SegmentRef, TileId, TileMap};
+
+/// The longest motion along an axis that a circle cast sweeps as given: 2²⁷. From a
+/// centre within `MAX_COORD` it reaches past `2·MAX_COORD`, beyond which no circle of
+/// radius up to `MAX_COORD` touches a segment; up to it the sweep's squared lengths and
+/// products stay far from `f32::MAX`.
+const MAX_CAST_MOTION: f32 = 134_217_728.0;
 
 /// A circle cast's first contact.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -107,6 +114,14 @@ impl TileMap {
     /// `t`, temporary segments win, then cells row by row. A non-finite input or a radius
     /// that is not positive hits nothing.
     ///
+    /// Range: a motion of any finite length is checked whole. Every segment lies within
+    /// [`MAX_COORD`](crate::MAX_COORD) of the origin, so a circle of radius at most
+    /// `MAX_COORD` can touch one only while its centre is within `2·MAX_COORD`; a motion
+    /// longer than 2²⁷ along an axis is first scaled down by a power of two (exactly) to
+    /// at most 2²⁷, which still carries a centre from within `MAX_COORD` out of that box,
+    /// and the hit's `t` is scaled back. A centre or radius beyond `MAX_COORD` lies outside
+    /// the range tileslide handles and hits nothing.
+    ///
     /// ```
     /// # use tileslide::{io::ascii, RayFilter, Vec2};
     /// let map = ascii::parse("\
@@ -129,9 +144,20 @@ impl TileMap {
         motion: Vec2,
         filter: &RayFilter,
     ) -> Option<CircleHit> {
-        if !(center.is_finite() && motion.is_finite() && radius > 0.0 && radius.is_finite()) {
+        if !(in_range(center) && radius > 0.0 && radius <= MAX_COORD && motion.is_finite()) {
             return None;
         }
+        // The part of the motion where a contact can be, as `motion · 2^-k` (exact but for
+        // components that underflow, which move nothing that matters); `t` along it is
+        // `t · 2^k` along the motion.
+        let longest = motion.x.abs().max(motion.y.abs());
+        let k = if longest > MAX_CAST_MOTION {
+            (longest / MAX_CAST_MOTION).log2().ceil() as i32
+        } else {
+            0
+        };
+        let t_scale = 2f32.powi(-k);
+        let motion = motion * t_scale;
         let swept = Aabb::from_corners(center, center + motion).expand(radius);
         let mut walls = Vec::new();
         self.walls_in(&swept, filter, &mut walls);
@@ -152,7 +178,7 @@ impl TileMap {
         best.map(|(hit, wall)| {
             let at = center + motion * hit.t;
             CircleHit {
-                t: hit.t,
+                t: hit.t * t_scale,
                 center: at,
                 normal: hit.normal,
                 point: at - hit.normal * radius,

@@ -1,7 +1,8 @@
-use glam::Vec2;
+use glam::{DVec2, Vec2};
 
 use super::SegmentSource;
-use crate::geometry::{Aabb, Circle, Segment};
+use crate::MAX_COORD;
+use crate::geometry::{Aabb, Circle, Segment, in_range};
 use crate::tiles::{Cell, SegmentFlags, SegmentRef, TileId, TileMap};
 
 /// A segment found by an overlap query.
@@ -57,18 +58,58 @@ impl TileMap {
     /// Active and temporary segments that share a point with the closed box. A box with a
     /// NaN or infinite coordinate, or with `min > max`, overlaps nothing.
     #[must_use]
+    ///
+    /// A box of any finite size is answered: every segment lies within
+    /// [`MAX_COORD`](crate::MAX_COORD), so the box is first cut to that range (which
+    /// changes no answer), and nothing computed from it can overflow.
     pub fn segments_overlapping_aabb(&self, aabb: &Aabb) -> Vec<SegmentOverlap> {
-        self.segments_overlapping(aabb, |s| aabb.overlaps_segment(s))
+        if !aabb.is_valid() {
+            return Vec::new();
+        }
+        let range = Vec2::splat(MAX_COORD);
+        if aabb.min.cmpgt(range).any() || aabb.max.cmplt(-range).any() {
+            return Vec::new();
+        }
+        let cut = Aabb {
+            min: aabb.min.clamp(-range, range),
+            max: aabb.max.clamp(-range, range),
+        };
+        self.segments_overlapping(&cut, |s| cut.overlaps_segment(s))
     }
 
     /// Active and temporary segments that share a point with the disc. A circle with a
     /// non-finite centre or radius, or a negative radius, overlaps nothing.
     #[must_use]
+    ///
+    /// A circle of any finite centre and radius is answered: within
+    /// [`MAX_COORD`](crate::MAX_COORD) by the `f32` test of [`Circle::overlaps_segment`],
+    /// beyond by the same test in `f64` (where the squares of `f32` values cannot
+    /// overflow), on the cells of its box cut to the range where segments lie.
     pub fn segments_overlapping_circle(&self, circle: &Circle) -> Vec<SegmentOverlap> {
-        if !(circle.radius >= 0.0 && circle.radius.is_finite()) {
+        if !(circle.radius >= 0.0 && circle.radius.is_finite() && circle.center.is_finite()) {
             return Vec::new();
         }
-        self.segments_overlapping(&circle.aabb(), |s| circle.overlaps_segment(s))
+        if in_range(circle.center) && circle.radius <= MAX_COORD {
+            return self.segments_overlapping(&circle.aabb(), |s| circle.overlaps_segment(s));
+        }
+        let range = DVec2::splat(f64::from(MAX_COORD));
+        let (c, r) = (circle.center.as_dvec2(), f64::from(circle.radius));
+        let bounds = Aabb {
+            min: (c - r).clamp(-range, range).as_vec2(),
+            max: (c + r).clamp(-range, range).as_vec2(),
+        };
+        self.segments_overlapping(&bounds, |s| {
+            // The closest point of the segment to the centre, as `distance_squared_to`
+            // finds it, in f64.
+            let (a, e) = (s.a.as_dvec2(), s.delta().as_dvec2());
+            let len2 = e.length_squared();
+            let u = if len2 > 0.0 {
+                ((c - a).dot(e) / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            (a + e * u).distance_squared(c) <= r * r
+        })
     }
 
     fn segments_overlapping(

@@ -332,7 +332,8 @@ impl TileMap {
                 height,
             };
             let (fits, s) = WalkStart::lane(&grid, 1.0);
-            let finite = p0.is_finite() & delta.is_finite();
+            // (Ordinary rays are finite; the others are `cast_ray`'s to answer.)
+            let ordinary = grid.is_ordinary();
             group.o_x[k] = s.o.x;
             group.o_y[k] = s.o.y;
             group.inv_x[k] = s.inv.x;
@@ -349,7 +350,7 @@ impl TileMap {
             group.enter_x[k] = s.enter_x.into();
             group.enter_y[k] = s.enter_y.into();
             group.entered[k] = 0;
-            group.status[k] = if fits & finite { WALKING } else { SCALAR };
+            group.status[k] = if fits & ordinary { WALKING } else { SCALAR };
         }
         for (k, ray) in group.ray.iter_mut().enumerate() {
             *ray = first + k;
@@ -381,7 +382,7 @@ impl TileMap {
             Some(t) => {
                 let kind = self.store.kinds().get(index).copied();
                 let i = face_index(kind.unwrap_or(KIND_GENERAL), face);
-                *slot = Some(self.face_hit(cell, index, i, face, t, ray.origin, ray.delta));
+                *slot = Some(self.face_hit(cell, index, i, face, t, ray.origin + ray.delta * t));
             }
             None => *slot = self.cast_ray(ray, filter),
         }

@@ -1,13 +1,14 @@
 use std::cell::LazyCell;
 
-use glam::Vec2;
+use glam::{DVec2, Vec2};
 
 use super::fast_walk::{FastWalk, WalkData, fast_walk};
 use super::segment_test::{SegmentTest, cell_segments};
-use super::traversal::{GridRay, walk};
+use super::traversal::{GridRay, TOUCH_TOLERANCE, walk};
 use super::{RayFilter, RayHit, SegmentSource};
 use crate::geometry::Ray;
-use crate::geometry::ray::solve;
+use crate::geometry::in_range;
+use crate::geometry::ray::{solve, solve_wide};
 use crate::tiles::SegmentRef;
 use crate::tiles::face_kind::{face_index, face_normal, face_segment};
 use crate::tiles::{Cell, SegmentFlags, TileId, TileMap};
@@ -32,7 +33,12 @@ impl TileMap {
     ///   away from it is not stopped by it (for that motion it is a back face), unless the
     ///   filter is [`Faces::Both`];
     /// - a zero-length ray, or one with a NaN or infinite coordinate, hits nothing;
-    /// - on equal `t`, the first found wins: temporary segments, then cells in walk order.
+    /// - on equal `t`, the first found wins: temporary segments, then cells in walk order;
+    /// - every finite ray is answered, however far or long: a ray that starts far from the
+    ///   map, or whose motion is longer than 2³² or shorter than 2⁻³² cells along an axis,
+    ///   is solved in `f64` on the part of it that crosses the map, with no early stop, and
+    ///   its hit point is taken on the segment; from an origin beyond
+    ///   [`MAX_COORD`](crate::MAX_COORD) every cell is tested (see `docs/ray-casting.md`).
     ///
     /// [`cast_ray_segment`]: crate::cast_ray_segment
     /// [`Faces::Both`]: crate::Faces::Both
@@ -52,21 +58,22 @@ impl TileMap {
     #[must_use]
     pub fn cast_ray(&self, ray: Ray, filter: &RayFilter) -> Option<RayHit> {
         let (p0, delta) = (ray.origin, ray.delta);
-        if !(p0.is_finite() && delta.is_finite()) {
-            return None;
+        let grid = self.grid_ray(p0, delta);
+        // (False for a NaN or infinite coordinate too: the wide path answers those.)
+        if !grid.is_ordinary() {
+            return self.cast_ray_wide(p0, delta, filter);
         }
         let mut best_t = f32::INFINITY;
         let mut best: Option<Found> = None;
         // Temporary segments first (none: no cost); their nearest hit shortens the walk.
         if !self.temporaries.is_empty() {
-            for (index, t) in self.temporary_hits(p0, delta, filter) {
+            for (index, t, _) in self.temporary_hits(p0, delta, filter, false) {
                 if t < best_t {
                     best_t = t;
                     best = Some(Found::Temporary(index));
                 }
             }
         }
-        let grid = self.grid_ray(p0, delta);
         // Built only if some cell's segments are tested: a face hit needs none.
         let test = LazyCell::new(|| SegmentTest::new(p0, delta, filter));
         let by_faces = SegmentTest::decides_by_faces(filter);
@@ -123,12 +130,13 @@ impl TileMap {
         if fallback && let Some(found) = self.general_walk(&grid, &test, limit, &mut best_t) {
             best = Some(found);
         }
-        best.map(|found| self.make_hit(found, best_t, p0, delta))
+        best.map(|found| self.make_hit(found, best_t, p0 + delta * best_t))
     }
 
-    /// Every segment the ray hits, sorted by `t` (ties: temporary segments first, then by
-    /// cell row, column and index), each once.
-    /// Same rules as [`cast_ray`](Self::cast_ray).
+    /// Every segment the ray hits, sorted by `t`, each once. Ties keep the order in which
+    /// [`cast_ray`](Self::cast_ray) meets them (temporary segments first, then cells in
+    /// walk order, each cell's segments by index), so the first hit is always exactly
+    /// `cast_ray`'s. Same rules as `cast_ray`.
     #[must_use]
     pub fn cast_ray_all(&self, ray: Ray, filter: &RayFilter) -> Vec<RayHit> {
         let mut out = Vec::new();
@@ -140,38 +148,165 @@ impl TileMap {
     pub fn cast_ray_all_into(&self, ray: Ray, filter: &RayFilter, out: &mut Vec<RayHit>) {
         out.clear();
         let (p0, delta) = (ray.origin, ray.delta);
+        let grid = self.grid_ray(p0, delta);
+        let wide = !grid.is_ordinary();
         if !(p0.is_finite() && delta.is_finite()) {
             return;
         }
-        for (index, t) in self.temporary_hits(p0, delta, filter) {
-            out.push(self.make_hit(Found::Temporary(index), t, p0, delta));
+        for (index, t, point) in self.temporary_hits(p0, delta, filter, wide) {
+            out.push(self.make_hit(Found::Temporary(index), t, point));
         }
         let test = SegmentTest::new(p0, delta, filter);
-        let starts = self.store.starts();
-        let hot = self.store.hot();
-        walk(&self.grid_ray(p0, delta), 1.0, |index, _| {
+        let (starts, hot) = (self.store.starts(), self.store.hot());
+        let mut visit = |index: usize| {
             for (i, s) in cell_segments(starts, hot, index).iter().enumerate() {
-                if let Some(t) = test.hit(s) {
+                let hit = if wide {
+                    test.hit_wide(s)
+                } else {
+                    test.hit(s).map(|t| (t, p0 + delta * t))
+                };
+                if let Some((t, point)) = hit {
                     let found = Found::Tile(self.cell_of(index), index, i as u32);
-                    out.push(self.make_hit(found, t, p0, delta));
+                    out.push(self.make_hit(found, t, point));
                 }
             }
+        };
+        if wide {
+            self.wide_cells(p0, delta, visit);
+        } else {
+            walk(&grid, 1.0, |index, _| {
+                visit(index);
+                false
+            });
+        }
+        // By `t` alone, keeping the order found (a stable sort; `t` is never NaN, and -0 and
+        // +0 count as equal, as they do for `cast_ray`). A cell can be visited twice (a
+        // start cell that is also a corner's side cell): its hits are then identical, in
+        // one run of equal `t`, and are reported once.
+        out.sort_by(|a, b| a.t.partial_cmp(&b.t).unwrap_or(std::cmp::Ordering::Equal));
+        let mut kept = 0;
+        for i in 0..out.len() {
+            let hit = out[i];
+            let seen = out[..kept]
+                .iter()
+                .rev()
+                .take_while(|k| k.t == hit.t)
+                .any(|k| k.source == hit.source);
+            if !seen {
+                out[kept] = hit;
+                kept += 1;
+            }
+        }
+        out.truncate(kept);
+    }
+
+    /// [`cast_ray`](Self::cast_ray) for a ray the `f32` walks do not take (see
+    /// `GridRay::is_ordinary`): one that starts far from the map, or whose motion is
+    /// longer than 2³² or shorter than 2⁻³² cells along an axis, or that is not finite.
+    /// Every segment it may meet is solved in `f64` (`solve_wide`), with no early stop:
+    /// the nearest hit, the first found of equals, in the order `cast_ray_all` lists them.
+    #[inline(never)]
+    fn cast_ray_wide(&self, p0: Vec2, delta: Vec2, filter: &RayFilter) -> Option<RayHit> {
+        if !(p0.is_finite() && delta.is_finite()) {
+            return None;
+        }
+        let mut best: Option<(Found, f32, Vec2)> = None;
+        let mut consider = |found: Found, t: f32, point: Vec2| {
+            if best.is_none_or(|(_, b, _)| t < b) {
+                best = Some((found, t, point));
+            }
+        };
+        for (index, t, point) in self.temporary_hits(p0, delta, filter, true) {
+            consider(Found::Temporary(index), t, point);
+        }
+        let test = SegmentTest::new(p0, delta, filter);
+        let (starts, hot) = (self.store.starts(), self.store.hot());
+        self.wide_cells(p0, delta, |index| {
+            for (i, s) in cell_segments(starts, hot, index).iter().enumerate() {
+                if let Some((t, point)) = test.hit_wide(s) {
+                    consider(Found::Tile(self.cell_of(index), index, i as u32), t, point);
+                }
+            }
+        });
+        best.map(|(found, t, point)| self.make_hit(found, t, point))
+    }
+
+    /// Calls `visit` with the index of every cell a finite ray that is not ordinary may
+    /// hit a segment in, in walk order (a cell may come twice).
+    ///
+    /// From an origin within [`MAX_COORD`](crate::MAX_COORD), the ray is first clipped in
+    /// `f64` to the map's rectangle widened by the touch tolerance, where the products of
+    /// `f32` values are exact and nothing overflows; the clipped piece, in grid units,
+    /// lies within the map (so `f32` holds it as well as any ray inside the map) and is
+    /// walked to its end. From farther out, the `f64` line itself is too coarse near the
+    /// map (an `f64` keeps 53 bits of the origin's magnitude) to say which cells it
+    /// crosses, so every cell is visited: such an origin is outside the range tileslide
+    /// handles, and the answer is then the `f64` kernel's on every segment.
+    fn wide_cells(&self, p0: Vec2, delta: Vec2, mut visit: impl FnMut(usize)) {
+        if !in_range(p0) {
+            (0..self.width() as usize * self.height() as usize).for_each(visit);
+            return;
+        }
+        let Some(clipped) = self.clipped_grid_ray(p0, delta) else {
+            return;
+        };
+        if clipped.delta == Vec2::ZERO {
+            // Shorter than the smallest f32 in cells: the cells around its one point.
+            let o = clipped.origin;
+            let range = |v: f32, n: u32| {
+                let cell = |v: f32| (v.floor().max(0.0) as u32).min(n - 1);
+                cell(v - TOUCH_TOLERANCE)..=cell(v + TOUCH_TOLERANCE)
+            };
+            for row in range(o.y, self.height()) {
+                for col in range(o.x, self.width()) {
+                    visit(row as usize * self.width() as usize + col as usize);
+                }
+            }
+            return;
+        }
+        walk(&clipped, 1.0, |index, _| {
+            visit(index);
             false
         });
-        // By `t`, then temporary segments first, then by cell and index. A cell can be
-        // visited twice (a start cell that is also a corner's side cell): its hits are then
-        // identical and adjacent after the sort, and are reported once.
-        let key = |h: &RayHit| match h.source {
-            SegmentSource::Temporary { index, .. } => (0, index, 0, 0),
-            SegmentSource::Tile { segment, .. } => (
-                1,
-                segment.cell.row as usize,
-                segment.cell.col,
-                segment.index,
-            ),
-        };
-        out.sort_by(|a, b| a.t.total_cmp(&b.t).then_with(|| key(a).cmp(&key(b))));
-        out.dedup_by(|a, b| a.t == b.t && key(a) == key(b));
+    }
+
+    /// The part of the ray from `p0` (within `MAX_COORD`) by `delta` inside the map's
+    /// rectangle widened by twice the touch tolerance, in grid units, computed in `f64`;
+    /// `None` when the ray misses that rectangle.
+    fn clipped_grid_ray(&self, p0: Vec2, delta: Vec2) -> Option<GridRay> {
+        // (Subtracted in f64: in f32 the origin's rounding would move the line by up to a
+        // unit at 2²⁴.)
+        let (o, d) = (p0.as_dvec2() - self.origin().as_dvec2(), delta.as_dvec2());
+        let cell = self.cell_size().as_dvec2();
+        let size = DVec2::new(f64::from(self.width()), f64::from(self.height())) * cell;
+        let margin = cell * f64::from(2.0 * TOUCH_TOLERANCE);
+        let (lo, hi) = (-margin, size + margin);
+        let (mut t_lo, mut t_hi) = (0.0f64, 1.0f64);
+        for axis in 0..2 {
+            if d[axis] == 0.0 {
+                if !(o[axis] >= lo[axis] && o[axis] <= hi[axis]) {
+                    return None;
+                }
+            } else {
+                let (t0, t1) = (
+                    (lo[axis] - o[axis]) / d[axis],
+                    (hi[axis] - o[axis]) / d[axis],
+                );
+                t_lo = t_lo.max(t0.min(t1));
+                t_hi = t_hi.min(t0.max(t1));
+            }
+        }
+        if t_lo > t_hi {
+            return None;
+        }
+        let start = o + d * t_lo;
+        let end = o + d * t_hi;
+        Some(GridRay {
+            origin: (start / cell).as_vec2(),
+            delta: ((end - start) / cell).as_vec2(),
+            width: self.width(),
+            height: self.height(),
+        })
     }
 
     /// The closest-hit walk for the rays the fast walk declines (kept out of line so the
@@ -224,8 +359,8 @@ impl TileMap {
         }
     }
 
-    fn make_hit(&self, found: Found, t: f32, p0: Vec2, delta: Vec2) -> RayHit {
-        let point = p0 + delta * t;
+    /// The hit on `found` at `t` and `point`.
+    fn make_hit(&self, found: Found, t: f32, point: Vec2) -> RayHit {
         match found {
             Found::Temporary(index) => {
                 let tmp = &self.temporaries[index];
@@ -241,7 +376,7 @@ impl TileMap {
                     },
                 }
             }
-            Found::Face(cell, index, i, face) => self.face_hit(cell, index, i, face, t, p0, delta),
+            Found::Face(cell, index, i, face) => self.face_hit(cell, index, i, face, t, point),
             Found::Tile(cell, index, i) => {
                 let s = cell_segments(self.store.starts(), self.store.hot(), index)[i as usize];
                 RayHit {
@@ -258,11 +393,10 @@ impl TileMap {
         }
     }
 
-    /// The hit on whole-edge face `face` (segment `i` of the cell at `index`) at `t`.
-    /// Always inlined: built in place, the hit goes straight to where the caller keeps it
-    /// (a hit returned through memory and copied cost the batch cast 12 %, in stalled
-    /// loads of the just-written fields).
-    #[allow(clippy::too_many_arguments)]
+    /// The hit on whole-edge face `face` (segment `i` of the cell at `index`) at `t` and
+    /// `point`. Always inlined: built in place, the hit goes straight to where the caller
+    /// keeps it (a hit returned through memory and copied cost the batch cast 12 %, in
+    /// stalled loads of the just-written fields).
     #[inline(always)]
     pub(super) fn face_hit(
         &self,
@@ -271,12 +405,11 @@ impl TileMap {
         i: u32,
         face: u8,
         t: f32,
-        p0: Vec2,
-        delta: Vec2,
+        point: Vec2,
     ) -> RayHit {
         RayHit {
             t,
-            point: p0 + delta * t,
+            point,
             normal: face_normal(face),
             flags: SegmentFlags::SOLID,
             source: SegmentSource::Tile {
@@ -286,13 +419,16 @@ impl TileMap {
         }
     }
 
-    /// The temporary segments `filter` lets a ray from `p0` by `delta` hit: (index, t).
+    /// The temporary segments `filter` lets a ray from `p0` by `delta` hit: (index, t,
+    /// point), by the `f64` kernel when `wide` (see [`cast_ray_wide`](Self::cast_ray_wide)),
+    /// with the point then taken on the segment as `SegmentTest::hit_wide` takes it.
     fn temporary_hits(
         &self,
         p0: Vec2,
         delta: Vec2,
         filter: &RayFilter,
-    ) -> impl Iterator<Item = (usize, f32)> {
+        wide: bool,
+    ) -> impl Iterator<Item = (usize, f32, Vec2)> {
         let face_dir = filter.face_direction(delta);
         self.temporaries
             .iter()
@@ -305,7 +441,12 @@ impl TileMap {
                     return None;
                 }
                 let e = tmp.segment.b - tmp.segment.a;
-                solve(p0, delta, tmp.segment.a, e).map(|(t, _)| (index, t))
+                let a = tmp.segment.a;
+                if wide {
+                    solve_wide(p0, delta, a, e).map(|(t, s)| (index, t, a + e * s))
+                } else {
+                    solve(p0, delta, a, e).map(|(t, _)| (index, t, p0 + delta * t))
+                }
             })
     }
 }

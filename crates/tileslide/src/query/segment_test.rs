@@ -3,7 +3,7 @@
 use glam::Vec2;
 
 use super::{Faces, RayFilter};
-use crate::geometry::ray::solve_parts;
+use crate::geometry::ray::{solve_parts, solve_wide};
 use crate::tiles::SegmentFlags;
 use crate::tiles::store::{HotSegment, NO_SEGMENTS};
 
@@ -44,10 +44,16 @@ impl SegmentTest {
     /// meaningless when the first is false).
     #[inline(always)]
     fn test(&self, s: &HotSegment) -> (bool, f32) {
+        let (inside, tn, _, den) = solve_parts(self.p0, self.delta, s.a, s.e);
+        (self.passes(s) & inside, tn / den)
+    }
+
+    /// Whether the filter lets the ray hit `s` (its face and mask).
+    #[inline(always)]
+    fn passes(&self, s: &HotSegment) -> bool {
         let face_ok = s.normal.dot(self.face_dir) < self.face_limit;
         let mask_ok = s.flags.0 & self.mask != 0;
-        let (inside, tn, _, den) = solve_parts(self.p0, self.delta, s.a, s.e);
-        (face_ok & mask_ok & inside, tn / den)
+        face_ok & mask_ok
     }
 
     /// `t` where the ray hits `s`, if the filter lets it.
@@ -55,6 +61,17 @@ impl SegmentTest {
     pub fn hit(&self, s: &HotSegment) -> Option<f32> {
         let (ok, t) = self.test(s);
         ok.then_some(t)
+    }
+
+    /// `t` and the point where the ray hits `s` by the `f64` kernel, if the filter lets it:
+    /// for rays the `f32` walks do not take (`GridRay::is_ordinary`). The point is taken
+    /// on the segment (`a + s·e`): on such a ray `origin + t·delta` can lose every bit to
+    /// the origin's magnitude or to a subnormal `t`.
+    pub fn hit_wide(&self, s: &HotSegment) -> Option<(f32, Vec2)> {
+        if !self.passes(s) {
+            return None;
+        }
+        solve_wide(self.p0, self.delta, s.a, s.e).map(|(t, u)| (t, s.a + s.e * u))
     }
 
     /// Tests `segs`; if one is hit before `best_t`, lowers `best_t` and returns the index of

@@ -39,7 +39,41 @@ pub(crate) struct GridRay {
     pub height: u32,
 }
 
+/// How far outside the map (in cells, beyond its larger side) a ray may start and still
+/// be walked in `f32` (see [`GridRay::is_ordinary`]).
+const ORDINARY_MARGIN: f32 = 8.0;
+/// The longest motion along an axis (in cells) walked in `f32`: 2³². Longer rays, and the
+/// world lengths they stand for (at most 2³² cells of at most 2²⁵ units, within
+/// `geometry::ray::NARROW`), keep every crossing fraction and its inverse normal.
+const ORDINARY_MAX_DELTA: f32 = 4_294_967_296.0;
+/// The shortest non-zero motion along an axis (in cells) walked in `f32`: 2⁻³², so that
+/// `1 / delta` stays finite.
+const ORDINARY_MIN_DELTA: f32 = 1.0 / 4_294_967_296.0;
+
 impl GridRay {
+    /// Whether the walks in `f32` (`fast_walk`, [`walk`], the batch) and the `f32` ray–segment
+    /// kernel answer this ray: it starts within the map's larger side plus
+    /// [`ORDINARY_MARGIN`] cells of the map, and each axis of its motion is 0 or between
+    /// [`ORDINARY_MIN_DELTA`] and [`ORDINARY_MAX_DELTA`] cells. There the grid coordinates
+    /// keep the precision the touch tolerance assumes, nothing overflows, and the world
+    /// coordinates stay within `geometry::ray::NARROW`. False for NaN and infinities.
+    /// Other rays take the `f64` path (`TileMap::cast_ray_wide`). No branch: the batch
+    /// evaluates it in SIMD lanes.
+    // `&` rather than `contains`' `&&`: no branch, as the batch's lanes want.
+    #[allow(clippy::manual_range_contains)]
+    #[inline(always)]
+    pub fn is_ordinary(&self) -> bool {
+        let (w, h) = (self.width as f32, self.height as f32);
+        let margin = if w > h { w } else { h } + ORDINARY_MARGIN;
+        let o = self.origin;
+        let near = (o.x >= -margin) & (o.x <= w + margin) & (o.y >= -margin) & (o.y <= h + margin);
+        let length_ok = |x: f32| {
+            let a = x.abs();
+            (x == 0.0) | ((a >= ORDINARY_MIN_DELTA) & (a <= ORDINARY_MAX_DELTA))
+        };
+        near & length_ok(self.delta.x) & length_ok(self.delta.y)
+    }
+
     /// [`TOUCH_TOLERANCE`] as a ray fraction, along the faster-moving axis (0 for a
     /// zero-length ray).
     pub fn tolerance_t(&self) -> f32 {

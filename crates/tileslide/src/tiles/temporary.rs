@@ -2,7 +2,7 @@ use glam::Vec2;
 use thiserror::Error;
 
 use super::SegmentFlags;
-use crate::geometry::{Segment, unit_normal};
+use crate::geometry::{Segment, in_range, unit_normal};
 
 /// Who submitted a temporary segment: any number the game uses for its objects.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -26,7 +26,7 @@ pub struct TemporarySegment {
 }
 
 /// Why a temporary segment was refused.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Error)]
+#[derive(Clone, Copy, Debug, PartialEq, Error)]
 pub enum TemporaryError {
     /// A coordinate, normal or velocity component is NaN or infinite.
     #[error("temporary segment of owner {} has a non-finite coordinate, normal or velocity", .0.0)]
@@ -37,14 +37,41 @@ pub enum TemporaryError {
     /// The normal is the zero vector.
     #[error("temporary segment of owner {} has a zero normal", .0.0)]
     ZeroNormal(Owner),
+    /// An end point lies beyond [`MAX_COORD`](crate::MAX_COORD): every query computes with
+    /// the segment, and promises its answers within that range only.
+    #[error(
+        "temporary segment of owner {} has end point ({x}, {y}), past the ±{max} coordinate \
+         range (MAX_COORD)",
+        owner.0,
+        max = crate::MAX_COORD
+    )]
+    OutOfRange {
+        /// Who submitted it.
+        owner: Owner,
+        /// The end point's x.
+        x: f32,
+        /// The end point's y.
+        y: f32,
+    },
 }
 
 impl TemporarySegment {
-    /// Checks the segment and normalises its normal.
+    /// Checks the segment (finite, within [`MAX_COORD`](crate::MAX_COORD), not a point, a
+    /// non-zero normal) and normalises its normal.
     pub(crate) fn validated(mut self) -> Result<Self, TemporaryError> {
         let id = self.owner;
         if !(self.segment.is_finite() && self.normal.is_finite() && self.velocity.is_finite()) {
             return Err(TemporaryError::NonFinite(id));
+        }
+        if let Some(p) = [self.segment.a, self.segment.b]
+            .into_iter()
+            .find(|&p| !in_range(p))
+        {
+            return Err(TemporaryError::OutOfRange {
+                owner: id,
+                x: p.x,
+                y: p.y,
+            });
         }
         if self.segment.a == self.segment.b {
             return Err(TemporaryError::ZeroLength(id));

@@ -1,0 +1,477 @@
+//! Proves that ray casts answer every finite ray, however absurd: origins and lengths up to
+//! `f32::MAX`, origins millions of cells from the map, lengths down to the subnormal range
+//! (where `t` itself is subnormal). For each such ray `cast_ray`, the first hit of
+//! `cast_ray_all` and `cast_rays` (both instruction sets) agree bit for bit, nothing
+//! panics, `t` lies in `[0, 1]` and the point is finite, and the hit is the nearest of a
+//! brute-force test of every active and temporary segment with `cast_ray_segment`, to the
+//! bit on maps whose lattice points are exact.
+
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use std::sync::Arc;
+
+use proptest::prelude::*;
+use tileslide::io::ascii;
+use tileslide::{
+    Cell, Faces, Owner, Ray, RayFilter, RayHit, Segment, SegmentFlags, SegmentSource,
+    TemporarySegment, TileMap, Vec2, cast_ray_segment,
+};
+
+fn v(x: f32, y: f32) -> Vec2 {
+    Vec2::new(x, y)
+}
+
+/// Every bit of an answer, so that `-0.0` and `0.0` (equal as floats) count as different.
+fn bits(hit: Option<&RayHit>) -> Option<(Vec<u32>, String)> {
+    hit.map(|h| {
+        let floats = [h.t, h.point.x, h.point.y, h.normal.x, h.normal.y];
+        let mut words: Vec<u32> = floats.iter().map(|f| f.to_bits()).collect();
+        words.push(h.flags.0);
+        (words, format!("{:?}", h.source))
+    })
+}
+
+/// Whether the casts walk `ray` in `f32` (the rule of `docs/ray-casting.md`, restated): it
+/// starts within the map's larger side plus 8 cells of the map, and each axis of its
+/// motion is 0 or between 2⁻³² and 2³² cells.
+fn ordinary(map: &TileMap, ray: &Ray) -> bool {
+    let inv = map.cell_size().recip();
+    let (o, d) = ((ray.origin - map.origin()) * inv, ray.delta * inv);
+    let (w, h) = (map.width() as f32, map.height() as f32);
+    let m = w.max(h) + 8.0;
+    let near = o.x >= -m && o.x <= w + m && o.y >= -m && o.y <= h + m;
+    let length_ok = |x: f32| x == 0.0 || (x.abs() >= 2f32.powi(-32) && x.abs() <= 2f32.powi(32));
+    near && length_ok(d.x) && length_ok(d.y)
+}
+
+/// A hit of the brute force: the segment, its `t` by the kernel the casts use for the ray,
+/// and whether the casts must find it.
+#[derive(Clone, Copy, Debug)]
+struct BruteHit {
+    key: Key,
+    t: f32,
+    required: bool,
+}
+
+/// Which segment a hit is on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Key {
+    Tile(Cell, u32),
+    Temporary(usize),
+}
+
+fn key_of(hit: &RayHit) -> Key {
+    match hit.source {
+        SegmentSource::Tile { segment, .. } => Key::Tile(segment.cell, segment.index),
+        SegmentSource::Temporary { index, .. } => Key::Temporary(index),
+    }
+}
+
+/// The ray–segment kernel in `f64` (`cast_ray_segment`'s rule, with exact products),
+/// restated: `t` rounded to `f32`.
+fn solve_f64(ray: &Ray, segment: &Segment) -> Option<f32> {
+    let (o, d) = (ray.origin.as_dvec2(), ray.delta.as_dvec2());
+    let (a, e) = (segment.a.as_dvec2(), segment.delta().as_dvec2());
+    let den = d.perp_dot(e);
+    let w = a - o;
+    let sign = 1.0f64.copysign(den);
+    let (den, tn, sn) = (den * sign, w.perp_dot(e) * sign, w.perp_dot(d) * sign);
+    let crossing = den > f64::from(tileslide::PARALLEL_TOLERANCE) * e.length_squared();
+    let inside = crossing && tn >= 0.0 && tn <= den && sn >= 0.0 && sn <= den;
+    inside.then(|| (tn / den) as f32)
+}
+
+/// Whether a hit of the kernel with unit rounding `eps` must be found: it lies inside the
+/// hit region (`0 ≤ t, s ≤ 1`, crossing) by more than the rounding of the kernel and of
+/// this `f64` check can move its edges (|Δ| ≲ 2ε·|u||v| for each cross product of u and
+/// v). A contact closer to an edge than that is optional: rounding decides it, and the
+/// walk, which follows the exact line within a tolerance, may see it either way.
+fn required(ray: &Ray, segment: &Segment, eps: f64) -> bool {
+    let (o, d) = (ray.origin.as_dvec2(), ray.delta.as_dvec2());
+    let (a, e) = (segment.a.as_dvec2(), segment.delta().as_dvec2());
+    let w = a - o;
+    let (den, tn, sn) = (d.perp_dot(e), w.perp_dot(e), w.perp_dot(d));
+    let sign = if den < 0.0 { -1.0 } else { 1.0 };
+    let (den, tn, sn) = (den * sign, tn * sign, sn * sign);
+    let c = 2.0 * eps + 4.0 * f64::EPSILON;
+    let err_den = c * d.length() * e.length();
+    let err_tn = c * w.length() * e.length();
+    let err_sn = c * w.length() * d.length();
+    let threshold = f64::from(tileslide::PARALLEL_TOLERANCE) * e.length_squared();
+    den > threshold * (1.0 + 1e-5) + err_den
+        && tn > err_tn
+        && den - tn > err_tn + err_den
+        && sn > err_sn
+        && den - sn > err_sn + err_den
+}
+
+/// Every hit of a brute-force test of every active and temporary segment that the filter
+/// lets the ray hit (the filter rules of `cast_ray`'s documentation, restated), by
+/// `cast_ray_segment` for an ordinary ray and by the `f64` kernel for any other.
+fn brute_hits(map: &TileMap, ray: &Ray, filter: &RayFilter) -> Vec<BruteHit> {
+    let wide = !ordinary(map, ray);
+    let eps = if wide {
+        f64::EPSILON
+    } else {
+        f64::from(f32::EPSILON)
+    };
+    let faces_ok = |normal: Vec2| match filter.faces {
+        Faces::Front => normal.dot(ray.delta) < 0.0,
+        Faces::Both => true,
+        Faces::Against(dir) => normal.dot(dir) < 0.0,
+    };
+    let mut hits = Vec::new();
+    let mut consider = |key: Key, segment: &Segment| {
+        let t = if wide {
+            solve_f64(ray, segment)
+        } else {
+            cast_ray_segment(ray, segment).map(|h| h.t)
+        };
+        if let Some(t) = t {
+            let required = required(ray, segment, eps);
+            hits.push(BruteHit { key, t, required });
+        }
+    };
+    for row in 0..map.height() {
+        for col in 0..map.width() {
+            let cell = Cell::new(col, row);
+            for (i, s) in map.active_segments(cell).enumerate() {
+                if s.flags.intersects(filter.mask) && faces_ok(s.normal) {
+                    consider(Key::Tile(cell, i as u32), &s.segment);
+                }
+            }
+        }
+    }
+    for (i, t) in map.temporaries().iter().enumerate() {
+        if t.flags.intersects(filter.mask)
+            && filter.exclude_owner != Some(t.owner)
+            && faces_ok(t.normal)
+        {
+            consider(Key::Temporary(i), &t.segment);
+        }
+    }
+    hits
+}
+
+/// Checks one ray: the casts agree bit for bit, every hit is sane and is a brute-force hit
+/// at the very same `t`, and every hit the brute force requires is found (so `cast_ray`'s
+/// hit, the first of them all, is the nearest).
+fn check(map: &TileMap, ray: Ray, filter: &RayFilter) -> Result<(), TestCaseError> {
+    let single = map.cast_ray(ray, filter);
+    let all = map.cast_ray_all(ray, filter);
+    let batch = map.cast_rays(&[ray], filter);
+    let portable = map.cast_rays_portable(&[ray], filter);
+    prop_assert_eq!(
+        bits(single.as_ref()),
+        bits(all.first()),
+        "ray {:?}: all {:?}",
+        ray,
+        all
+    );
+    prop_assert_eq!(
+        bits(single.as_ref()),
+        bits(batch[0].as_ref()),
+        "batch, ray {:?}",
+        ray
+    );
+    prop_assert_eq!(
+        bits(single.as_ref()),
+        bits(portable[0].as_ref()),
+        "portable, ray {:?}",
+        ray
+    );
+    prop_assert!(
+        all.windows(2).all(|p| p[0].t <= p[1].t),
+        "unsorted {:?}",
+        all
+    );
+    let brute = brute_hits(map, &ray, filter);
+    for h in &all {
+        prop_assert!(
+            (0.0..=1.0).contains(&h.t),
+            "t {} of {:?}, ray {:?}",
+            h.t,
+            h,
+            ray
+        );
+        prop_assert!(h.point.is_finite(), "point of {:?}, ray {:?}", h, ray);
+        prop_assert!(
+            brute
+                .iter()
+                .any(|b| b.key == key_of(h) && b.t.to_bits() == h.t.to_bits()),
+            "ray {:?}: {:?} is not a brute-force hit: {:?}",
+            ray,
+            h,
+            brute
+        );
+    }
+    for b in brute.iter().filter(|b| b.required) {
+        prop_assert!(
+            all.iter().any(|h| key_of(h) == b.key),
+            "ray {:?}: misses {:?}; got {:?}",
+            ray,
+            b,
+            all
+        );
+    }
+    Ok(())
+}
+
+fn map_of(rows: &str, cell: f32, origin: Vec2) -> TileMap {
+    let lines: Vec<&str> = rows.lines().collect();
+    let (width, height) = (lines[0].len() as u32, lines.len() as u32);
+    let set = Arc::new(ascii::tile_set(cell).unwrap());
+    let tiles: Vec<_> = lines
+        .iter()
+        .flat_map(|l| l.chars())
+        .map(|c| ascii::tile_for_char(c).unwrap())
+        .collect();
+    TileMap::from_tiles(set, width, height, origin, &tiles).unwrap()
+}
+
+#[test]
+fn finite_ray_whose_grid_length_overflows_does_not_panic_and_hits_the_wall() {
+    // Delta / cell size overflows to infinity: the grid walk's inverse became 0, its stop
+    // fraction NaN, and the walk ran off the map (index out of bounds in `fast_walk`).
+    let map = ascii::parse("...\n...\n..#", "open.txt", 0.5).unwrap();
+    let ray = Ray::between(v(0.2565, 0.2605), v(0.5565, 3.4e38));
+    check(&map, ray, &RayFilter::default()).unwrap();
+    // Straight up the middle column the ray leaves the map without a hit; through the
+    // solid cell's column it hits its floor.
+    let up = Ray {
+        origin: v(1.25, 0.25),
+        delta: v(1e-30, 3.4e38),
+    };
+    let hit = map.cast_ray(up, &RayFilter::default()).unwrap();
+    assert_eq!(hit.normal, v(0.0, -1.0));
+    assert_eq!(hit.point.y, 1.0);
+    check(&map, up, &RayFilter::default()).unwrap();
+}
+
+#[test]
+fn cast_ray_all_never_reports_nan_far_out() {
+    // Around 1e27 the ray–segment solve overflowed its numerator and denominator to
+    // infinity and accepted them as a hit at t = NaN.
+    let map = ascii::parse("####\n#..#\n####", "box.txt", 1.0).unwrap();
+    for scale in [1e19f32, 1e25, 1e27, 1e30, 1e35, 1.5e38] {
+        let ray = Ray::between(v(-scale, -scale * 0.5), v(scale, scale * 0.5 + 1.0));
+        check(&map, ray, &RayFilter::default()).unwrap();
+        check(
+            &map,
+            ray,
+            &RayFilter {
+                faces: Faces::Both,
+                ..RayFilter::default()
+            },
+        )
+        .unwrap();
+        let back = Ray::between(ray.end(), ray.origin);
+        check(&map, back, &RayFilter::default()).unwrap();
+    }
+}
+
+#[test]
+fn subnormal_t_agrees_between_casts() {
+    // A wall at x = 1 a hair in front of the origin on a ray of huge length: t ≈ 1e-40.
+    let map = ascii::parse("..#\n..#\n..#", "wall.txt", 1.0).unwrap();
+    for (gap, length) in [
+        (1e-7f32, 1e33f32),
+        (1e-7, 1e38),
+        (1e-30, 1e10),
+        (1e-38, 1.0),
+    ] {
+        let ray = Ray {
+            origin: v(2.0 - gap, 1.5),
+            delta: v(length, length * 1e-3),
+        };
+        check(&map, ray, &RayFilter::default()).unwrap();
+    }
+    // Subnormal t on an ordinary ray: a start a subnormal distance before the map's left
+    // border (a wall at x = 0), on a ray 2³¹ cells long.
+    let map = ascii::parse("#..\n#..\n#..", "border.txt", 1.0).unwrap();
+    for gap in [1e-40f32, 1e-44, 1e-30, 0.0] {
+        let ray = Ray {
+            origin: v(-gap, 1.5),
+            delta: v(2f32.powi(31), 3.0),
+        };
+        check(&map, ray, &RayFilter::default()).unwrap();
+        // The wall is hit; `t` (gap / 2³¹) rounds to 0 or a subnormal, so the point is the
+        // origin, within the gap of the wall.
+        let hit = map.cast_ray(ray, &RayFilter::default()).unwrap();
+        assert_eq!(hit.normal, v(-1.0, 0.0), "gap {gap}");
+        assert!(
+            hit.t <= gap && hit.point.x.abs() <= gap,
+            "gap {gap}: {hit:?}"
+        );
+    }
+}
+
+#[test]
+fn ray_from_millions_of_cells_away_agrees_between_casts() {
+    let map = ascii::parse("#.#.\n.#..\n..#.\n#...", "far.txt", 1.0).unwrap();
+    for far in [1e6f32, 16_777_216.0, 16_800_000.0, 1e9] {
+        for (sx, sy) in [(1.0, 0.37), (-1.0, 0.61), (0.29, -1.0), (-0.73, 1.0)] {
+            let target = v(2.1, 1.9);
+            let dir = v(sx, sy);
+            let ray = Ray {
+                origin: target - dir * far,
+                delta: dir * (far * 2.0),
+            };
+            check(&map, ray, &RayFilter::default()).unwrap();
+        }
+    }
+}
+
+/// Small random maps, on cell sizes and origins whose lattice points are exact.
+fn small_map() -> impl Strategy<Value = TileMap> {
+    (1u32..=8, 1u32..=8, 0usize..4, 0usize..3, any::<bool>()).prop_flat_map(
+        |(w, h, cell, origin, temporary)| {
+            let cell = [1.0f32, 0.5, 32.0, 0.25][cell];
+            let origin = [v(0.0, 0.0), v(-3.5, 12.25), v(1000.0, -64.0)][origin];
+            proptest::collection::vec(
+                prop_oneof![4 => Just('.'), 3 => Just('#'), 1 => Just('/'), 1 => Just('\\'),
+                    1 => Just('=')],
+                (w * h) as usize,
+            )
+            .prop_map(move |chars| {
+                let rows: Vec<String> = chars
+                    .chunks(w as usize)
+                    .map(|r| r.iter().collect())
+                    .collect();
+                let mut map = map_of(&rows.join("\n"), cell, origin);
+                if temporary {
+                    map.add_temporary(TemporarySegment {
+                        segment: Segment::new(origin, origin + v(3.0, 2.0) * cell),
+                        normal: v(-2.0, 3.0),
+                        flags: SegmentFlags::SOLID,
+                        owner: Owner(1),
+                        velocity: Vec2::ZERO,
+                    })
+                    .unwrap();
+                }
+                map
+            })
+        },
+    )
+}
+
+/// A power of two from 2⁻¹⁴⁹ to 2¹²⁷ times a mantissa in [1, 2), with a random sign.
+fn magnitude() -> impl Strategy<Value = f32> {
+    (-149i32..=127, 1.0f32..2.0, any::<bool>()).prop_map(|(e, m, neg)| {
+        let x = (m * 2f32.powi(e.max(-126))) * 2f32.powi((e + 126).min(0));
+        let x = if x.is_finite() { x } else { f32::MAX };
+        if neg { -x } else { x }
+    })
+}
+
+/// Absurd rays around a map of `w × h` cells of `cell` at `origin`.
+fn absurd_ray(w: u32, h: u32, cell: f32, origin: Vec2) -> impl Strategy<Value = Ray> {
+    let (wf, hf) = (w as f32, h as f32);
+    let near =
+        (-2.0f32..wf + 2.0, -2.0f32..hf + 2.0).prop_map(move |(x, y)| origin + v(x, y) * cell);
+    prop_oneof![
+        // From near the map, of any length (huge or subnormal).
+        (near.clone(), magnitude(), magnitude()).prop_map(|(p, dx, dy)| Ray {
+            origin: p,
+            delta: v(dx, dy),
+        }),
+        // From far away, aimed through a point near the map, reaching it or not.
+        (
+            near.clone(),
+            magnitude(),
+            -1.0f32..1.0,
+            -1.0f32..1.0,
+            0.5f32..3.0
+        )
+            .prop_map(|(p, far, dx, dy, k)| {
+                let dir = v(dx, dy);
+                let far = far.abs().min(f32::MAX / 4.0);
+                Ray {
+                    origin: p - dir * far,
+                    delta: dir * (far * k),
+                }
+            }),
+        // A hair in front of a point near the map, along a huge or tiny delta.
+        (near, -40i32..=0, magnitude(), magnitude()).prop_map(|(p, gap, dx, dy)| Ray {
+            origin: p - v(dx, dy).signum() * 2f32.powi(gap * 3),
+            delta: v(dx, dy),
+        }),
+        // Anything finite.
+        (magnitude(), magnitude(), magnitude(), magnitude()).prop_map(|(a, b, c, d)| Ray {
+            origin: v(a, b),
+            delta: v(c, d),
+        }),
+    ]
+}
+
+fn map_and_rays() -> impl Strategy<Value = (TileMap, Vec<Ray>)> {
+    small_map().prop_flat_map(|m| {
+        let rays = proptest::collection::vec(
+            absurd_ray(m.width(), m.height(), m.cell_size().x, m.origin()),
+            32,
+        );
+        (Just(m), rays)
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn absurd_finite_rays_get_the_brute_force_answer_from_every_cast(
+        (map, rays) in map_and_rays(),
+        both in any::<bool>(),
+    ) {
+        let filter = if both {
+            RayFilter { faces: Faces::Both, ..RayFilter::default() }
+        } else {
+            RayFilter::default()
+        };
+        for ray in rays {
+            check(&map, ray, &filter)?;
+        }
+    }
+}
+
+#[test]
+fn circle_cast_of_any_finite_length_stops_at_the_wall() {
+    // The swept box's grid coordinates overflowed, so no cell was tested and the circle
+    // passed through the wall.
+    let map = ascii::parse("....#", "wall.txt", 0.5).unwrap();
+    for length in [10.0f32, 1e8, 1e20, 1e30, 3.4e38] {
+        let hit = map
+            .cast_circle(v(0.5, 0.25), 0.1, v(length, 0.0), &RayFilter::default())
+            .unwrap_or_else(|| panic!("length {length}: no hit"));
+        assert_eq!(hit.normal, v(-1.0, 0.0), "length {length}");
+        assert!(
+            (hit.center.x - 1.9).abs() < 1e-5,
+            "length {length}: {hit:?}"
+        );
+        assert!(
+            (hit.t * length - 1.4).abs() < 1e-4 * 1.4,
+            "length {length}: {hit:?}"
+        );
+    }
+    // A motion longer than 2^27 along an axis is swept as its exact scaling by a power of
+    // two down to 2^27: the answer is that one's, with `t` scaled back.
+    let filter = RayFilter::default();
+    let short = map.cast_circle(v(0.5, 0.25), 0.1, v(2f32.powi(27), 0.0), &filter);
+    let long = map.cast_circle(v(0.5, 0.25), 0.1, v(2f32.powi(90), 0.0), &filter);
+    let (short, long) = (short.unwrap(), long.unwrap());
+    assert_eq!(short.t * 2f32.powi(-63), long.t);
+    assert_eq!(
+        (short.center, short.normal, short.point),
+        (long.center, long.normal, long.point)
+    );
+    // From beyond the range, or with a radius beyond it: outside what tileslide handles,
+    // no hit (documented).
+    let far = tileslide::MAX_COORD * 2.0;
+    assert!(
+        map.cast_circle(v(-far, 0.25), 0.1, v(far * 2.0, 0.0), &RayFilter::default())
+            .is_none()
+    );
+    assert!(
+        map.cast_circle(v(0.5, 0.25), far, v(1.0, 0.0), &RayFilter::default())
+            .is_none()
+    );
+}
