@@ -115,7 +115,7 @@ impl TileMap {
     /// that is not positive hits nothing.
     ///
     /// Range: a motion of any finite length is checked whole. Every segment lies within
-    /// [`MAX_COORD`](crate::MAX_COORD) of the origin, so a circle of radius at most
+    /// [`MAX_COORD`] of the origin, so a circle of radius at most
     /// `MAX_COORD` can touch one only while its centre is within `2·MAX_COORD`; a motion
     /// longer than 2²⁷ along an axis is first scaled down by a power of two (exactly) to
     /// at most 2²⁷, which still carries a centre from within `MAX_COORD` out of that box,

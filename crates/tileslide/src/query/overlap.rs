@@ -60,7 +60,7 @@ impl TileMap {
     #[must_use]
     ///
     /// A box of any finite size is answered: every segment lies within
-    /// [`MAX_COORD`](crate::MAX_COORD), so the box is first cut to that range (which
+    /// [`MAX_COORD`], so the box is first cut to that range (which
     /// changes no answer), and nothing computed from it can overflow.
     pub fn segments_overlapping_aabb(&self, aabb: &Aabb) -> Vec<SegmentOverlap> {
         if !aabb.is_valid() {
@@ -82,7 +82,7 @@ impl TileMap {
     #[must_use]
     ///
     /// A circle of any finite centre and radius is answered: within
-    /// [`MAX_COORD`](crate::MAX_COORD) by the `f32` test of [`Circle::overlaps_segment`],
+    /// [`MAX_COORD`] by the `f32` test of [`Circle::overlaps_segment`],
     /// beyond by the same test in `f64` (where the squares of `f32` values cannot
     /// overflow), on the cells of its box cut to the range where segments lie.
     pub fn segments_overlapping_circle(&self, circle: &Circle) -> Vec<SegmentOverlap> {
