@@ -20,6 +20,10 @@
 //! - A position along a ray or move is `t` in `[0, 1]`.
 //! - Normals point out of solid material; by default a ray hits only faces it meets
 //!   head-on (`dot(normal, p1 − p0) < 0`).
+//! - Coordinates are at most [`MAX_COORD`] (2²⁴ map units) from the origin: maps reaching
+//!   past it, and positions, moves' end points, radii and sizes past it, are refused with an
+//!   error naming the value. Ray casts answer every finite ray; a circle cast every finite
+//!   motion of a circle whose centre and radius are in the range.
 //! - Bad input (files, shapes, cells) is an error naming what and where, never a panic.
 //!
 //! ## Quick start
