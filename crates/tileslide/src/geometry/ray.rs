@@ -68,7 +68,7 @@ pub struct RaySegmentHit {
 ///   the ray's whole length, where the intersection is lost to rounding;
 /// - a zero-length ray or a zero-length segment never hits (the denominator is zero), nor
 ///   does a ray or segment with a NaN or infinite coordinate;
-/// - every finite input has an answer: no product can overflow. Up to [`NARROW`] in every
+/// - every finite input has an answer: no product can overflow. Up to `NARROW` (2⁶⁰) in every
 ///   coordinate of the origin, `delta` and the segment, the kernel runs in `f32` (its
 ///   products stay below 2¹²³); beyond, the same rule runs in `f64`, where the product of
 ///   any two `f32` values is exact and no sum of them overflows, and `t`, `s` are rounded to
