@@ -584,7 +584,8 @@ impl Character {
 
     /// The first surface the character meets moving by `motion` from where it is: every
     /// segment near the move (but `exclude`'s temporary segments), swept exactly; on equal
-    /// `t`, the first found (temporary segments, then cells row by row).
+    /// `t`, the one ranked first by [`meets_before`](Self::meets_before), whatever order
+    /// the segments come in.
     fn first_hit(
         &mut self,
         map: &TileMap,
@@ -622,11 +623,44 @@ impl Character {
                     hit = face;
                 }
             }
-            if best.is_none_or(|(b, _)| hit.t < b.t) {
+            if best.is_none_or(|(b, w)| self.meets_before(motion, (&hit, wall), (&b, &w))) {
                 best = Some((hit, *wall));
             }
         }
         best
+    }
+
+    /// Whether the surface `a` (a hit and its segment) stops a move by `motion` before
+    /// `b`: at a smaller `t`; on equal `t` (a concave corner reached exactly: a floor and a
+    /// wall, each its own normal), the one the motion meets more head-on (larger
+    /// `−normal·motion`), which takes the skin along the motion while the other is slid
+    /// into; then walkable ground before a wall or ceiling (larger `normal·up`); then by the
+    /// normal's coordinates; then a temporary segment before a tile's (a moving platform
+    /// flush with the floor is the ground ridden); then by the segment's coordinates and
+    /// the flags, so that the choice never depends on the order the segments are found in.
+    /// Only segments alike in kind, place, normal and flags remain tied, and they stop the
+    /// character alike (their contacts differ in source only).
+    fn meets_before(&self, motion: Vec2, a: (&SweepHit, &Wall), b: (&SweepHit, &Wall)) -> bool {
+        let key = |(hit, wall): (&SweepHit, &Wall)| {
+            let segment = &wall.capsule.segment;
+            [
+                hit.t,
+                hit.normal.dot(motion),
+                -hit.normal.dot(self.up),
+                hit.normal.x,
+                hit.normal.y,
+                f32::from(u8::from(matches!(wall.source, SegmentSource::Tile { .. }))),
+                segment.a.x,
+                segment.a.y,
+                segment.b.x,
+                segment.b.y,
+            ]
+        };
+        let (ka, kb) = (key(a), key(b));
+        match ka.iter().zip(&kb).find(|(x, y)| x != y) {
+            Some((x, y)) => x < y,
+            None => a.1.flags.0 < b.1.flags.0,
+        }
     }
 
     /// Whether a segment with `flags`, through `point` with unit `normal`, can stop the
