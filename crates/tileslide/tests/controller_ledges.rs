@@ -53,8 +53,20 @@ fn ledge(height: f32) -> TileMap {
 /// top).
 fn climbs(shape: CharacterShape, config: ControllerConfig, height: f32, speed: f32) -> bool {
     let m = ledge(height);
-    let mut ch = Character::new(shape, v(7.0, 4.0), UP, config).unwrap();
+    // Dropped from 0.1 above the floor: a box more than a cell tall once started at y = 4,
+    // sunk into the floor, and measured from there a ledge lower than the step height was
+    // too high to step onto.
+    let half_height = match shape {
+        CharacterShape::Circle { radius } => radius,
+        CharacterShape::Rect { half } => half.y,
+    };
+    let start = v(7.0, 5.0 - half_height - 0.1);
+    let mut ch = Character::new(shape, start, UP, config).unwrap();
     ch.move_by(&m, v(0.0, 1.0), MoveOptions::default()).unwrap();
+    assert!(
+        ch.ground().is_some(),
+        "{shape:?} does not stand at {start:?}"
+    );
     for _ in 0..(6.0 / speed).ceil() as usize {
         ch.move_by(&m, v(speed, 0.02), MoveOptions::default())
             .unwrap();
@@ -225,5 +237,100 @@ proptest! {
         let half = v(half_width, half_height);
         let hero = CharacterShape::rect(half).unwrap();
         ends_alike(hero, half, gap, above, v(vx, vy))?;
+    }
+}
+
+/// A room with a ledge two cells high (top at y = 3, its edge at x = 9) above a floor at
+/// y = 5.
+const EDGE: &str = "\
+##############################
+#............................#
+#............................#
+#########....................#
+#########....................#
+##############################";
+
+/// Stands `shape` (half extents `half`) on `m` with its centre at `x`, `half.y` and a skin
+/// above `ground`, then moves it by `velocity` (cells per second; a walk while on the
+/// ground) for `time` seconds at `rate` steps per second; returns where it ends.
+fn walk(
+    m: &TileMap,
+    half: Vec2,
+    x: f32,
+    ground: f32,
+    velocity: Vec2,
+    time: f32,
+    rate: f32,
+) -> Vec2 {
+    let hero = CharacterShape::rect(half).unwrap();
+    let start = v(x, ground - half.y - SKIN);
+    let mut ch = Character::new(hero, start, UP, ControllerConfig::default()).unwrap();
+    ch.move_by(m, v(0.0, 0.01), MoveOptions::default()).unwrap();
+    assert!(ch.ground().is_some(), "not standing at {start:?}");
+    for _ in 0..(time * rate).round() as usize {
+        ch.move_by(m, velocity / rate, MoveOptions::default())
+            .unwrap();
+    }
+    ch.position
+}
+
+#[test]
+fn a_box_walking_off_a_ledge_starts_to_fall_at_its_edge_at_30_60_120_and_240_hz() {
+    // Walking at 5 cells/s from x = 6 with a fall speed of 4 cells/s, the box's left side
+    // passes the edge (its centre at 9.25) after 0.65 s: 0.35 s later it has fallen 1.4.
+    // It once walked a whole step past the edge before it fell: 30 Hz ended 0.067 higher.
+    let m = ascii::parse(EDGE, "edge.txt", 1.0).unwrap();
+    let half = v(0.25, 0.4);
+    for rate in RATES {
+        let end = walk(&m, half, 6.0, 3.0, v(5.0, 4.0), 1.0, rate);
+        let ideal = v(11.0, 3.0 - half.y - SKIN + 1.4);
+        assert!(
+            (end - ideal).abs().max_element() < 1e-4,
+            "{rate} Hz: {end:?}"
+        );
+    }
+}
+
+/// How far apart rounding may put a walk's x after the same time at different rates: each
+/// step's sum rounds by up to half a unit in the last place of an x below 16 (2⁻²¹), and
+/// 240 Hz makes up to 192 steps in 0.8 s.
+const DRIFT: f32 = 192.0 / 2_097_152.0;
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// Boxes of random sizes walking left off a ledge of random height (stepping down one
+    /// lower than the snap distance, falling off a higher one) from random places on it,
+    /// at random walking and fall speeds, for a random time (0.1 to 0.8 s): the ends at 30, 60, 120 and
+    /// 240 steps a second agree within [`TOLERANCE`], plus the rounding of the walk's x
+    /// ([`DRIFT`]) and how much that moves the fall. The walk ends where the ground does
+    /// and the step's rest is flown from there, so the fall starts at the edge whatever
+    /// the rate.
+    #[test]
+    fn a_box_walking_off_a_ledge_ends_in_the_same_place_at_30_60_120_and_240_hz(
+        half_width in 0.1f32..0.6,
+        half_height in 0.1f32..0.6,
+        height in 0.01f32..1.6,
+        gap in 0.0f32..2.0,
+        vx in 0.5f32..12.0,
+        vy in 1.0f32..25.0,
+        steps in 3u8..24,
+    ) {
+        // A whole number of 30 Hz steps, so every rate runs for the same time.
+        let time = f32::from(steps) / 30.0;
+        let m = ledge(height);
+        let half = v(half_width, half_height);
+        let x = 10.0 + half.x + gap;
+        let ends = RATES.map(|rate| walk(&m, half, x, 5.0 - height, v(-vx, vy), time, rate));
+        // Rounding moves the walk's x by up to DRIFT, and so when it reaches the edge by
+        // DRIFT / vx seconds: the fall then differs by DRIFT · vy / vx.
+        let tolerance = TOLERANCE + DRIFT * (1.0 + vy / vx);
+        for (rate, end) in RATES.iter().zip(ends) {
+            prop_assert!(
+                (end - ends[0]).abs().max_element() <= tolerance,
+                "{:?} from x = {} off a ledge {} high at {:?} for {} s: {} Hz ends at {:?}, 30 Hz at {:?}",
+                half, x, height, v(-vx, vy), time, rate, end, ends[0]
+            );
+        }
     }
 }

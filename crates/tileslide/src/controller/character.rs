@@ -67,6 +67,9 @@ pub struct MoveOptions {
 ///   without a bump. A steeper surface is a wall.
 /// - Downward motion while on the ground only presses the character onto it: standing on a
 ///   ramp it does not creep down.
+/// - A walk that leaves the ground (none within the snap distance below it) goes only to
+///   where the ground ends; the rest of the step, fall included, is a move through the
+///   air from there, so the fall starts at the edge whatever the frame rate.
 /// - In the air the whole displacement is swept at once, so the frame rate does not decide
 ///   whether a ledge is caught. Landing on walkable ground walks on along it with the rest
 ///   of the move's sideways part; falling along a wall or a steep slope slides down it;
@@ -141,6 +144,10 @@ const ROLL_LEVEL: f32 = 1e-5;
 /// (radians): the legs run along the arc's tangents, at most `1/cos(ROLL_STEP/2) − 1`
 /// (0.9 %) of the distance outside it.
 const ROLL_STEP: f32 = 0.27;
+
+/// How many halvings [`Character::edge`] makes of a walk's leg to find where the ground
+/// ends: to 2⁻²⁰ of the leg, far below the skin for any step a game makes.
+const EDGE_STEPS: u32 = 20;
 
 /// How a move is being swept: a walk along the ground, or a move through the air (which
 /// becomes a walk where it lands).
@@ -267,7 +274,8 @@ impl Character {
         // In the air the whole displacement is swept at once: the path a smaller step would
         // take is the same straight line, so where it lands (or meets a ledge's face) does
         // not depend on the frame rate.
-        let ends = if let Some(ground) = walking {
+        let start = self.position;
+        let (mut ends, last) = if let Some(ground) = walking {
             let walk = along(ground.normal, self.side, sideways);
             let line = self.ground_line(ground.normal);
             self.slide(map, walk, Some(line), options, &mut contacts)
@@ -277,20 +285,81 @@ impl Character {
         // Find the ground under the character: within the snap distance when it walked (so
         // it follows ramps down and steps down small ledges; a landing walks on, as the
         // next step would), within two skins otherwise (touching, not snapping).
-        let reach = if ends == Phase::Walk {
-            self.config.snap_distance
-        } else {
-            2.0 * self.config.skin
-        };
-        contacts.ground = self.settle(map, reach, options);
+        contacts.ground = self.settle(map, self.reach(ends), options);
+        // Walked off the ground's edge: the walk ends where the ground did, and the rest of
+        // the step (its share of the whole displacement, fall included) is a move through
+        // the air from there, so where the fall starts does not depend on the frame rate.
+        if contacts.ground.is_none()
+            && ends == Phase::Walk
+            && let Some((from, leg)) = last
+            && sideways != 0.0
+        {
+            self.position = from + leg * self.edge(map, from, leg, options);
+            let made = (self.position - start).dot(self.side) / sideways;
+            let rest = displacement * (1.0 - made).clamp(0.0, 1.0);
+            (ends, _) = self.slide(map, rest, None, options, &mut contacts);
+            contacts.ground = self.settle(map, self.reach(ends), options);
+        }
         self.ground = contacts.ground;
         self.riding = contacts.ground.and_then(|ground| Riding::on(map, &ground));
         Ok(contacts)
     }
 
+    /// How far below its feet the character looks for ground after a move that ended in
+    /// `phase`.
+    fn reach(&self, phase: Phase) -> f32 {
+        if phase == Phase::Walk {
+            self.config.snap_distance
+        } else {
+            2.0 * self.config.skin
+        }
+    }
+
+    /// The fraction of the straight `leg` from `from`, swept clear, at which the character
+    /// first has no walkable ground within the snap distance below it (1 when it has some
+    /// all the way; 0 when it has none at `from`): where a walk along it leaves the ground.
+    /// Found by bisection to 2⁻²⁰ of the leg, on the side past the edge, so that a fall
+    /// from there does not catch the edge it left. The character is left at `from`.
+    fn edge(&mut self, map: &TileMap, from: Vec2, leg: Vec2, options: MoveOptions) -> f32 {
+        let held = |character: &mut Self, f: f32| {
+            character.position = from + leg * f;
+            character
+                .first_hit(
+                    map,
+                    -character.up * character.config.snap_distance,
+                    options,
+                    None,
+                )
+                .is_some_and(|(hit, _)| {
+                    Surface::of(hit.normal, character.up, character.side, character.walkable)
+                        == Surface::Ground
+                })
+        };
+        let (mut lo, mut hi) = (0.0f32, 1.0f32);
+        if !held(self, lo) {
+            hi = lo;
+        } else if held(self, hi) {
+            lo = hi;
+        }
+        for _ in 0..EDGE_STEPS {
+            if hi - lo <= 0.0 {
+                break;
+            }
+            let mid = 0.5 * (lo + hi);
+            if held(self, mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        self.position = from;
+        hi
+    }
+
     /// Sweeps `motion` with collide and slide, recording contacts: a walk along the ground
     /// `line` when there is one, a move through the air otherwise. Returns the phase it
-    /// ended in (a move through the air that lands walks on).
+    /// ended in (a move through the air that lands walks on) and, when its last leg was
+    /// swept clear to its end, that leg (its start and motion).
     fn slide(
         &mut self,
         map: &TileMap,
@@ -298,7 +367,7 @@ impl Character {
         mut line: Option<GroundLine>,
         options: MoveOptions,
         contacts: &mut Contacts,
-    ) -> Phase {
+    ) -> (Phase, Option<(Vec2, Vec2)>) {
         let mut remaining = motion;
         for _ in 0..self.config.max_slides {
             let phase = if line.is_some() {
@@ -306,8 +375,9 @@ impl Character {
             } else {
                 Phase::Air
             };
+            let from = self.position;
             let Some((hit, wall, rest)) = self.go(map, remaining, options, None) else {
-                return phase;
+                return (phase, Some((from, remaining)));
             };
             let mut surface = Surface::of(hit.normal, self.up, self.side, self.walkable);
             // A corner (a segment's end, met by a circle's rounded side) higher above the
@@ -330,7 +400,7 @@ impl Character {
                 && matches!(surface, Surface::Left | Surface::Right)
                 && self.step_up(map, rest, &line, options)
             {
-                return Phase::Walk;
+                return (Phase::Walk, None);
             }
             let contact = Contact {
                 normal: hit.normal,
@@ -380,11 +450,12 @@ impl Character {
                 _ => slid,
             };
         }
-        if line.is_some() {
+        let phase = if line.is_some() {
             Phase::Walk
         } else {
             Phase::Air
-        }
+        };
+        (phase, None)
     }
 
     /// Whether `hit` is a circle meeting `wall`'s rounded end (its normal is not the face's).
@@ -584,7 +655,8 @@ impl Character {
 
     /// The first surface the character meets moving by `motion` from where it is: every
     /// segment near the move (but `exclude`'s temporary segments), swept exactly; on equal
-    /// `t`, the first found (temporary segments, then cells row by row).
+    /// `t`, the one ranked first by [`meets_before`](Self::meets_before), whatever order
+    /// the segments come in.
     fn first_hit(
         &mut self,
         map: &TileMap,
@@ -622,11 +694,44 @@ impl Character {
                     hit = face;
                 }
             }
-            if best.is_none_or(|(b, _)| hit.t < b.t) {
+            if best.is_none_or(|(b, w)| self.meets_before(motion, (&hit, wall), (&b, &w))) {
                 best = Some((hit, *wall));
             }
         }
         best
+    }
+
+    /// Whether the surface `a` (a hit and its segment) stops a move by `motion` before
+    /// `b`: at a smaller `t`; on equal `t` (a concave corner reached exactly: a floor and a
+    /// wall, each its own normal), the one the motion meets more head-on (larger
+    /// `−normal·motion`), which takes the skin along the motion while the other is slid
+    /// into; then walkable ground before a wall or ceiling (larger `normal·up`); then by the
+    /// normal's coordinates; then a temporary segment before a tile's (a moving platform
+    /// flush with the floor is the ground ridden); then by the segment's coordinates and
+    /// the flags, so that the choice never depends on the order the segments are found in.
+    /// Only segments alike in kind, place, normal and flags remain tied, and they stop the
+    /// character alike (their contacts differ in source only).
+    fn meets_before(&self, motion: Vec2, a: (&SweepHit, &Wall), b: (&SweepHit, &Wall)) -> bool {
+        let key = |(hit, wall): (&SweepHit, &Wall)| {
+            let segment = &wall.capsule.segment;
+            [
+                hit.t,
+                hit.normal.dot(motion),
+                -hit.normal.dot(self.up),
+                hit.normal.x,
+                hit.normal.y,
+                f32::from(u8::from(matches!(wall.source, SegmentSource::Tile { .. }))),
+                segment.a.x,
+                segment.a.y,
+                segment.b.x,
+                segment.b.y,
+            ]
+        };
+        let (ka, kb) = (key(a), key(b));
+        match ka.iter().zip(&kb).find(|(x, y)| x != y) {
+            Some((x, y)) => x < y,
+            None => a.1.flags.0 < b.1.flags.0,
+        }
     }
 
     /// Whether a segment with `flags`, through `point` with unit `normal`, can stop the
