@@ -9,6 +9,7 @@
 
 use glam::Vec2;
 
+use super::sweep::{largest, ordinary, rescaled};
 use super::{Segment, SweepHit};
 
 /// Relative distance within which a slanted face's support corner reaching the line and
@@ -55,6 +56,14 @@ const CORNER_ROUNDING: f32 = 8.0 * f32::EPSILON;
 /// wall, both faces are met at once and each reports its own normal: either keeps the box
 /// out, and a caller wanting one answer ranks equal `t` by `-normal · motion`.)
 ///
+/// **Every finite input** is answered, whatever its magnitude: `t` is never NaN and lies in
+/// `[0, 1]`, and a motion that crosses the segment's face is reported at the time the box
+/// reaches it. Up to 2³⁰ (and down to 2⁻²⁰ for the largest) in every component of
+/// `center − segment.a`, the segment's `b − a`, the motion and the half extents, it runs in
+/// `f32` as written; beyond (where the segment's squared length or an offset would overflow
+/// or underflow), the problem is moved to `a` in `f64` and scaled by a power of two into
+/// that range first, which changes neither `t` nor the normal.
+///
 /// ```
 /// # use tileslide::{Segment, Vec2, sweep_box_segment};
 /// // A floor along y = 0 facing up; a 1 × 2 box falls onto it from y = 3 (its bottom at 2).
@@ -80,6 +89,21 @@ pub fn sweep_box_segment(
     normal: Vec2,
     caps: [bool; 2],
 ) -> Option<SweepHit> {
+    let size = largest([center - segment.a, segment.delta(), motion, half], []);
+    if !ordinary(size) {
+        // (Out of the ordinary sizes: moved to `a` and scaled, see `rescaled`.)
+        let a = segment.a.as_dvec2();
+        let sizes = [
+            center.as_dvec2() - a,
+            segment.b.as_dvec2() - a,
+            motion.as_dvec2(),
+            half.as_dvec2(),
+        ];
+        let ([p, e, motion, half], []) = rescaled(sizes, [])?;
+        // (Ordinary now: its largest size is about 2²⁸.)
+        let segment = Segment::new(Vec2::ZERO, e);
+        return sweep_box_segment(p, half, motion, &segment, normal, caps);
+    }
     let (a, e) = (segment.a, segment.delta());
     let len2 = e.length_squared();
     let h0 = (center - a).dot(normal);
