@@ -16,35 +16,35 @@ use super::Segment;
 /// [`sweep_circle_circle`]): about four float roundings of the squared radius.
 const GRAZE: f32 = 4.0 * f32::EPSILON;
 
-/// The largest size (2³⁰) a sweep solves in `f32` as written, where a size is a component
-/// of the offsets, lengths, radii and motion it works with: up to it (and, for the circles'
-/// quadratic, twice it) every square and product of two of them, and the quadratic's
-/// fourth-degree terms, stay below `f32::MAX`.
+/// The largest size (2³⁰) a sweep solves in `f32` as written, where its size is the sum of
+/// the magnitudes of the components of the offsets, lengths, radii and motion it works with:
+/// up to it (and, for the circles' quadratic, twice it) every square and product of two of
+/// them, and the quadratic's fourth-degree terms, stay below `f32::MAX`.
 const ORDINARY_MAX: f32 = 1_073_741_824.0;
 
-/// The smallest nonzero largest size (2⁻²⁰) a sweep solves in `f32` as written: above it the
+/// The smallest nonzero size (2⁻²⁰) a sweep solves in `f32` as written: above it the
 /// quadratic's fourth-degree terms stay normal floats rather than underflowing to zero.
 const ORDINARY_MIN: f32 = 1.0 / 1_048_576.0;
 
-/// The size a sweep works with: the largest magnitude of the components of `vectors` and of
-/// `scalars` (a NaN is skipped: the `f32` sweeps already answer a NaN as written).
+/// The size a sweep works with: the sum of the magnitudes of the components of `vectors`
+/// and `scalars` (between their largest and 8 times it; NaN for a NaN). A sum, not a
+/// maximum: additions cost less than `f32::max`'s NaN handling on the sweeps' hot path.
 #[inline(always)]
 pub(super) fn largest<const N: usize, const K: usize>(
     vectors: [Vec2; N],
     scalars: [f32; K],
 ) -> f32 {
-    let v = vectors
-        .iter()
-        .fold(0.0f32, |m, v| m.max(v.x.abs()).max(v.y.abs()));
-    scalars.iter().fold(v, |m, s| m.max(s.abs()))
+    let v = vectors.iter().fold(Vec2::ZERO, |m, v| m + v.abs());
+    scalars.iter().fold(v.x + v.y, |m, s| m + s.abs())
 }
 
-/// Whether a sweep whose largest size is `size` (see [`largest`]) runs in `f32` as
-/// written: true for every ordinary game input, false only past `ORDINARY_MAX`
-/// (including an offset that overflowed to infinity) or below `ORDINARY_MIN`.
+/// Whether a sweep whose size is `size` (see [`largest`]) runs in `f32` as written: true
+/// for every ordinary game input, false past `ORDINARY_MAX` (including an offset that
+/// overflowed to infinity), below `ORDINARY_MIN` but not 0, and for a NaN (which then
+/// hits nothing).
 #[inline(always)]
 pub(super) fn ordinary(size: f32) -> bool {
-    !(size > ORDINARY_MAX || (size < ORDINARY_MIN && size > 0.0))
+    size <= ORDINARY_MAX && (size >= ORDINARY_MIN || size == 0.0)
 }
 
 /// The sizes of a sweep that is not [`ordinary`], computed in `f64` (where the offset of two
@@ -102,13 +102,14 @@ pub struct SweepHit {
 /// radius sum to within rounding) is not a contact.
 ///
 /// Every finite input is answered, whatever its magnitude: `t` is never NaN and lies in
-/// `[0, 1]`, and the normal is a unit vector. Up to 2³⁰ (and down to 2⁻²⁰ for the largest)
-/// in every component of the offset `center − other`, the motion and the radius sum, the
-/// quadratic is solved in `f32` as written; beyond (a motion of 10²⁰, points 10³⁸ apart, a
+/// `[0, 1]`, and the normal is a unit vector. While the magnitudes of the components of the
+/// offset `center − other`, the motion and the radius sum add up to between 2⁻²⁰ and 2³⁰
+/// (or to 0), the quadratic is solved in `f32` as written; otherwise (a motion of 10²⁰, points 10³⁸ apart, a
 /// problem 10⁻³⁰ across), where its squares and products would overflow or underflow, the
 /// offset is taken in `f64` and the whole problem scaled by a power of two to that range
 /// first, which changes neither `t` nor the normal. A size below about 2⁻¹²⁰ of the
-/// largest then counts as zero, as `f32` rounding would count it next to the largest.
+/// largest then counts as zero, as `f32` rounding would count it next to the largest. A
+/// NaN or infinite input hits nothing.
 ///
 /// ```
 /// # use tileslide::{Vec2, sweep_circle_circle};
@@ -184,9 +185,9 @@ fn circle_circle(d: Vec2, motion: Vec2, radius_sum: f32) -> Option<SweepHit> {
 ///
 /// Every finite input is answered, whatever its magnitude, as [`sweep_circle_circle`]
 /// answers it: `t` is never NaN and lies in `[0, 1]`, and a motion that crosses the
-/// segment's face is reported at the time it reaches it. Up to 2³⁰ (and down to 2⁻²⁰ for the
-/// largest) in every component of `center − segment.a`, the segment's `b − a`, the motion
-/// and the radius, it runs in `f32` as written; beyond, the problem is moved to `a` in `f64`
+/// segment's face is reported at the time it reaches it. While the magnitudes of the
+/// components of `center − segment.a`, the segment's `b − a`, the motion and the radius add
+/// up to between 2⁻²⁰ and 2³⁰, it runs in `f32` as written; otherwise the problem is moved to `a` in `f64`
 /// and scaled by a power of two into that range first.
 ///
 /// ```
@@ -209,18 +210,19 @@ pub fn sweep_circle_segment(
     caps: [bool; 2],
 ) -> Option<SweepHit> {
     let size = largest([center - segment.a, segment.delta(), motion], [radius]);
-    if !ordinary(size) {
-        // (Out of the ordinary sizes: moved to `a` and scaled, see `rescaled`.)
+    // Out of the ordinary sizes the problem is moved to `a` and scaled (see `rescaled`),
+    // into the ordinary sizes (not a recursive call: this function must stay inlinable).
+    let (center, radius, motion, segment) = if ordinary(size) {
+        (center, radius, motion, *segment)
+    } else {
         let a = segment.a.as_dvec2();
         let offsets = [center.as_dvec2() - a, segment.b.as_dvec2() - a];
         let ([p, e, motion], [radius]) = rescaled(
             [offsets[0], offsets[1], motion.as_dvec2()],
             [f64::from(radius)],
         )?;
-        // (Ordinary now: its largest size is about 2²⁸.)
-        let segment = Segment::new(Vec2::ZERO, e);
-        return sweep_circle_segment(p, radius, motion, &segment, normal, caps);
-    }
+        (p, radius, motion, Segment::new(Vec2::ZERO, e))
+    };
     let (a, e) = (segment.a, segment.delta());
     let h0 = (center - a).dot(normal);
     let mut best: Option<SweepHit> = None;

@@ -58,11 +58,12 @@ const CORNER_ROUNDING: f32 = 8.0 * f32::EPSILON;
 ///
 /// **Every finite input** is answered, whatever its magnitude: `t` is never NaN and lies in
 /// `[0, 1]`, and a motion that crosses the segment's face is reported at the time the box
-/// reaches it. Up to 2³⁰ (and down to 2⁻²⁰ for the largest) in every component of
-/// `center − segment.a`, the segment's `b − a`, the motion and the half extents, it runs in
-/// `f32` as written; beyond (where the segment's squared length or an offset would overflow
+/// reaches it. While the magnitudes of the components of `center − segment.a`, the
+/// segment's `b − a`, the motion and the half extents add up to between 2⁻²⁰ and 2³⁰, it
+/// runs in `f32` as written; otherwise (where the segment's squared length or an offset would overflow
 /// or underflow), the problem is moved to `a` in `f64` and scaled by a power of two into
-/// that range first, which changes neither `t` nor the normal.
+/// that range first, which changes neither `t` nor the normal. A NaN or infinite input
+/// hits nothing.
 ///
 /// ```
 /// # use tileslide::{Segment, Vec2, sweep_box_segment};
@@ -90,8 +91,11 @@ pub fn sweep_box_segment(
     caps: [bool; 2],
 ) -> Option<SweepHit> {
     let size = largest([center - segment.a, segment.delta(), motion, half], []);
-    if !ordinary(size) {
-        // (Out of the ordinary sizes: moved to `a` and scaled, see `rescaled`.)
+    // Out of the ordinary sizes the problem is moved to `a` and scaled (see `rescaled`),
+    // into the ordinary sizes (not a recursive call: this function must stay inlinable).
+    let (center, half, motion, segment) = if ordinary(size) {
+        (center, half, motion, *segment)
+    } else {
         let a = segment.a.as_dvec2();
         let sizes = [
             center.as_dvec2() - a,
@@ -100,17 +104,15 @@ pub fn sweep_box_segment(
             half.as_dvec2(),
         ];
         let ([p, e, motion, half], []) = rescaled(sizes, [])?;
-        // (Ordinary now: its largest size is about 2²⁸.)
-        let segment = Segment::new(Vec2::ZERO, e);
-        return sweep_box_segment(p, half, motion, &segment, normal, caps);
-    }
+        (p, half, motion, Segment::new(Vec2::ZERO, e))
+    };
     let (a, e) = (segment.a, segment.delta());
     let len2 = e.length_squared();
     let h0 = (center - a).dot(normal);
     let vn = motion.dot(normal);
     let mut best: Option<SweepHit> = None;
     if h0 >= 0.0 && vn < 0.0 && len2 > 0.0 {
-        best = sweep_box_face(center, half, motion, segment, normal);
+        best = sweep_box_face(center, half, motion, &segment, normal);
     }
     for (end, capped) in [(a, caps[0]), (segment.b, caps[1])] {
         if capped
