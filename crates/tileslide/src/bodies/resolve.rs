@@ -33,7 +33,7 @@ use super::near_walls::NearWalls;
 use super::neighbours::Neighbours;
 use super::set::Body;
 use super::settled::Settled;
-use crate::geometry::{Aabb, Circle, SweepHit, bisect, in_range, sweep_circle_circle};
+use crate::geometry::{Aabb, Circle, SweepHit, bisect, circle_circle, in_range};
 use crate::query::Capsule;
 use crate::tiles::TileMap;
 
@@ -398,7 +398,7 @@ fn sweep_wall(
 ) -> Option<SweepHit> {
     match toi {
         TimeOfImpact::Exact => {
-            let hit = wall.sweep(center, radius, motion)?;
+            let hit = wall.sweep_ordinary(center, radius, motion)?;
             // The flat side reports the wall's own normal; any other comes from a rounded
             // end (a shortcut only: the sweep below would return the flat hit unchanged).
             if hit.normal == wall.normal || !grazes(hit, motion) {
@@ -409,10 +409,10 @@ fn sweep_wall(
             // the ends the move only grazes.
             let mut caps = wall.caps;
             for (cap, end) in caps.iter_mut().zip([wall.segment.a, wall.segment.b]) {
-                *cap &= !sweep_circle_circle(center, motion, end, radius)
+                *cap &= !circle_circle(center - end, motion, radius)
                     .is_some_and(|end_hit| grazes(end_hit, motion));
             }
-            Capsule { caps, ..*wall }.sweep(center, radius, motion)
+            Capsule { caps, ..*wall }.sweep_ordinary(center, radius, motion)
         }
         TimeOfImpact::Bisection { halvings } => {
             // The write-up's check at sampled positions: inside the capsule, on the front.
@@ -441,7 +441,7 @@ fn sweep_circle(
 ) -> Option<SweepHit> {
     match toi {
         TimeOfImpact::Exact => {
-            sweep_circle_circle(center, motion, other, radius).filter(|&hit| !grazes(hit, motion))
+            circle_circle(center - other, motion, radius).filter(|&hit| !grazes(hit, motion))
         }
         TimeOfImpact::Bisection { halvings } => {
             let at = |t: f32| center + motion * t;

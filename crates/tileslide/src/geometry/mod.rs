@@ -20,6 +20,6 @@ pub(crate) use limits::in_range;
 pub(crate) use normal::unit_normal;
 pub use ray::{PARALLEL_TOLERANCE, Ray, RaySegmentHit, cast_ray_segment};
 pub use segment::Segment;
-pub(crate) use sweep::bisect;
 pub use sweep::{SweepHit, sweep_circle_circle, sweep_circle_segment};
+pub(crate) use sweep::{bisect, circle_circle, circle_segment};
 pub use sweep_box::sweep_box_segment;

@@ -68,12 +68,17 @@ pub struct RaySegmentHit {
 ///   the ray's whole length, where the intersection is lost to rounding;
 /// - a zero-length ray or a zero-length segment never hits (the denominator is zero), nor
 ///   does a ray or segment with a NaN or infinite coordinate;
-/// - every finite input has an answer: no product can overflow. Up to `NARROW` (2⁶⁰) in every
-///   coordinate of the origin, `delta` and the segment, the kernel runs in `f32` (its
-///   products stay below 2¹²³); beyond, the same rule runs in `f64`, where the product of
-///   any two `f32` values is exact and no sum of them overflows, and `t`, `s` are rounded to
-///   `f32` at the end (so `t` may come out subnormal, or 0 for a hit closer to the origin
-///   than 2⁻¹⁴⁹ of the ray's length).
+/// - every finite input has an answer: no product can overflow or lose its bits to
+///   underflow. Up to `NARROW` (2⁶⁰) in every coordinate of the origin, `delta` and the
+///   segment, and while the largest components of `delta` and `b − a` multiply to at least
+///   2⁻⁸⁰, the kernel runs in `f32` (its products stay below 2¹²³, and a crossing's
+///   denominator stays a normal float); otherwise (a coordinate of 10¹⁹, a ray and segment
+///   10⁻²⁵ long) the same rule runs in `f64`, where the product of any two `f32` values is
+///   exact, no sum of them overflows and none underflows, and `t`, `s` are rounded to `f32`
+///   at the end (so `t` may come out subnormal, or 0 for a hit closer to the origin than
+///   2⁻¹⁴⁹ of the ray's length). The map's ray queries run the `f32` kernel on every
+///   ordinary ray, so they agree with this function bit for bit on maps whose cells are at
+///   least 2⁻²⁴ units.
 ///
 /// ```
 /// # use tileslide::{cast_ray_segment, Ray, Segment, Vec2};
@@ -102,12 +107,18 @@ pub(crate) fn narrow(v: Vec2) -> bool {
     v.x.abs() <= NARROW && v.y.abs() <= NARROW
 }
 
-/// [`solve`] where every input is [`narrow`], [`solve_wide`] otherwise: the kernel
-/// `cast_ray_segment` uses, and every ray query for a ray that is not narrow, so that all
-/// of them agree bit for bit on every input.
+/// The smallest product (2⁻⁸⁰) of the largest components of a ray's `delta` and a
+/// segment's `e` for which [`cast_ray_segment`] solves in `f32`: below it the denominator
+/// `delta × e` of a ray crossing at an angle could be a subnormal float, which keeps too
+/// few bits to place `t`.
+const TINY: f32 = 1.0 / 1_208_925_819_614_629_174_706_176.0;
+
+/// [`solve`] where every input is [`narrow`] and `delta` and `e` are not [`TINY`] together,
+/// [`solve_wide`] otherwise: the kernel `cast_ray_segment` uses.
 #[inline]
 pub(crate) fn solve_any(origin: Vec2, delta: Vec2, a: Vec2, e: Vec2) -> Option<(f32, f32)> {
-    if narrow(origin) && narrow(delta) && narrow(a) && narrow(e) {
+    let scale = delta.abs().max_element() * e.abs().max_element();
+    if narrow(origin) && narrow(delta) && narrow(a) && narrow(e) && scale >= TINY {
         solve(origin, delta, a, e)
     } else {
         solve_wide(origin, delta, a, e)

@@ -8,13 +8,79 @@
 
 use std::cmp::Ordering;
 
-use glam::Vec2;
+use glam::{DVec2, Vec2};
 
 use super::Segment;
 
 /// Relative depth below which a path that touches a circle only grazes it (see
 /// [`sweep_circle_circle`]): about four float roundings of the squared radius.
 const GRAZE: f32 = 4.0 * f32::EPSILON;
+
+/// The largest size (2³⁰) a sweep solves in `f32` as written, where its size is the sum of
+/// the magnitudes of the components of the offsets, lengths, radii and motion it works with:
+/// up to it (and, for the circles' quadratic, twice it) every square and product of two of
+/// them, and the quadratic's fourth-degree terms, stay below `f32::MAX`.
+const ORDINARY_MAX: f32 = 1_073_741_824.0;
+
+/// The smallest nonzero size (2⁻²⁰) a sweep solves in `f32` as written: above it the
+/// quadratic's fourth-degree terms stay normal floats rather than underflowing to zero.
+const ORDINARY_MIN: f32 = 1.0 / 1_048_576.0;
+
+/// The size a sweep works with: the sum of the magnitudes of the components of `vectors`
+/// and `scalars` (between their largest and 8 times it; NaN for a NaN). A sum, not a
+/// maximum: additions cost less than `f32::max`'s NaN handling on the sweeps' hot path.
+#[inline(always)]
+pub(super) fn largest<const N: usize, const K: usize>(
+    vectors: [Vec2; N],
+    scalars: [f32; K],
+) -> f32 {
+    let v = vectors.iter().fold(Vec2::ZERO, |m, v| m + v.abs());
+    scalars.iter().fold(v.x + v.y, |m, s| m + s.abs())
+}
+
+/// Whether a sweep whose size is `size` (see [`largest`]) runs in `f32` as written: true
+/// for every ordinary game input, false past `ORDINARY_MAX` (including an offset that
+/// overflowed to infinity), below `ORDINARY_MIN` but not 0, and for a NaN (which then
+/// hits nothing).
+#[inline(always)]
+pub(super) fn ordinary(size: f32) -> bool {
+    size <= ORDINARY_MAX && (size >= ORDINARY_MIN || size == 0.0)
+}
+
+/// The sizes of a sweep that is not [`ordinary`], computed in `f64` (where the offset of two
+/// finite `f32` points cannot overflow), scaled together by the power of two that brings
+/// the largest to about 2²⁸, and rounded to `f32`. The scaling is exact and a
+/// sweep's `t` and normal do not depend on its scale, so the `f32` sweep of the result
+/// answers the original; a size below about 2⁻¹²⁰ of the largest underflows, as any `f32`
+/// sum with the largest would lose it. `None` when an input is not finite. Out of line: no
+/// game input comes here.
+#[cold]
+#[inline(never)]
+pub(super) fn rescaled<const N: usize, const K: usize>(
+    vectors: [DVec2; N],
+    scalars: [f64; K],
+) -> Option<([Vec2; N], [f32; K])> {
+    let finite = vectors.iter().all(|v| v.is_finite()) && scalars.iter().all(|s| s.is_finite());
+    if !finite {
+        return None;
+    }
+    let size = vectors
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.x.abs()).max(v.y.abs()));
+    let size = scalars.iter().fold(size, |m, s| m.max(s.abs()));
+    // `size` is at most 2¹²⁹ (the offset of two f32 points) and, if not 0, at least 2⁻¹⁴⁹,
+    // so the power lies within f64's exponents and multiplying by it is exact.
+    let k = if size > 0.0 {
+        28 - size.log2().floor() as i32
+    } else {
+        0
+    };
+    let scale = 2f64.powi(k);
+    Some((
+        vectors.map(|v| (v * scale).as_vec2()),
+        scalars.map(|s| (s * scale) as f32),
+    ))
+}
 
 /// Where a swept circle first touches an obstacle.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,6 +101,16 @@ pub struct SweepHit {
 /// moves closer. A path that only grazes the obstacle (its closest approach equals the
 /// radius sum to within rounding) is not a contact.
 ///
+/// Every finite input is answered, whatever its magnitude: `t` is never NaN and lies in
+/// `[0, 1]`, and the normal is a unit vector. While the magnitudes of the components of the
+/// offset `center − other`, the motion and the radius sum add up to between 2⁻²⁰ and 2³⁰
+/// (or to 0), the quadratic is solved in `f32` as written; otherwise (a motion of 10²⁰, points 10³⁸ apart, a
+/// problem 10⁻³⁰ across), where its squares and products would overflow or underflow, the
+/// offset is taken in `f64` and the whole problem scaled by a power of two to that range
+/// first, which changes neither `t` nor the normal. A size below about 2⁻¹²⁰ of the
+/// largest then counts as zero, as `f32` rounding would count it next to the largest. A
+/// NaN or infinite input hits nothing.
+///
 /// ```
 /// # use tileslide::{Vec2, sweep_circle_circle};
 /// // A circle of radius 1 moving 10 to the right meets one of radius 1 whose centre is 5 away.
@@ -52,6 +128,20 @@ pub fn sweep_circle_circle(
     radius_sum: f32,
 ) -> Option<SweepHit> {
     let d = center - other;
+    if !ordinary(largest([d, motion], [radius_sum])) {
+        // (Out of the ordinary sizes: moved and scaled, see `rescaled`.)
+        let offset = center.as_dvec2() - other.as_dvec2();
+        let ([d, motion], [radius_sum]) =
+            rescaled([offset, motion.as_dvec2()], [f64::from(radius_sum)])?;
+        return circle_circle(d, motion, radius_sum);
+    }
+    circle_circle(d, motion, radius_sum)
+}
+
+/// [`sweep_circle_circle`] in `f32` as written, for the offset `d = center − other`, without
+/// the size check: for callers whose inputs are known to be ordinary (the resolver's).
+#[inline(always)]
+pub(crate) fn circle_circle(d: Vec2, motion: Vec2, radius_sum: f32) -> Option<SweepHit> {
     let a = motion.length_squared();
     let b = d.dot(motion);
     // Not approaching (this also rejects a zero or NaN motion).
@@ -94,6 +184,13 @@ pub fn sweep_circle_circle(
 /// into a collinear or concave neighbour: there it is covered by the neighbour's flat side,
 /// and leaving it in would snag a circle sliding over the seam.
 ///
+/// Every finite input is answered, whatever its magnitude, as [`sweep_circle_circle`]
+/// answers it: `t` is never NaN and lies in `[0, 1]`, and a motion that crosses the
+/// segment's face is reported at the time it reaches it. While the magnitudes of the
+/// components of `center − segment.a`, the segment's `b − a`, the motion and the radius add
+/// up to between 2⁻²⁰ and 2³⁰, it runs in `f32` as written; otherwise the problem is moved to `a` in `f64`
+/// and scaled by a power of two into that range first.
+///
 /// ```
 /// # use tileslide::{Segment, Vec2, sweep_circle_segment};
 /// // A floor along y = 0 facing up; a circle of radius 0.5 falls onto it from y = 3.
@@ -106,6 +203,36 @@ pub fn sweep_circle_circle(
 /// ```
 #[must_use]
 pub fn sweep_circle_segment(
+    center: Vec2,
+    radius: f32,
+    motion: Vec2,
+    segment: &Segment,
+    normal: Vec2,
+    caps: [bool; 2],
+) -> Option<SweepHit> {
+    let size = largest([center - segment.a, segment.delta(), motion], [radius]);
+    // Out of the ordinary sizes the problem is moved to `a` and scaled (see `rescaled`),
+    // into the ordinary sizes (not a recursive call: this function must stay inlinable).
+    let (center, radius, motion, segment) = if ordinary(size) {
+        (center, radius, motion, *segment)
+    } else {
+        let a = segment.a.as_dvec2();
+        let offsets = [center.as_dvec2() - a, segment.b.as_dvec2() - a];
+        let ([p, e, motion], [radius]) = rescaled(
+            [offsets[0], offsets[1], motion.as_dvec2()],
+            [f64::from(radius)],
+        )?;
+        (p, radius, motion, Segment::new(Vec2::ZERO, e))
+    };
+    circle_segment(center, radius, motion, &segment, normal, caps)
+}
+
+/// [`sweep_circle_segment`] in `f32` as written, without the size check: for callers whose
+/// inputs are known to be ordinary. The resolver's bodies are (positions, moves and radii
+/// within [`MAX_COORD`](crate::MAX_COORD), radii positive), so its hot loop runs exactly
+/// the arithmetic it ran before the check existed.
+#[inline(always)]
+pub(crate) fn circle_segment(
     center: Vec2,
     radius: f32,
     motion: Vec2,

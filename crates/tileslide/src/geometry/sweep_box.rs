@@ -9,6 +9,7 @@
 
 use glam::Vec2;
 
+use super::sweep::{largest, ordinary, rescaled};
 use super::{Segment, SweepHit};
 
 /// Relative distance within which a slanted face's support corner reaching the line and
@@ -55,6 +56,15 @@ const CORNER_ROUNDING: f32 = 8.0 * f32::EPSILON;
 /// wall, both faces are met at once and each reports its own normal: either keeps the box
 /// out, and a caller wanting one answer ranks equal `t` by `-normal · motion`.)
 ///
+/// **Every finite input** is answered, whatever its magnitude: `t` is never NaN and lies in
+/// `[0, 1]`, and a motion that crosses the segment's face is reported at the time the box
+/// reaches it. While the magnitudes of the components of `center − segment.a`, the
+/// segment's `b − a`, the motion and the half extents add up to between 2⁻²⁰ and 2³⁰, it
+/// runs in `f32` as written; otherwise (where the segment's squared length or an offset would overflow
+/// or underflow), the problem is moved to `a` in `f64` and scaled by a power of two into
+/// that range first, which changes neither `t` nor the normal. A NaN or infinite input
+/// hits nothing.
+///
 /// ```
 /// # use tileslide::{Segment, Vec2, sweep_box_segment};
 /// // A floor along y = 0 facing up; a 1 × 2 box falls onto it from y = 3 (its bottom at 2).
@@ -80,13 +90,29 @@ pub fn sweep_box_segment(
     normal: Vec2,
     caps: [bool; 2],
 ) -> Option<SweepHit> {
+    let size = largest([center - segment.a, segment.delta(), motion, half], []);
+    // Out of the ordinary sizes the problem is moved to `a` and scaled (see `rescaled`),
+    // into the ordinary sizes (not a recursive call: this function must stay inlinable).
+    let (center, half, motion, segment) = if ordinary(size) {
+        (center, half, motion, *segment)
+    } else {
+        let a = segment.a.as_dvec2();
+        let sizes = [
+            center.as_dvec2() - a,
+            segment.b.as_dvec2() - a,
+            motion.as_dvec2(),
+            half.as_dvec2(),
+        ];
+        let ([p, e, motion, half], []) = rescaled(sizes, [])?;
+        (p, half, motion, Segment::new(Vec2::ZERO, e))
+    };
     let (a, e) = (segment.a, segment.delta());
     let len2 = e.length_squared();
     let h0 = (center - a).dot(normal);
     let vn = motion.dot(normal);
     let mut best: Option<SweepHit> = None;
     if h0 >= 0.0 && vn < 0.0 && len2 > 0.0 {
-        best = sweep_box_face(center, half, motion, segment, normal);
+        best = sweep_box_face(center, half, motion, &segment, normal);
     }
     for (end, capped) in [(a, caps[0]), (segment.b, caps[1])] {
         if capped

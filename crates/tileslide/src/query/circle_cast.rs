@@ -9,7 +9,7 @@ use glam::Vec2;
 
 use super::{Faces, RayFilter, SegmentSource};
 use crate::MAX_COORD;
-use crate::geometry::{Aabb, Segment, SweepHit, in_range, sweep_circle_segment};
+use crate::geometry::{Aabb, Segment, SweepHit, circle_segment, in_range, sweep_circle_segment};
 use crate::tiles::store::{CAP_A, CAP_B, HotSegment};
 use crate::tiles::{SegmentFlags, SegmentRef, TileId, TileMap};
 
@@ -74,6 +74,20 @@ impl Capsule {
     #[inline]
     pub fn sweep(&self, center: Vec2, radius: f32, motion: Vec2) -> Option<SweepHit> {
         sweep_circle_segment(
+            center,
+            radius,
+            motion,
+            &self.segment,
+            self.normal,
+            self.caps,
+        )
+    }
+
+    /// [`sweep`](Self::sweep) without the size check, for the resolver, whose bodies and
+    /// walls lie within `MAX_COORD` (see [`circle_segment`]).
+    #[inline]
+    pub fn sweep_ordinary(&self, center: Vec2, radius: f32, motion: Vec2) -> Option<SweepHit> {
+        circle_segment(
             center,
             radius,
             motion,

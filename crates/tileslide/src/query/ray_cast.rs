@@ -133,10 +133,17 @@ impl TileMap {
         best.map(|found| self.make_hit(found, best_t, p0 + delta * best_t))
     }
 
-    /// Every segment the ray hits, sorted by `t`, each once. Ties keep the order in which
-    /// [`cast_ray`](Self::cast_ray) meets them (temporary segments first, then cells in
-    /// walk order, each cell's segments by index), so the first hit is always exactly
-    /// `cast_ray`'s. Same rules as `cast_ray`.
+    /// Every segment the ray hits, sorted by `t`, each once, starting with exactly
+    /// [`cast_ray`](Self::cast_ray)'s hit, bit for bit; empty when `cast_ray` finds
+    /// nothing. Same rules as `cast_ray`.
+    ///
+    /// The list is `cast_ray`'s hit followed by every other segment hit at or after its
+    /// `t`. Ties keep the order in which `cast_ray` meets them (temporary segments first,
+    /// then cells in walk order, each cell's segments by index). A hit that rounding places
+    /// before `cast_ray`'s is left out: only a ray grazing a segment can have one (at a
+    /// tiny angle the intersection's `t` is ill-conditioned, and `f32` can put it before
+    /// the segment's own cell, which the walk of `cast_ray` rightly stops short of), and
+    /// listing it first would contradict `cast_ray`.
     #[must_use]
     pub fn cast_ray_all(&self, ray: Ray, filter: &RayFilter) -> Vec<RayHit> {
         let mut out = Vec::new();
@@ -147,6 +154,19 @@ impl TileMap {
     /// [`cast_ray_all`](Self::cast_ray_all) into a buffer the caller reuses (cleared first).
     pub fn cast_ray_all_into(&self, ray: Ray, filter: &RayFilter, out: &mut Vec<RayHit>) {
         out.clear();
+        // The rule of `cast_ray_all`: its first hit is this one, whatever the other hits'
+        // rounding says.
+        let Some(first) = self.cast_ray(ray, filter) else {
+            return;
+        };
+        self.every_hit(ray, filter, out);
+        out.retain(|h| h.source != first.source && h.t >= first.t);
+        out.insert(0, first);
+    }
+
+    /// Every segment the ray hits, sorted by `t` (ties in the order `cast_ray` meets them),
+    /// each once, into the empty `out`: the walk of `cast_ray` without its early stop.
+    fn every_hit(&self, ray: Ray, filter: &RayFilter, out: &mut Vec<RayHit>) {
         let (p0, delta) = (ray.origin, ray.delta);
         let grid = self.grid_ray(p0, delta);
         let wide = !grid.is_ordinary();
