@@ -140,7 +140,7 @@ pub fn sweep_circle_circle(
 
 /// [`sweep_circle_circle`] in `f32` as written, for the offset `d = center − other`, without
 /// the size check: for callers whose inputs are known to be ordinary (the resolver's).
-#[inline(always)]
+#[inline]
 pub(crate) fn circle_circle(d: Vec2, motion: Vec2, radius_sum: f32) -> Option<SweepHit> {
     let a = motion.length_squared();
     let b = d.dot(motion);
@@ -231,7 +231,7 @@ pub fn sweep_circle_segment(
 /// inputs are known to be ordinary. The resolver's bodies are (positions, moves and radii
 /// within [`MAX_COORD`](crate::MAX_COORD), radii positive), so its hot loop runs exactly
 /// the arithmetic it ran before the check existed.
-#[inline(always)]
+#[inline]
 pub(crate) fn circle_segment(
     center: Vec2,
     radius: f32,
