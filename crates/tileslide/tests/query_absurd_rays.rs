@@ -610,15 +610,14 @@ proptest! {
     }
 }
 
-/// A long ray running a hair beside a grid line: `cast_ray_all` lists the first floor it
-/// crosses and misses the ones after it (found by
+/// Regression: a long ray running a hair beside a grid line, from far enough to take the
+/// `f64` path, was walked on the wrong side of the line, and `cast_ray_all` listed the
+/// first floor it crosses but missed the ones after it (found by
 /// `absurd_finite_rays_get_the_brute_force_answer_from_every_cast`). From (−6e-8, 1) with
 /// delta (1, 2.7e8) on a map of half cells at (−3.5, 12.25), the ray runs down just left of
 /// x = 0 through column 6: the squares of rows 0 and 3 (tops at y = 12.25 and 13.75) face
 /// it, and it crosses the second at x ≈ −1.2e-8, t ≈ 4.75e-8.
 #[test]
-#[ignore = "known miss in the grid walk: cast_ray_all loses the hits after the first on a \
-    long ray a hair beside a grid line"]
 fn a_long_ray_a_hair_beside_a_grid_line_lists_every_floor_it_crosses() {
     let e = None;
     let t = |id: u32| Some(TileId(id));

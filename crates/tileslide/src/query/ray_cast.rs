@@ -252,7 +252,7 @@ impl TileMap {
     }
 
     /// Calls `visit` with the index of every cell a finite ray that is not ordinary may
-    /// hit a segment in, in walk order (a cell may come twice).
+    /// hit a segment in, in walk order (a cell may come more than once).
     ///
     /// From an origin within [`MAX_COORD`](crate::MAX_COORD), the ray is first clipped in
     /// `f64` to the map's rectangle widened by the touch tolerance, where the products of
@@ -284,8 +284,20 @@ impl TileMap {
             }
             return;
         }
+        // Each walked cell with its eight neighbours: the clipped piece is rounded to `f32`
+        // grid units, where a ray a hair beside a grid line (closer than an `f32` ulp of
+        // the grid coordinate) can be walked on the wrong side of it for its whole length,
+        // and its hits on segments ending at that line lost. Every segment of a visited
+        // cell is solved exactly in `f64`, so a cell visited needlessly adds no false hit,
+        // only work, on these rare rays.
+        let (width, height) = (self.width() as usize, self.height() as usize);
         walk(&clipped, 1.0, |index, _| {
-            visit(index);
+            let (col, row) = (index % width, index / width);
+            for r in row.saturating_sub(1)..=(row + 1).min(height - 1) {
+                for c in col.saturating_sub(1)..=(col + 1).min(width - 1) {
+                    visit(r * width + c);
+                }
+            }
             false
         });
     }
