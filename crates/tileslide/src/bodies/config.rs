@@ -55,9 +55,9 @@ pub struct ResolveConfig {
 }
 
 impl ResolveConfig {
-    /// The largest [`gap`](Self::gap), a distance like every coordinate:
-    /// [`MAX_COORD`](crate::MAX_COORD). Bounded so, the gap adds to the radii and moves the
-    /// resolver squares without overflow.
+    /// The largest [`gap`](Self::gap), a distance like every coordinate: [`MAX_COORD`].
+    /// Bounded so, the gap adds to the radii and moves the resolver squares without
+    /// overflow.
     pub const MAX_GAP: f32 = MAX_COORD;
 
     /// The most [`passes`](Self::passes): every pass of a blocked body costs a sweep against
