@@ -104,7 +104,12 @@ pub fn run(
         .zip(gif)
         .map(|(c, g)| Recording::new(c, g.every))
         .transpose()?;
-    let mut bodies = Bodies::new();
+    // The resolver's default gap suits cells of side 1: scaled to this map's cells.
+    let gap = tileslide::ResolveConfig::default().gap * map.cell_size().min_element();
+    let mut bodies = Bodies::with_config(tileslide::ResolveConfig {
+        gap,
+        ..tileslide::ResolveConfig::default()
+    })?;
     let mut crowd: Vec<(BodyHandle, Vec2)> = Vec::with_capacity(scene.bodies.len());
     for (i, b) in scene.bodies.iter().enumerate() {
         let at = |field: &str| format!("{}: bodies[{i}].{field}", scene_path.display());

@@ -63,7 +63,7 @@ mod volumes;
 
 pub use bodies::{
     Bodies, Body, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, ResolveConfig,
-    ResolveReport, SlideMode, TimeOfImpact,
+    ResolveReport, SlideMode,
 };
 pub use broadphase::{Broadphase, PairFinder};
 pub use controller::{

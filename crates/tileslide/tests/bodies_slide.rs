@@ -65,7 +65,7 @@ fn gap() -> f32 {
 /// The shortest resolved move a slide round the obstacle allows: the blocked move's part
 /// along the tangent, `|motion|·sin α`, less what the resolver may leave out on the way. A
 /// safe part before the contact shorter than an eighth of the gap is not taken (see
-/// `MIN_STEP` in `bodies/resolve.rs`), and rounding.
+/// `MIN_STEP` in `bodies/resolver.rs`), and rounding.
 fn least_slide(motion: Vec2, into: f32) -> f32 {
     motion.length() * into.sin() * (1.0 - 1e-4) - gap() / 8.0
 }

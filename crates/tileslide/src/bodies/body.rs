@@ -1,9 +1,9 @@
-//! What a body is: its shape (one circle or several at fixed offsets), its collision filter
-//! and the caller's data.
+//! What a body is: its shape (one circle or several at fixed offsets), its collision filter,
+//! the caller's data, and its state in a [`Bodies`](crate::Bodies) set.
 
 use glam::Vec2;
 
-use super::BodyError;
+use super::error::BodyError;
 use crate::geometry::{Circle, MAX_COORD, in_range};
 use crate::tiles::SegmentFlags;
 
@@ -171,5 +171,68 @@ impl BodyDesc {
     #[must_use]
     pub fn with_user_data(self, user_data: u64) -> Self {
         Self { user_data, ..self }
+    }
+}
+
+/// A body's state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Body {
+    pub(super) position: Vec2,
+    pub(super) shape: BodyShape,
+    pub(super) filter: BodyFilter,
+    pub(super) user_data: u64,
+    /// The move the caller proposed for this step.
+    pub(super) proposed: Vec2,
+    /// The move `resolve` settled on (the proposed one until then).
+    pub(super) resolved: Vec2,
+}
+
+impl Body {
+    /// The body `desc` describes, without a move.
+    pub(super) fn new(desc: BodyDesc) -> Self {
+        Self {
+            position: desc.position,
+            shape: desc.shape,
+            filter: desc.filter,
+            user_data: desc.user_data,
+            proposed: Vec2::ZERO,
+            resolved: Vec2::ZERO,
+        }
+    }
+
+    /// Where the body is.
+    #[must_use]
+    pub fn position(&self) -> Vec2 {
+        self.position
+    }
+
+    /// Its shape.
+    #[must_use]
+    pub fn shape(&self) -> &BodyShape {
+        &self.shape
+    }
+
+    /// Its filter.
+    #[must_use]
+    pub fn filter(&self) -> BodyFilter {
+        self.filter
+    }
+
+    /// The caller's data.
+    #[must_use]
+    pub fn user_data(&self) -> u64 {
+        self.user_data
+    }
+
+    /// The move proposed for this step (zero: the body is an obstacle this step).
+    #[must_use]
+    pub fn proposed_move(&self) -> Vec2 {
+        self.proposed
+    }
+
+    /// The move `resolve` settled on; before `resolve`, the proposed move.
+    #[must_use]
+    pub fn resolved_move(&self) -> Vec2 {
+        self.resolved
     }
 }

@@ -1,27 +1,9 @@
-//! How `resolve` works: the time-of-impact method, the slide rule, the number of passes,
-//! the broadphase and the contact gap.
+//! How `resolve` works (the slide rule, the number of passes, the broadphase and the contact
+//! gap), and what it reports.
 
-use super::BodyError;
+use super::error::BodyError;
 use crate::broadphase::Broadphase;
-
-/// How the time of impact of a move is found.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum TimeOfImpact {
-    /// Closed form: swept circle against circle (a quadratic) and against a segment's
-    /// capsule. Nothing tunnels, at any speed. The default.
-    #[default]
-    Exact,
-    /// The write-up's bisection: check the end of the move, then halve `halvings` times
-    /// (at most [`ResolveConfig::MAX_HALVINGS`]).
-    /// Kept for comparison: it only looks at sampled positions, so a move whose end is
-    /// clear passes through anything in between, and the stop is up to `2^-halvings` of
-    /// the move short of contact. The invariants of [`Bodies::resolve`](crate::Bodies::resolve)
-    /// hold only with [`Exact`](Self::Exact).
-    Bisection {
-        /// Number of halvings (the write-up uses 4).
-        halvings: u32,
-    },
-}
+use crate::geometry::MAX_COORD;
 
 /// What happens to the blocked part of a move.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -37,17 +19,22 @@ pub enum SlideMode {
     Stop,
 }
 
-/// Settings of [`Bodies::resolve`](crate::Bodies::resolve).
+/// Settings of [`Bodies::resolve`](crate::Bodies::resolve). Distances are in map units;
+/// the defaults suit maps with cells of size 1 (scale them with the cell size, e.g. ×32 for
+/// a map in pixels with 32-pixel cells).
 ///
 /// ```
-/// # use tileslide::{ResolveConfig, SlideMode};
+/// # use tileslide::{BodyError, ResolveConfig, SlideMode};
 /// let config = ResolveConfig { slide: SlideMode::Tangential, ..ResolveConfig::default() };
 /// assert_eq!(config.passes, 4);
+/// // A map in pixels, with 32-pixel cells: the same gap, a thousandth of a cell.
+/// let pixels = ResolveConfig { gap: 1e-3 * 32.0, ..ResolveConfig::default() };
+/// assert_eq!(pixels.validate(), Ok(()));
+/// let negative = ResolveConfig { gap: -1.0, ..pixels };
+/// assert_eq!(negative.validate(), Err(BodyError::BadConfig { field: "gap", value: -1.0 }));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ResolveConfig {
-    /// Time-of-impact method.
-    pub toi: TimeOfImpact,
     /// Slide rule.
     pub slide: SlideMode,
     /// Passes of detect-and-slide; the slides of one pass are checked by the next. After
@@ -56,31 +43,36 @@ pub struct ResolveConfig {
     pub passes: u32,
     /// Pair finding.
     pub broadphase: Broadphase,
-    /// Separation that moving bodies keep from each other and from walls, as a fraction of
-    /// the map's smaller cell side. Bodies stop between one half and one times this far
-    /// from contact, so rounding never leaves them overlapping. Default `1e-3`; from 0 to
+    /// Separation that moving bodies keep from each other and from walls, in map units.
+    /// Bodies stop between one half and one times this far from contact, so rounding never
+    /// leaves them overlapping. Default `1e-3`, a thousandth of a cell of side 1: scale it
+    /// with the cell size, keeping it well below a cell's side (a body keeps its gap from
+    /// every wall, so with a gap of a cell no body fits a one-cell corridor) and above the
+    /// spacing of `f32` values at the map's coordinates (safe steps shorter than an eighth
+    /// of it are not taken, so that rounding cannot creep a body into another). From 0 to
     /// [`Self::MAX_GAP`].
     pub gap: f32,
 }
 
 impl ResolveConfig {
-    /// The largest [`gap`](Self::gap): one cell. A body keeps its gap from every wall, so a
-    /// larger one would keep bodies out of one-cell corridors; and bounded, the gap in map
-    /// units is at most a cell's side, which a map keeps within
-    /// [`MAX_COORD`](crate::MAX_COORD).
-    pub const MAX_GAP: f32 = 1.0;
+    /// The largest [`gap`](Self::gap), a distance like every coordinate: [`MAX_COORD`].
+    /// Bounded so, the gap adds to the radii and moves the resolver squares without
+    /// overflow.
+    pub const MAX_GAP: f32 = MAX_COORD;
 
     /// The most [`passes`](Self::passes): every pass of a blocked body costs a sweep against
     /// everything near it, and after a few the remainder is spent or cut anyway (the
     /// default is 4).
     pub const MAX_PASSES: u32 = 64;
 
-    /// The most halvings of [`TimeOfImpact::Bisection`]: past 32 the probes' spacing is below
-    /// an `f32`'s resolution of `t`.
-    pub const MAX_HALVINGS: u32 = 32;
-
-    /// An error naming the first field out of its range.
-    pub(crate) fn check(&self) -> Result<(), BodyError> {
+    /// Whether the settings can be used: every field in its range (see each field).
+    /// [`Bodies::with_config`](crate::Bodies::with_config) and
+    /// [`Bodies::set_config`](crate::Bodies::set_config) refuse what this refuses.
+    ///
+    /// # Errors
+    /// [`BodyError::BadConfig`] naming the first field out of its range and its value (a
+    /// NaN gap included).
+    pub fn validate(&self) -> Result<(), BodyError> {
         let bad = |field, value| Err(BodyError::BadConfig { field, value });
         // Written so that NaN fails: it is refused, not read as 0.
         if !(self.gap >= 0.0 && self.gap <= Self::MAX_GAP) {
@@ -89,11 +81,6 @@ impl ResolveConfig {
         if self.passes > Self::MAX_PASSES {
             return bad("passes", self.passes as f32);
         }
-        if let TimeOfImpact::Bisection { halvings } = self.toi
-            && halvings > Self::MAX_HALVINGS
-        {
-            return bad("halvings", halvings as f32);
-        }
         Ok(())
     }
 }
@@ -101,11 +88,22 @@ impl ResolveConfig {
 impl Default for ResolveConfig {
     fn default() -> Self {
         Self {
-            toi: TimeOfImpact::Exact,
             slide: SlideMode::FullLength,
             passes: 4,
             broadphase: Broadphase::UniformGrid,
             gap: 1e-3,
         }
     }
+}
+
+/// What a [`resolve`](crate::Bodies::resolve) did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ResolveReport {
+    /// Bodies with a non-zero proposed move.
+    pub moving: usize,
+    /// Contacts met (each sweep that stopped at something counts once).
+    pub contacts: usize,
+    /// Bodies whose remainder was still blocked after the last pass, and was cut at its
+    /// first contact.
+    pub cut_short: usize,
 }

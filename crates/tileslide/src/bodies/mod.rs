@@ -7,17 +7,26 @@
 //! and the other bodies and slides the blocked remainder along the contact tangent; then
 //! [`integrate`](Bodies::integrate) applies the resolved moves. See `resolve` for the
 //! guarantees and `docs/resolver.md` for the design.
+//!
+//! The files depend on each other in one direction only: `set` (the [`Bodies`] a caller
+//! holds) uses `resolver`, which uses the contact rules (`contact`) and its memories
+//! (`neighbours`, `near_walls`, `settled`, `map_watch`); all of them use the plain types
+//! (`body`, `config`, `error`, `handle`).
 
 mod body;
 mod config;
+mod contact;
+mod error;
+mod handle;
 mod map_watch;
 mod near_walls;
 mod neighbours;
-mod resolve;
+mod resolver;
 mod set;
 mod settled;
 
-pub use body::{BodyDesc, BodyFilter, BodyShape};
-pub use config::{ResolveConfig, SlideMode, TimeOfImpact};
-pub use resolve::ResolveReport;
-pub use set::{Bodies, Body, BodyError, BodyHandle};
+pub use body::{Body, BodyDesc, BodyFilter, BodyShape};
+pub use config::{ResolveConfig, ResolveReport, SlideMode};
+pub use error::BodyError;
+pub use handle::BodyHandle;
+pub use set::Bodies;

@@ -1,147 +1,15 @@
-//! The set of bodies: generational handles, add and remove, and each body's state.
+//! The set of bodies: add and remove by generational handles, proposed moves, and the
+//! three loops of a step.
 
 use glam::Vec2;
-use thiserror::Error;
 
-use super::body::{BodyDesc, BodyFilter, BodyShape};
-use super::config::ResolveConfig;
-use super::resolve::{ResolveReport, Scratch};
-use crate::geometry::{MAX_COORD, in_range};
+use super::body::{Body, BodyDesc, BodyFilter};
+use super::config::{ResolveConfig, ResolveReport};
+use super::error::BodyError;
+use super::handle::BodyHandle;
+use super::resolver::Resolver;
+use crate::geometry::in_range;
 use crate::tiles::TileMap;
-
-/// A body's handle. Handles are generational: once a body is removed its handle is stale
-/// for good, even after its slot is reused, and every call with it returns
-/// [`BodyError::StaleHandle`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct BodyHandle {
-    index: u32,
-    generation: u32,
-}
-
-impl BodyHandle {
-    /// The slot index (small, dense; reused after a removal). Bodies are resolved in slot
-    /// order.
-    #[must_use]
-    pub fn index(self) -> u32 {
-        self.index
-    }
-}
-
-/// Errors from [`Bodies`] calls and body shapes.
-#[derive(Clone, Debug, PartialEq, Error)]
-pub enum BodyError {
-    /// The handle's body was removed.
-    #[error("stale body handle (slot {}, generation {}): the body was removed", .0.index, .0.generation)]
-    StaleHandle(BodyHandle),
-    /// A shape without circles.
-    #[error("a body shape needs at least one circle")]
-    EmptyShape,
-    /// A circle's radius is not positive, or beyond [`MAX_COORD`] (NaN and infinity
-    /// included).
-    #[error(
-        "circle {index} of the body shape has radius {radius}: it must be positive and at most {max}",
-        max = MAX_COORD
-    )]
-    InvalidRadius {
-        /// The circle's index in the shape.
-        index: usize,
-        /// Its radius.
-        radius: f32,
-    },
-    /// A circle's offset has a coordinate beyond [`MAX_COORD`] (NaN and infinity included).
-    #[error(
-        "circle {index} of the body shape has offset {offset}: each coordinate must be at most {max} in magnitude",
-        max = MAX_COORD
-    )]
-    InvalidOffset {
-        /// The circle's index in the shape.
-        index: usize,
-        /// Its offset.
-        offset: Vec2,
-    },
-    /// A position or move with a NaN or infinite coordinate.
-    #[error("the {what} {value} is not finite")]
-    NonFinite {
-        /// `"position"` or `"move"`.
-        what: &'static str,
-        /// The value given.
-        value: Vec2,
-    },
-    /// A position, or the end point of a move (where the body would be after it), with a
-    /// finite coordinate beyond [`MAX_COORD`].
-    #[error("the {what} {value} is out of range: each coordinate must be at most {max} in magnitude", max = MAX_COORD)]
-    OutOfRange {
-        /// `"position"` or `"move's end point"`.
-        what: &'static str,
-        /// The value given (for a move, where it ends).
-        value: Vec2,
-    },
-    /// A [`ResolveConfig`] field out of its range (see the field's documentation).
-    #[error("resolve setting {field} = {value} is out of range")]
-    BadConfig {
-        /// The field's name.
-        field: &'static str,
-        /// The value given.
-        value: f32,
-    },
-    /// All `u32::MAX` slots are in use.
-    #[error("too many bodies (at most {max})")]
-    TooMany {
-        /// The limit.
-        max: u32,
-    },
-}
-
-/// A body's state.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Body {
-    pub(crate) position: Vec2,
-    pub(crate) shape: BodyShape,
-    pub(crate) filter: BodyFilter,
-    pub(crate) user_data: u64,
-    /// The move the caller proposed for this step.
-    pub(crate) proposed: Vec2,
-    /// The move `resolve` settled on (the proposed one until then).
-    pub(crate) resolved: Vec2,
-}
-
-impl Body {
-    /// Where the body is.
-    #[must_use]
-    pub fn position(&self) -> Vec2 {
-        self.position
-    }
-
-    /// Its shape.
-    #[must_use]
-    pub fn shape(&self) -> &BodyShape {
-        &self.shape
-    }
-
-    /// Its filter.
-    #[must_use]
-    pub fn filter(&self) -> BodyFilter {
-        self.filter
-    }
-
-    /// The caller's data.
-    #[must_use]
-    pub fn user_data(&self) -> u64 {
-        self.user_data
-    }
-
-    /// The move proposed for this step (zero: the body is an obstacle this step).
-    #[must_use]
-    pub fn proposed_move(&self) -> Vec2 {
-        self.proposed
-    }
-
-    /// The move `resolve` settled on; before `resolve`, the proposed move.
-    #[must_use]
-    pub fn resolved_move(&self) -> Vec2 {
-        self.resolved
-    }
-}
 
 #[derive(Clone, Debug)]
 struct Slot {
@@ -177,7 +45,7 @@ pub struct Bodies {
     free: Vec<u32>,
     len: usize,
     config: ResolveConfig,
-    pub(crate) scratch: Scratch,
+    resolver: Resolver,
 }
 
 impl Bodies {
@@ -190,10 +58,10 @@ impl Bodies {
     /// No bodies, with `config`.
     ///
     /// # Errors
-    /// [`BodyError::BadConfig`] naming the first field out of its range (see
-    /// [`ResolveConfig`]).
+    /// [`BodyError::BadConfig`] naming the first field out of its range, as
+    /// [`ResolveConfig::validate`] does.
     pub fn with_config(config: ResolveConfig) -> Result<Self, BodyError> {
-        config.check()?;
+        config.validate()?;
         Ok(Self {
             config,
             ..Self::default()
@@ -209,10 +77,10 @@ impl Bodies {
     /// Changes the resolve settings.
     ///
     /// # Errors
-    /// [`BodyError::BadConfig`] naming the first field out of its range (see
-    /// [`ResolveConfig`]); the settings are then unchanged.
+    /// [`BodyError::BadConfig`] naming the first field out of its range, as
+    /// [`ResolveConfig::validate`] does; the settings are then unchanged.
     pub fn set_config(&mut self, config: ResolveConfig) -> Result<(), BodyError> {
-        config.check()?;
+        config.validate()?;
         self.config = config;
         Ok(())
     }
@@ -221,17 +89,11 @@ impl Bodies {
     ///
     /// # Errors
     /// [`BodyError::NonFinite`] for a non-finite position, [`BodyError::OutOfRange`] for
-    /// one beyond [`MAX_COORD`], [`BodyError::TooMany`] when every slot is taken.
+    /// one beyond [`MAX_COORD`](crate::MAX_COORD), [`BodyError::TooMany`] when every slot
+    /// is taken.
     pub fn add(&mut self, desc: BodyDesc) -> Result<BodyHandle, BodyError> {
         check_position(desc.position)?;
-        let body = Body {
-            position: desc.position,
-            shape: desc.shape,
-            filter: desc.filter,
-            user_data: desc.user_data,
-            proposed: Vec2::ZERO,
-            resolved: Vec2::ZERO,
-        };
+        let body = Body::new(desc);
         let index = match self.free.pop() {
             Some(index) => index,
             None => {
@@ -249,7 +111,7 @@ impl Bodies {
         let slot = &mut self.slots[index as usize];
         slot.body = Some(body);
         self.len += 1;
-        self.scratch.forget();
+        self.resolver.forget();
         Ok(BodyHandle {
             index,
             generation: slot.generation,
@@ -271,7 +133,7 @@ impl Bodies {
             self.free.push(handle.index);
         }
         self.len -= 1;
-        self.scratch.forget();
+        self.resolver.forget();
         Ok(body)
     }
 
@@ -328,7 +190,7 @@ impl Bodies {
         })
     }
 
-    pub(crate) fn bodies_mut(&mut self) -> impl Iterator<Item = &mut Body> {
+    fn bodies_mut(&mut self) -> impl Iterator<Item = &mut Body> {
         self.slots.iter_mut().filter_map(|s| s.body.as_mut())
     }
 
@@ -336,14 +198,14 @@ impl Bodies {
     /// slide around it).
     ///
     /// The move's end point (the body's position plus the move) must be within
-    /// [`MAX_COORD`], so no move is longer than `2√2 · MAX_COORD` and no arithmetic of the
-    /// resolve overflows. Bodies stay within `MAX_COORD` for good: `resolve` stops a body
-    /// rather than slide it past (see [`resolve`](Self::resolve)).
+    /// [`MAX_COORD`](crate::MAX_COORD), so no move is longer than `2√2 · MAX_COORD` and no
+    /// arithmetic of the resolve overflows. Bodies stay within `MAX_COORD` for good:
+    /// `resolve` stops a body rather than slide it past (see [`resolve`](Self::resolve)).
     ///
     /// # Errors
     /// [`BodyError::StaleHandle`], [`BodyError::NonFinite`] for a NaN or infinite move, or
-    /// [`BodyError::OutOfRange`] for a move whose end point is beyond [`MAX_COORD`]; the
-    /// body's move is then unchanged.
+    /// [`BodyError::OutOfRange`] for a move whose end point is beyond
+    /// [`MAX_COORD`](crate::MAX_COORD); the body's move is then unchanged.
     pub fn propose(&mut self, handle: BodyHandle, motion: Vec2) -> Result<(), BodyError> {
         finite("move", motion)?;
         let body = self.get_mut(handle)?;
@@ -357,8 +219,8 @@ impl Bodies {
     ///
     /// # Errors
     /// [`BodyError::StaleHandle`], [`BodyError::NonFinite`] for a non-finite position, or
-    /// [`BodyError::OutOfRange`] for a position beyond [`MAX_COORD`] or one from which the
-    /// proposed move would end beyond it; the body is then where it was.
+    /// [`BodyError::OutOfRange`] for a position beyond [`MAX_COORD`](crate::MAX_COORD) or
+    /// one from which the proposed move would end beyond it; the body is then where it was.
     pub fn set_position(&mut self, handle: BodyHandle, position: Vec2) -> Result<(), BodyError> {
         check_position(position)?;
         let body = self.get_mut(handle)?;
@@ -373,7 +235,7 @@ impl Bodies {
     /// [`BodyError::StaleHandle`].
     pub fn set_filter(&mut self, handle: BodyHandle, filter: BodyFilter) -> Result<(), BodyError> {
         self.get_mut(handle)?.filter = filter;
-        self.scratch.forget();
+        self.resolver.forget();
         Ok(())
     }
 
@@ -399,15 +261,16 @@ impl Bodies {
     /// changing a filter or the settings, or passing another map makes the next call resolve
     /// every moving body again.
     ///
-    /// Every body stays within [`MAX_COORD`]: positions and the end points of proposed
-    /// moves are refused beyond it, and a slide that would end beyond it is not taken (the
-    /// body stops at the contact, as with [`SlideMode::Stop`](crate::SlideMode::Stop)).
+    /// Every body stays within [`MAX_COORD`](crate::MAX_COORD): positions and the end
+    /// points of proposed moves are refused beyond it, and a slide that would end beyond it
+    /// is not taken (the body stops at the contact, as with
+    /// [`SlideMode::Stop`](crate::SlideMode::Stop)).
     pub fn resolve(&mut self, map: &TileMap) -> ResolveReport {
         let config = self.config;
-        let mut scratch = std::mem::take(&mut self.scratch);
+        let mut resolver = std::mem::take(&mut self.resolver);
         let mut bodies: Vec<&mut Body> = self.bodies_mut().collect();
-        let report = scratch.resolve(&mut bodies, &config, map);
-        self.scratch = scratch;
+        let report = resolver.resolve(&mut bodies, &config, map);
+        self.resolver = resolver;
         report
     }
 
@@ -436,7 +299,7 @@ fn finite(what: &'static str, value: Vec2) -> Result<(), BodyError> {
     }
 }
 
-/// A body's position: finite and within [`MAX_COORD`].
+/// A body's position: finite and within [`MAX_COORD`](crate::MAX_COORD).
 fn check_position(position: Vec2) -> Result<(), BodyError> {
     finite("position", position)?;
     in_range(position)
@@ -447,7 +310,8 @@ fn check_position(position: Vec2) -> Result<(), BodyError> {
         })
 }
 
-/// Where a body at `position` ends after a (finite) `motion`: within [`MAX_COORD`].
+/// Where a body at `position` ends after a (finite) `motion`: within
+/// [`MAX_COORD`](crate::MAX_COORD).
 fn check_end(position: Vec2, motion: Vec2) -> Result<(), BodyError> {
     let end = position + motion;
     in_range(end).then_some(()).ok_or(BodyError::OutOfRange {

@@ -23,8 +23,7 @@
 
 use glam::Vec2;
 
-use super::config::ResolveConfig;
-use super::resolve::ResolveReport;
+use super::config::{ResolveConfig, ResolveReport};
 
 /// What one body's last resolve saw and gave.
 #[derive(Clone, Copy, Debug)]
@@ -52,15 +51,13 @@ const UNKNOWN: Memory = Memory {
 
 /// The memory of the last resolve, per body in resolve order.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct Settled {
+pub(super) struct Settled {
     bodies: Vec<Memory>,
     /// Per body: something within its reach moved where it will see the change this step,
     /// and next step.
     disturbed: Vec<bool>,
     disturbed_next: Vec<bool>,
     config: Option<ResolveConfig>,
-    /// Bodies skipped by the current (or last) resolve.
-    skipped: usize,
 }
 
 impl Settled {
@@ -85,7 +82,6 @@ impl Settled {
             self.disturbed_next.clear();
             self.disturbed_next.resize(positions.len(), false);
         }
-        self.skipped = 0;
         self.config = Some(*config);
         std::mem::swap(&mut self.disturbed, &mut self.disturbed_next);
         self.disturbed_next.clear();
@@ -107,15 +103,8 @@ impl Settled {
             report.moving += 1;
             report.contacts += m.contacts as usize;
             report.cut_short += usize::from(m.cut_short);
-            self.skipped += 1;
         }
         stays
-    }
-
-    /// Bodies the current (or last) resolve skipped.
-    #[cfg(test)]
-    pub fn skipped(&self) -> usize {
-        self.skipped
     }
 
     /// Remembers body `b`'s resolve: from `start` by the proposed `motion` to `end`.
@@ -161,65 +150,92 @@ impl Settled {
 
 #[cfg(test)]
 mod tests {
-    use crate::io::ascii::{self, TEST_ROOM};
-    use crate::{Bodies, BodyDesc, BodyShape, Cell, TileMap, Vec2};
+    use super::*;
 
-    fn room() -> TileMap {
-        ascii::parse(TEST_ROOM, "room.txt", 1.0).unwrap()
-    }
-
-    /// Steps with the same proposed moves; the number of bodies skipped by each.
-    fn skips(bodies: &mut Bodies, map: &TileMap, moves: &[Vec2], steps: usize) -> Vec<usize> {
-        let handles: Vec<_> = bodies.iter().map(|(h, _)| h).collect();
-        (0..steps)
-            .map(|_| {
-                for (h, m) in handles.iter().zip(moves) {
-                    bodies.propose(*h, *m).unwrap();
-                }
-                bodies.step(map);
-                bodies.scratch.settled.skipped()
-            })
-            .collect()
+    /// Two bodies blocked in place by the last resolve, which saw `config`, an unchanged
+    /// map and `positions`; begins the next resolve.
+    fn blocked(config: &ResolveConfig, positions: &[Vec2], motion: Vec2) -> Settled {
+        let mut settled = Settled::default();
+        settled.begin(positions, true, config);
+        for (b, &p) in positions.iter().enumerate() {
+            settled.remember(b, p, motion, p, 2, b == 1);
+        }
+        settled.begin(positions, true, config);
+        settled
     }
 
     #[test]
-    fn a_body_pressed_into_a_corner_is_skipped_until_something_changes() {
-        let mut map = room();
-        let mut bodies = Bodies::new();
-        let circle = BodyShape::circle(0.4).unwrap();
-        let hero = bodies
-            .add(BodyDesc::new(Vec2::new(6.2, 1.6), circle.clone()))
-            .unwrap();
-        let push = [Vec2::new(0.3, -0.3)];
-        // Into the corner in a few steps, then blocked in place (resolved once more: it
-        // stays, remembered), then skipped every step.
-        let skipped = skips(&mut bodies, &map, &push, 6);
-        assert_eq!(skipped[..2], [0, 0]);
-        assert_eq!(skipped[3..], [1, 1, 1], "{skipped:?}");
-        let corner = bodies.get(hero).unwrap().position();
-        assert!(corner.x > 6.59 && corner.y < 1.41, "{corner}");
-        // A map edit far away does not wake it (the region an edit changes is its cell
-        // grown by two cells, here x < 5.25; the hero reaches x > 5.7) ...
-        let wall = Some(ascii::tile_for_char('#').unwrap().unwrap());
-        map.set_tile(Cell::new(2, 3), wall).unwrap();
-        assert_eq!(skips(&mut bodies, &map, &push, 3), [1, 1, 1]);
-        // ... one near it does.
-        map.set_tile(Cell::new(5, 2), wall).unwrap();
-        assert_eq!(skips(&mut bodies, &map, &push, 3), [0, 1, 1]);
-        assert_eq!(bodies.get(hero).unwrap().position(), corner);
-        // So does a body walking up to it (it is resolved first: a lower slot).
-        bodies.remove(hero).unwrap();
-        let walker = bodies
-            .add(BodyDesc::new(Vec2::new(4.0, 1.6), circle.clone()))
-            .unwrap();
-        let hero = bodies.add(BodyDesc::new(corner, circle)).unwrap();
-        let moves = [Vec2::new(0.5, 0.0), Vec2::new(0.3, -0.3)];
-        let skipped = skips(&mut bodies, &map, &moves, 8);
-        // Forgotten on add; the hero is skipped while the walker is far, woken while it
-        // closes in, and both settle in the end.
-        assert_eq!(skipped[..3], [0, 1, 0], "{skipped:?}");
-        assert_eq!(*skipped.last().unwrap(), 2, "{skipped:?}");
-        assert_eq!(bodies.get(hero).unwrap().position(), corner);
-        assert!(bodies.get(walker).unwrap().position().distance(corner) >= 0.8);
+    fn a_body_blocked_in_place_is_skipped_only_while_nothing_it_saw_changed() {
+        let config = ResolveConfig::default();
+        let positions = [Vec2::new(1.5, 1.5), Vec2::new(3.5, 1.5)];
+        let push = Vec2::new(0.5, 0.0);
+        let mut report = ResolveReport::default();
+        // The same inputs: both skipped, counted as the last resolve counted them.
+        let mut settled = blocked(&config, &positions, push);
+        assert!(settled.stays(0, positions[0], push, &mut report));
+        assert!(settled.stays(1, positions[1], push, &mut report));
+        let counted = ResolveReport {
+            moving: 2,
+            contacts: 4,
+            cut_short: 1,
+        };
+        assert_eq!(report, counted);
+        // Another move or another start: resolved.
+        assert!(!settled.stays(0, positions[0], -push, &mut report));
+        assert!(!settled.stays(0, positions[1], push, &mut report));
+        assert_eq!(report, counted);
+        // A body that moved is never skipped, nor one that had no move.
+        let mut settled = blocked(&config, &positions, push);
+        settled.remember(0, positions[0], push, positions[0] + push, 0, false);
+        settled.remember_still(1, positions[1]);
+        settled.begin(&[positions[0] + push, positions[1]], true, &config);
+        assert!(!settled.stays(0, positions[0] + push, push, &mut report));
+        assert!(!settled.stays(1, positions[1], push, &mut report));
+        // What the memory cannot see per body forgets it all: the map changed in a way the
+        // caller cannot wake bodies for, other settings, a body not where it was left.
+        let moved = [positions[0], positions[1] + push];
+        let other = ResolveConfig {
+            passes: 3,
+            ..config
+        };
+        for (map_kept, now, at) in [
+            (false, &config, &positions),
+            (true, &other, &positions),
+            (true, &config, &moved),
+        ] {
+            let mut settled = blocked(&config, &positions, push);
+            settled.begin(at, map_kept, now);
+            assert!(!settled.stays(0, positions[0], push, &mut report));
+        }
+    }
+
+    #[test]
+    fn a_woken_or_disturbed_body_is_resolved_when_it_can_see_the_change() {
+        let config = ResolveConfig::default();
+        let positions = [Vec2::new(1.5, 1.5), Vec2::new(3.5, 1.5)];
+        let push = Vec2::new(0.5, 0.0);
+        let mut report = ResolveReport::default();
+        let stays = |settled: &mut Settled, b: usize, report: &mut ResolveReport| {
+            settled.stays(b, positions[b], push, report)
+        };
+        // Woken by a map edit near it: resolved this step, skipped the next.
+        let mut settled = blocked(&config, &positions, push);
+        settled.wake(0);
+        assert!(!stays(&mut settled, 0, &mut report));
+        assert!(stays(&mut settled, 1, &mut report));
+        settled.begin(&positions, true, &config);
+        assert!(stays(&mut settled, 0, &mut report));
+        // Body 0 moves next to body 1, which is resolved later: body 1 sees it this step.
+        let mut settled = blocked(&config, &positions, push);
+        settled.disturb(0, 1);
+        assert!(!stays(&mut settled, 1, &mut report));
+        settled.begin(&positions, true, &config);
+        assert!(stays(&mut settled, 1, &mut report));
+        // Body 1 moves next to body 0, already resolved: body 0 sees it next step.
+        let mut settled = blocked(&config, &positions, push);
+        settled.disturb(1, 0);
+        assert!(stays(&mut settled, 0, &mut report));
+        settled.begin(&positions, true, &config);
+        assert!(!stays(&mut settled, 0, &mut report));
     }
 }

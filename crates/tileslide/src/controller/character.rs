@@ -48,6 +48,26 @@ impl Default for ControllerConfig {
     }
 }
 
+impl ControllerConfig {
+    /// Whether the configuration can be used: the slope limit from 0 up to (not including) 90
+    /// degrees, every distance from 0 to [`MAX_COORD`], at least one slide. [`Character::new`]
+    /// refuses what this refuses.
+    ///
+    /// ```
+    /// # use tileslide::{ControllerConfig, ControllerError};
+    /// assert_eq!(ControllerConfig::default().validate(), Ok(()));
+    /// let skin = ControllerConfig { skin: -1e-3, ..ControllerConfig::default() };
+    /// assert_eq!(skin.validate(), Err(ControllerError::BadConfig { field: "skin", value: -1e-3 }));
+    /// ```
+    ///
+    /// # Errors
+    /// [`ControllerError::BadConfig`] naming the first field out of its range and its value (a
+    /// NaN included).
+    pub fn validate(&self) -> Result<(), ControllerError> {
+        check_config(self)
+    }
+}
+
 /// Requests for one move.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct MoveOptions {
@@ -189,7 +209,7 @@ impl Character {
             what: "up",
             value: up,
         })?;
-        check_config(&config)?;
+        config.validate()?;
         // Sideways is the map's x axis made perpendicular to up (so "left" and "right" are
         // the screen's whichever way y points); for an up along x, up turned a quarter.
         let side = (Vec2::X - up * up.x).try_normalize().unwrap_or(up.perp());

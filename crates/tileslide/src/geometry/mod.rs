@@ -21,5 +21,5 @@ pub(crate) use normal::unit_normal;
 pub use ray::{PARALLEL_TOLERANCE, Ray, RaySegmentHit, cast_ray_segment};
 pub use segment::Segment;
 pub use sweep::{SweepHit, sweep_circle_circle, sweep_circle_segment};
-pub(crate) use sweep::{bisect, circle_circle, circle_segment};
+pub(crate) use sweep::{circle_circle, circle_segment};
 pub use sweep_box::sweep_box_segment;

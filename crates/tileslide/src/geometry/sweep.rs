@@ -291,28 +291,6 @@ pub(crate) fn circle_segment(
     best
 }
 
-/// The write-up's time of impact by bisection: the last of `halvings` probes at which the
-/// predicate `overlaps(t)` is false, after first checking `t = 1`; `None` when the end of the
-/// move is free. Kept for comparison with the exact sweeps: it only samples, so a fast move
-/// whose end point is clear passes straight through anything in between.
-pub(crate) fn bisect(halvings: u32, overlaps: impl Fn(f32) -> bool) -> Option<f32> {
-    let mut hit = overlaps(1.0);
-    if !hit {
-        return None;
-    }
-    let (mut t, mut best) = (1.0f32, 0.0f32);
-    let mut piece = 1.0f32;
-    for _ in 0..halvings {
-        piece *= 0.5;
-        t += if hit { -piece } else { piece };
-        hit = overlaps(t);
-        if !hit {
-            best = t;
-        }
-    }
-    Some(best)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -404,18 +382,6 @@ mod tests {
             .unwrap();
         assert_eq!(hit.t, 0.0);
         assert_eq!(hit.normal, Vec2::Y);
-    }
-
-    #[test]
-    fn bisection_finds_the_last_free_probe_and_misses_fast_moves() {
-        // Contact at t = 0.6; 5 halvings land below it.
-        let overlaps = |t: f32| v(5.0 * t, 0.0).distance(v(5.0, 0.0)) < 2.0;
-        let t = bisect(5, overlaps).unwrap();
-        assert!(t <= 0.6 && t > 0.6 - 1.0 / 16.0, "{t}");
-        // A move that ends past the obstacle: the write-up's bisection never looks in between.
-        let through = |t: f32| v(20.0 * t, 0.0).distance(v(5.0, 0.0)) < 2.0;
-        assert_eq!(bisect(5, through), None);
-        assert!(sweep_circle_circle(Vec2::ZERO, v(20.0, 0.0), v(5.0, 0.0), 2.0).is_some());
     }
 
     /// Distance from the circle's centre to the obstacle, sampled along the move.

@@ -1,5 +1,6 @@
-//! The second loop of a step: moves checked against each other and the walls at the exact
-//! time of impact, the blocked remainder slid along the contact tangent.
+//! The resolver: the second loop of a step, with the memories that make the next step
+//! cheaper. Moves are checked against each other and the walls at the exact time of impact,
+//! and the blocked remainder is slid along the contact tangent.
 //!
 //! Bodies are resolved one after another, in slot order (Gauss–Seidel). Each one moves by
 //! *collide and slide* against a still picture of everything else: the walls, the bodies
@@ -22,51 +23,23 @@
 //! Against a round obstacle (another body, a wall's rounded end) a body already inside the
 //! band is still free to move along the contact tangent, to within rounding: that is where
 //! its slide goes, and taking rounding for an approach would block the slide at `t = 0` on
-//! every pass (see `grazes`).
+//! every pass (see `grazes` in `contact`).
 
 use glam::Vec2;
 
-use super::body::BodyFilter;
-use super::config::{ResolveConfig, SlideMode, TimeOfImpact};
+use super::body::{Body, BodyFilter};
+use super::config::{ResolveConfig, ResolveReport};
+use super::contact::{Obstacle, band, slide, sweep_circle, sweep_wall};
 use super::map_watch::{MapChange, MapWatch};
 use super::near_walls::NearWalls;
 use super::neighbours::Neighbours;
-use super::set::Body;
 use super::settled::Settled;
-use crate::geometry::{Aabb, Circle, SweepHit, bisect, circle_circle, in_range};
-use crate::query::Capsule;
+use crate::geometry::{Aabb, Circle, SweepHit, in_range};
 use crate::tiles::TileMap;
-
-/// Relative size below which the remainder's projection on the tangent counts as zero (the
-/// write-up's `EPS`, relative to the remainder's length for `f32`).
-const TIE_EPSILON: f32 = 1e-5;
-
-/// Largest lean into a round obstacle (another circle, a wall's rounded end) that a move
-/// starting within its contact radius may have and still count as running along the
-/// contact tangent, as a fraction of the move's length (see `grazes`). The slide off such a
-/// contact leans by rounding, about 1e-7 of its length; and a move leaning in by `ε` brings
-/// the centres at most `ε²/2` of their distance closer, far below a float's spacing.
-const TANGENT_EPSILON: f32 = 1e-5;
-
-/// How far a slide along a wall that leans into it by rounding is lifted off it, as a
-/// fraction of the slide's length (see `slide`): ten times the rounding noise.
-const SLIDE_LIFT: f32 = 1e-6;
 
 /// Shortest safe part of a move that is taken, as a fraction of the gap (see
 /// `collide_and_slide`).
 const MIN_STEP: f32 = 0.125;
-
-/// What a `resolve` did.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ResolveReport {
-    /// Bodies with a non-zero proposed move.
-    pub moving: usize,
-    /// Contacts met (each sweep that stopped at something counts once).
-    pub contacts: usize,
-    /// Bodies whose remainder was still blocked after the last pass, and was cut at its
-    /// first contact.
-    pub cut_short: usize,
-}
 
 /// A circle of a body, for the duration of a resolve.
 #[derive(Clone, Copy, Debug)]
@@ -76,18 +49,12 @@ struct WorkCircle {
     radius: f32,
 }
 
-/// What a sweep stopped at.
-#[derive(Clone, Copy, Debug)]
-enum Obstacle {
-    /// A wall: met on its flat side, or at a rounded end.
-    Wall { flat: bool },
-    /// Another body, by work index.
-    Body(u32),
-}
-
-/// Buffers kept between resolves, so a step allocates nothing once warm.
+/// The resolver of a [`Bodies`](crate::Bodies) set: its buffers, kept between resolves so
+/// that a step allocates nothing once warm, and its memories of the last resolve (which
+/// bodies may meet, the walls near each, which bodies were blocked in place), kept so that
+/// the next one costs less; none of them changes a result.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct Scratch {
+pub(super) struct Resolver {
     circles: Vec<WorkCircle>,
     /// Per body, its first circle; one more entry at the end.
     first_circle: Vec<u32>,
@@ -113,10 +80,13 @@ pub(crate) struct Scratch {
     /// Per circle of the body being resolved, its range of `near`'s walls.
     wall_ranges: Vec<(u32, u32)>,
     /// The last resolve, to skip bodies blocked in place again.
-    pub(super) settled: Settled,
+    settled: Settled,
+    /// Bodies the last resolve skipped (blocked in place again), for the tests below.
+    #[cfg(test)]
+    skipped: usize,
 }
 
-impl Scratch {
+impl Resolver {
     /// Resolves the proposed moves of `bodies` (in slot order) on `map`, writing each
     /// body's resolved move.
     pub fn resolve(
@@ -125,7 +95,7 @@ impl Scratch {
         config: &ResolveConfig,
         map: &TileMap,
     ) -> ResolveReport {
-        let gap = config.gap * map.cell_size().min_element();
+        let gap = config.gap;
         self.load(bodies, gap);
         self.find_neighbours(config, map.cell_size().min_element());
         let change = self.watch.update(map);
@@ -140,6 +110,10 @@ impl Scratch {
             }
         }
         let mut report = ResolveReport::default();
+        #[cfg(test)]
+        {
+            self.skipped = 0;
+        }
         for (b, body) in bodies.iter_mut().enumerate() {
             let (start, motion) = (self.position[b], self.motion[b]);
             if motion == Vec2::ZERO {
@@ -148,6 +122,10 @@ impl Scratch {
             }
             if self.settled.stays(b, start, motion, &mut report) {
                 body.resolved = Vec2::ZERO;
+                #[cfg(test)]
+                {
+                    self.skipped += 1;
+                }
                 continue;
             }
             let before = report;
@@ -265,7 +243,7 @@ impl Scratch {
             if remaining == Vec2::ZERO {
                 break;
             }
-            let Some((hit, obstacle)) = self.first_contact(b, remaining, gap, config.toi) else {
+            let Some((hit, obstacle)) = self.first_contact(b, remaining, gap) else {
                 self.position[bi] += remaining;
                 return;
             };
@@ -295,13 +273,7 @@ impl Scratch {
 
     /// The first contact of body `b` moving by `motion` from where it is now, against the
     /// walls near it and its neighbours where they are now.
-    fn first_contact(
-        &self,
-        b: u32,
-        motion: Vec2,
-        gap: f32,
-        toi: TimeOfImpact,
-    ) -> Option<(SweepHit, Obstacle)> {
+    fn first_contact(&self, b: u32, motion: Vec2, gap: f32) -> Option<(SweepHit, Obstacle)> {
         let bi = b as usize;
         let origin = self.position[bi];
         // Obstacles farther than the move's length plus the contact radius are out of reach:
@@ -325,7 +297,7 @@ impl Scratch {
                 if distance2 > (radius + reach) * (radius + reach) {
                     continue;
                 }
-                if let Some(hit) = sweep_wall(wall, center, radius, motion, toi) {
+                if let Some(hit) = sweep_wall(wall, center, radius, motion) {
                     keep(
                         hit,
                         Obstacle::Wall {
@@ -347,7 +319,7 @@ impl Scratch {
                 if distance2 > (radius + reach) * (radius + reach) {
                     continue;
                 }
-                if let Some(hit) = sweep_circle(center, motion, at, radius, toi)
+                if let Some(hit) = sweep_circle(center, motion, at, radius)
                     && nearest.is_none_or(|(h, m)| hit.t < h.t || (hit.t == h.t && n < m))
                 {
                     nearest = Some((hit, n));
@@ -361,160 +333,6 @@ impl Scratch {
     }
 }
 
-/// The contact radius for a circle whose centre is at squared distance `distance2` from an
-/// obstacle it touches at `radius`: `radius + gap` from outside that band, `radius + gap / 2`
-/// from inside it (so a body in the band may still close in a little: no snag on rounding).
-fn band(distance2: f32, radius: f32, gap: f32) -> f32 {
-    if distance2 > (radius + gap) * (radius + gap) {
-        radius + gap
-    } else {
-        radius + 0.5 * gap
-    }
-}
-
-/// Whether `hit` is the start of a move by `motion` from within the contact radius of a
-/// round obstacle that only runs along it: the contact normal, which is then the direction
-/// between the centres, and the move are perpendicular to within [`TANGENT_EPSILON`].
-///
-/// The slide off a contact met at `t = 0` is perpendicular to its normal, but only to
-/// within rounding (the normal is rounded when normalized): the exact sweep
-/// (`sweep_circle_circle`) counts any move with a negative projection on the centres'
-/// direction as an approach, and for about half the slides the projection rounds negative.
-/// Such a slide would be blocked at `t = 0` by the very contact it slides off, on every pass,
-/// and the body would not move at all. A move this close to the tangent cannot come closer
-/// than `1 − TANGENT_EPSILON²/2` of the centres' distance anywhere along it, so it is not a
-/// contact. Only for round obstacles: along a flat side a lean adds up with the length of
-/// the move, so the same tolerance would let a body creep into the wall.
-fn grazes(hit: SweepHit, motion: Vec2) -> bool {
-    hit.t == 0.0 && hit.normal.dot(motion) >= -TANGENT_EPSILON * motion.length()
-}
-
-fn sweep_wall(
-    wall: &Capsule,
-    center: Vec2,
-    radius: f32,
-    motion: Vec2,
-    toi: TimeOfImpact,
-) -> Option<SweepHit> {
-    match toi {
-        TimeOfImpact::Exact => {
-            let hit = wall.sweep_ordinary(center, radius, motion)?;
-            // The flat side reports the wall's own normal; any other comes from a rounded
-            // end (a shortcut only: the sweep below would return the flat hit unchanged).
-            if hit.normal == wall.normal || !grazes(hit, motion) {
-                return Some(hit);
-            }
-            // A rounded end only grazed from within its radius is not a contact, but the
-            // flat side or the other end may still be met further on: sweep again without
-            // the ends the move only grazes.
-            let mut caps = wall.caps;
-            for (cap, end) in caps.iter_mut().zip([wall.segment.a, wall.segment.b]) {
-                *cap &= !circle_circle(center - end, motion, radius)
-                    .is_some_and(|end_hit| grazes(end_hit, motion));
-            }
-            Capsule { caps, ..*wall }.sweep_ordinary(center, radius, motion)
-        }
-        TimeOfImpact::Bisection { halvings } => {
-            // The write-up's check at sampled positions: inside the capsule, on the front.
-            let at = |t: f32| center + motion * t;
-            let inside = |t: f32| {
-                let p = at(t);
-                (p - wall.segment.a).dot(wall.normal) >= 0.0
-                    && wall.segment.distance_squared_to(p) < radius * radius
-            };
-            let t = bisect(halvings, inside)?;
-            let p = at(t);
-            let normal = (p - wall.segment.closest_point(p))
-                .try_normalize()
-                .unwrap_or(wall.normal);
-            Some(SweepHit { t, normal })
-        }
-    }
-}
-
-fn sweep_circle(
-    center: Vec2,
-    motion: Vec2,
-    other: Vec2,
-    radius: f32,
-    toi: TimeOfImpact,
-) -> Option<SweepHit> {
-    match toi {
-        TimeOfImpact::Exact => {
-            circle_circle(center - other, motion, radius).filter(|&hit| !grazes(hit, motion))
-        }
-        TimeOfImpact::Bisection { halvings } => {
-            let at = |t: f32| center + motion * t;
-            let t = bisect(halvings, |t| {
-                at(t).distance_squared(other) < radius * radius
-            })?;
-            let normal = (at(t) - other)
-                .try_normalize()
-                .unwrap_or(-motion.normalize_or_zero());
-            Some(SweepHit { t, normal })
-        }
-    }
-}
-
-/// The write-up's response: the blocked remainder redirected along the contact tangent, to
-/// the side its projection points. For two bodies meeting exactly head-on (projection
-/// zero) the one with the lower slot turns one way and the other the opposite way; a body
-/// running straight into a wall stops.
-fn slide(blocked: Vec2, normal: Vec2, obstacle: Obstacle, me: u32, mode: SlideMode) -> Vec2 {
-    let length = blocked.length();
-    // The tangent of the write-up: `perp(d)` with `d` from the higher slot's centre to the
-    // lower's, so both bodies of a pair use the same tangent.
-    let perp = Vec2::new(normal.y, -normal.x);
-    let eps = TIE_EPSILON * length;
-    let (tangent, along) = match obstacle {
-        Obstacle::Wall { .. } => {
-            let u = blocked.dot(perp);
-            if u.abs() <= eps {
-                return Vec2::ZERO;
-            }
-            (if u < 0.0 { -perp } else { perp }, u.abs())
-        }
-        Obstacle::Body(other) => {
-            // Which way is a coin toss (slot order, and the side of the centre line the
-            // remainder points to): negated by flipping the sign bit, without a branch
-            // (the same bits as `-perp`, `eps`, `-t`).
-            let lower = flip_if(me >= other);
-            let t = Vec2::new(lower(perp.x), lower(perp.y));
-            let u = blocked.dot(t);
-            let threshold = lower(-eps);
-            let away = flip_if(u < threshold);
-            (Vec2::new(away(t.x), away(t.y)), u.abs())
-        }
-    };
-    let slid = match mode {
-        SlideMode::FullLength => tangent * length,
-        SlideMode::Tangential => tangent * along,
-        SlideMode::Stop => return Vec2::ZERO,
-    };
-    // Along a wall the tangent is perpendicular to the normal, but the slide's components
-    // are rounded one by one, so its projection on the normal is rounding noise, about 1e-7
-    // of its length (exactly zero only for axis-aligned and 45° walls). From inside the gap
-    // band a slide that leans in by that noise is an approach at `t = 0`: it would be
-    // blocked by the wall it slides along, on every pass. Lifted off the wall by
-    // `SLIDE_LIFT` of its length instead, it slides; the lift only ever moves the body away
-    // from the wall, so unlike a tolerance in the sweep it cannot add up into it. (Only on
-    // the flat side: a slide off a rounded end is a round obstacle's, which `grazes` lets
-    // through.)
-    let lean = slid.dot(normal);
-    if matches!(obstacle, Obstacle::Wall { flat: true }) && lean < 0.0 {
-        slid + normal * (SLIDE_LIFT * slid.length())
-    } else {
-        slid
-    }
-}
-
-/// Negation when `yes`, by flipping the sign bit with an integer mask: the same bits as
-/// `-x`, with no branch for a condition the predictor cannot guess.
-fn flip_if(yes: bool) -> impl Fn(f32) -> f32 {
-    let mask = u32::from(yes) << 31;
-    move |x| f32::from_bits(x.to_bits() ^ mask)
-}
-
 /// `x` when `yes`, else `-0.0` (which added to anything leaves it bit for bit as it was,
 /// `-0.0` included), by masking bits: no branch for a condition the predictor cannot guess.
 fn keep_if(yes: bool, x: f32) -> f32 {
@@ -525,79 +343,80 @@ fn keep_if(yes: bool, x: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::io::ascii::{self, TEST_ROOM};
+    use crate::{BodyDesc, BodyShape, Cell};
 
-    #[test]
-    fn head_on_bodies_turn_opposite_ways() {
-        // Body 0 moving +x meets body 1 moving −x: normals are opposite, remainders too.
-        let n0 = Vec2::new(-1.0, 0.0); // from body 1 towards body 0
-        let s0 = slide(
-            Vec2::new(1.0, 0.0),
-            n0,
-            Obstacle::Body(1),
-            0,
-            SlideMode::FullLength,
-        );
-        let s1 = slide(
-            Vec2::new(-1.0, 0.0),
-            -n0,
-            Obstacle::Body(0),
-            1,
-            SlideMode::FullLength,
-        );
-        assert_eq!(s0.length(), 1.0);
-        assert_eq!(s0, -s1, "the two bodies must slide in opposite directions");
-        assert_eq!(s0.x, 0.0);
+    fn room() -> TileMap {
+        ascii::parse(TEST_ROOM, "room.txt", 1.0).unwrap()
+    }
+
+    /// Bodies of radius 0.4 and their resolver, stepped as `Bodies` steps them (in slot
+    /// order; adding a body forgets the last resolve).
+    #[derive(Default)]
+    struct Crowd {
+        bodies: Vec<Body>,
+        resolver: Resolver,
+    }
+
+    impl Crowd {
+        fn add(&mut self, at: Vec2) {
+            let circle = BodyShape::circle(0.4).unwrap();
+            self.bodies.push(Body::new(BodyDesc::new(at, circle)));
+            self.resolver.forget();
+        }
+
+        /// Steps with the same proposed moves; the number of bodies skipped by each.
+        fn skips(&mut self, map: &TileMap, moves: &[Vec2], steps: usize) -> Vec<usize> {
+            (0..steps)
+                .map(|_| {
+                    for (body, &motion) in self.bodies.iter_mut().zip(moves) {
+                        body.proposed = motion;
+                    }
+                    let mut bodies: Vec<&mut Body> = self.bodies.iter_mut().collect();
+                    let config = ResolveConfig::default();
+                    self.resolver.resolve(&mut bodies, &config, map);
+                    for body in &mut self.bodies {
+                        body.position += body.resolved;
+                    }
+                    self.resolver.skipped
+                })
+                .collect()
+        }
     }
 
     #[test]
-    fn slides_follow_the_projection_and_walls_stop_head_on_moves() {
-        let up = Vec2::new(0.0, 1.0);
-        // Leaning right against a floor: slides right, full length or tangential part.
-        let blocked = Vec2::new(0.6, -0.8);
-        assert_eq!(
-            slide(
-                blocked,
-                up,
-                Obstacle::Wall { flat: true },
-                0,
-                SlideMode::FullLength
-            ),
-            Vec2::new(1.0, 0.0)
-        );
-        let t = slide(
-            blocked,
-            up,
-            Obstacle::Wall { flat: true },
-            0,
-            SlideMode::Tangential,
-        );
-        assert!((t - Vec2::new(0.6, 0.0)).length() < 1e-6);
-        assert_eq!(
-            slide(
-                blocked,
-                up,
-                Obstacle::Wall { flat: true },
-                0,
-                SlideMode::Stop
-            ),
-            Vec2::ZERO
-        );
-        assert_eq!(
-            slide(
-                Vec2::new(0.0, -1.0),
-                up,
-                Obstacle::Wall { flat: true },
-                0,
-                SlideMode::FullLength
-            ),
-            Vec2::ZERO
-        );
-    }
-
-    #[test]
-    fn the_contact_band_lets_bodies_close_in_but_never_touch() {
-        assert_eq!(band(1.0, 0.5, 0.01), 0.51);
-        assert_eq!(band(0.505 * 0.505, 0.5, 0.01), 0.505);
-        assert!(band(0.09, 0.5, 0.01) > 0.5);
+    fn a_body_pressed_into_a_corner_is_skipped_until_something_changes() {
+        let mut map = room();
+        let mut crowd = Crowd::default();
+        crowd.add(Vec2::new(6.2, 1.6));
+        let push = [Vec2::new(0.3, -0.3)];
+        // Into the corner in a few steps, then blocked in place (resolved once more: it
+        // stays, remembered), then skipped every step.
+        let skipped = crowd.skips(&map, &push, 6);
+        assert_eq!(skipped[..2], [0, 0]);
+        assert_eq!(skipped[3..], [1, 1, 1], "{skipped:?}");
+        let corner = crowd.bodies[0].position;
+        assert!(corner.x > 6.59 && corner.y < 1.41, "{corner}");
+        // A map edit far away does not wake it (the region an edit changes is its cell
+        // grown by two cells, here x < 5.25; the hero reaches x > 5.7) ...
+        let wall = Some(ascii::tile_for_char('#').unwrap().unwrap());
+        map.set_tile(Cell::new(2, 3), wall).unwrap();
+        assert_eq!(crowd.skips(&map, &push, 3), [1, 1, 1]);
+        // ... one near it does.
+        map.set_tile(Cell::new(5, 2), wall).unwrap();
+        assert_eq!(crowd.skips(&map, &push, 3), [0, 1, 1]);
+        assert_eq!(crowd.bodies[0].position, corner);
+        // So does a body walking up to it (it is resolved first: a lower slot).
+        crowd.bodies.clear();
+        crowd.add(Vec2::new(4.0, 1.6));
+        crowd.add(corner);
+        let moves = [Vec2::new(0.5, 0.0), Vec2::new(0.3, -0.3)];
+        let skipped = crowd.skips(&map, &moves, 8);
+        // Forgotten on add; the hero is skipped while the walker is far, woken while it
+        // closes in, and both settle in the end.
+        assert_eq!(skipped[..3], [0, 1, 0], "{skipped:?}");
+        assert_eq!(*skipped.last().unwrap(), 2, "{skipped:?}");
+        assert_eq!(crowd.bodies[1].position, corner);
+        assert!(crowd.bodies[0].position.distance(corner) >= 0.8);
     }
 }
