@@ -1,6 +1,8 @@
 //! A platformer character and its move: collide and slide against the tile world and its
 //! temporary segments, walk along slopes, snap to the ground, one-way platforms.
 
+use std::f32::consts::{PI, TAU};
+
 use glam::Vec2;
 
 use super::contact::{Contact, Contacts, Surface};
@@ -121,10 +123,15 @@ pub struct Character {
     walkable: f32,
     /// The ground under the character after its last move.
     pub(super) ground: Option<Contact>,
+    /// Whether that ground is a rounded corner (a circle on a segment's end).
+    ground_corner: bool,
     /// The moving platform it stands on, if its ground is one.
     pub(super) riding: Option<Riding>,
     /// Scratch: the segments near the current sweep.
     walls: Vec<Wall>,
+    /// Scratch: where whether a walk has ground below it can change (see
+    /// [`edge`](Self::edge)).
+    events: Vec<f32>,
 }
 
 /// Moves shorter than this are not swept (they are rounding, not motion).
@@ -155,6 +162,14 @@ const EDGE_STEPS: u32 = 20;
 enum Phase {
     Walk,
     Air,
+}
+
+/// The ground just before a walk leaves it (see [`Character::edge`]): how far the character
+/// drops onto it there, and the corner it stands on, for a circle on a rounded corner.
+#[derive(Clone, Copy, Debug)]
+struct Footing {
+    drop: f32,
+    corner: Option<Vec2>,
 }
 
 /// The line of the ground a walk follows: a point on it and its unit normal. The height of
@@ -201,8 +216,10 @@ impl Character {
             walkable: config.max_slope_degrees.to_radians().cos(),
             config,
             ground: None,
+            ground_corner: false,
             riding: None,
             walls: Vec::new(),
+            events: Vec::new(),
         })
     }
 
@@ -275,29 +292,45 @@ impl Character {
         // take is the same straight line, so where it lands (or meets a ledge's face) does
         // not depend on the frame rate.
         let start = self.position;
-        let (mut ends, last) = if let Some(ground) = walking {
+        let (mut ends, last, mut left) = if let Some(ground) = walking {
             let walk = along(ground.normal, self.side, sideways);
-            let line = self.ground_line(ground.normal);
-            self.slide(map, walk, Some(line), options, &mut contacts)
+            let line = self.ground_line(ground.normal, self.ground_corner);
+            self.slide(map, walk, Some(line), None, options, &mut contacts)
         } else {
-            self.slide(map, displacement, None, options, &mut contacts)
+            self.slide(map, displacement, None, None, options, &mut contacts)
         };
         // Find the ground under the character: within the snap distance when it walked (so
         // it follows ramps down and steps down small ledges; a landing walks on, as the
         // next step would), within two skins otherwise (touching, not snapping).
-        contacts.ground = self.settle(map, self.reach(ends), options);
-        // Walked off the ground's edge: the walk ends where the ground did, and the rest of
-        // the step (its share of the whole displacement, fall included) is a move through
-        // the air from there, so where the fall starts does not depend on the frame rate.
-        if contacts.ground.is_none()
-            && ends == Phase::Walk
-            && let Some((from, leg)) = last
+        if left.is_none() {
+            contacts.ground = self.settle(map, self.reach(ends), options);
+            // No ground at the end of a walk whose last leg seemed to have some all along
+            // (rounding at an edge): the walk ends where it does along that leg.
+            if contacts.ground.is_none()
+                && ends == Phase::Walk
+                && let Some((from, leg)) = last
+                && let Some((f, footing)) = self.edge(map, from, leg, false, options)
+            {
+                self.step_off(map, from + leg * f, &footing, options);
+                left = Some(footing);
+            }
+        }
+        // Walked off the ground's edge, or over a gap: the walk ends where the ground did,
+        // on it, and the rest of the step (its share of the whole displacement, fall
+        // included) is a move through the air from there, so where the fall starts does
+        // not depend on the frame rate.
+        if let Some(footing) = left
             && sideways != 0.0
         {
-            self.position = from + leg * self.edge(map, from, leg, options);
             let made = (self.position - start).dot(self.side) / sideways;
-            let rest = displacement * (1.0 - made).clamp(0.0, 1.0);
-            (ends, _) = self.slide(map, rest, None, options, &mut contacts);
+            let mut rest = displacement * (1.0 - made).clamp(0.0, 1.0);
+            // A circle leaving a rounded corner is still on it: it rolls on around it as far
+            // as the move presses it there, as a circle meeting it in the air does.
+            let mut first = None;
+            if let Some(corner) = footing.corner {
+                (rest, first) = self.roll(map, corner, rest, options);
+            }
+            (ends, _, _) = self.slide(map, rest, None, first, options, &mut contacts);
             contacts.ground = self.settle(map, self.reach(ends), options);
         }
         self.ground = contacts.ground;
@@ -315,59 +348,221 @@ impl Character {
         }
     }
 
-    /// The fraction of the straight `leg` from `from`, swept clear, at which the character
-    /// first has no walkable ground within the snap distance below it (1 when it has some
-    /// all the way; 0 when it has none at `from`): where a walk along it leaves the ground.
-    /// Found by bisection to 2⁻²⁰ of the leg, on the side past the edge, so that a fall
-    /// from there does not catch the edge it left. The character is left at `from`.
-    fn edge(&mut self, map: &TileMap, from: Vec2, leg: Vec2, options: MoveOptions) -> f32 {
-        let held = |character: &mut Self, f: f32| {
-            character.position = from + leg * f;
-            character
-                .first_hit(
-                    map,
-                    -character.up * character.config.snap_distance,
-                    options,
-                    None,
-                )
-                .is_some_and(|(hit, _)| {
-                    Surface::of(hit.normal, character.up, character.side, character.walkable)
-                        == Surface::Ground
-                })
+    /// Where a walk along the straight `leg` from `from` (swept clear) leaves the ground:
+    /// the first fraction of the leg at which the character has no walkable ground within
+    /// the snap distance below it, and how far below the ground was just before it (the
+    /// drop that puts the character on it there). `None` when it has ground all along the
+    /// leg; a fraction of 0 (and no drop) when it has none at `from`. `grounded` says
+    /// whether it has ground at the leg's end. The character is left where it was.
+    ///
+    /// Whether there is ground changes only at the leg's [`ground_events`]: where the
+    /// shape's side passes a segment's capped end, where a circle's contact normal with a
+    /// corner reaches the slope limit, where a walkable segment's line is the snap distance
+    /// below. Each stretch between two of them is tested at its middle, in order along the
+    /// leg, so a gap the leg crosses is not stepped over however long the step. The first
+    /// stretch without ground is then bisected to 2⁻²⁰ of the leg, and the fraction is
+    /// returned on the side past the edge, so that a fall from there does not catch the
+    /// edge it left.
+    ///
+    /// [`ground_events`]: Self::ground_events
+    fn edge(
+        &mut self,
+        map: &TileMap,
+        from: Vec2,
+        leg: Vec2,
+        grounded: bool,
+        options: MoveOptions,
+    ) -> Option<(f32, Footing)> {
+        let end = self.position;
+        self.ground_events(map, from, leg, options);
+        let found = if grounded && self.events.is_empty() {
+            None
+        } else {
+            self.first_bare(map, from, leg, grounded, options)
         };
-        let (mut lo, mut hi) = (0.0f32, 1.0f32);
-        if !held(self, lo) {
-            hi = lo;
-        } else if held(self, hi) {
-            lo = hi;
+        self.position = end;
+        found
+    }
+
+    /// [`edge`](Self::edge)'s search, over the events found: the first fraction without
+    /// ground and the drop onto the ground just before it. Moves the character.
+    fn first_bare(
+        &mut self,
+        map: &TileMap,
+        from: Vec2,
+        leg: Vec2,
+        grounded: bool,
+        options: MoveOptions,
+    ) -> Option<(f32, Footing)> {
+        let Some(mut footing) = self.ground_below(map, from, options) else {
+            let none = Footing {
+                drop: 0.0,
+                corner: None,
+            };
+            return Some((0.0, none));
+        };
+        let (mut lo, mut hi) = (0.0f32, None);
+        let mut before = 0.0f32;
+        for i in 0..=self.events.len() {
+            let after = self.events.get(i).copied().unwrap_or(1.0);
+            let middle = 0.5 * (before + after);
+            before = after;
+            match self.ground_below(map, from + leg * middle, options) {
+                Some(below) => (lo, footing) = (middle, below),
+                None => {
+                    hi = Some(middle);
+                    break;
+                }
+            }
         }
+        let mut hi = match hi {
+            Some(hi) => hi,
+            None if grounded => return None,
+            None => 1.0,
+        };
         for _ in 0..EDGE_STEPS {
-            if hi - lo <= 0.0 {
+            let middle = 0.5 * (lo + hi);
+            if !(lo < middle && middle < hi) {
                 break;
             }
-            let mid = 0.5 * (lo + hi);
-            if held(self, mid) {
-                lo = mid;
-            } else {
-                hi = mid;
+            match self.ground_below(map, from + leg * middle, options) {
+                Some(below) => (lo, footing) = (middle, below),
+                None => hi = middle,
             }
         }
-        self.position = from;
-        hi
+        Some((hi, footing))
+    }
+
+    /// Collects in `self.events`, sorted, the fractions of the walk along `leg` from
+    /// `from` (strictly between 0 and 1) at which whether the character has walkable
+    /// ground within the snap distance below it can change: where its side passes a
+    /// capped segment end (the surface ends there), where a circle's contact normal with
+    /// such an end reaches the slope limit (`|offset| = radius · sin max_slope` along the
+    /// side), and where the line of a walkable segment not parallel to the leg is the snap
+    /// distance below it.
+    fn ground_events(&mut self, map: &TileMap, from: Vec2, leg: Vec2, options: MoveOptions) {
+        self.events.clear();
+        let across = leg.dot(self.side);
+        let reach = self.config.snap_distance;
+        let to = from + leg;
+        let down = -self.up * reach;
+        let (a, b) = (self.shape.bounds(from), self.shape.bounds(to));
+        let (c, d) = (self.shape.bounds(from + down), self.shape.bounds(to + down));
+        let region = Aabb::from_corners(
+            a.min.min(b.min).min(c.min.min(d.min)),
+            a.max.max(b.max).max(c.max.max(d.max)),
+        )
+        .expand(self.config.skin);
+        let mut filter = RayFilter::default().with_mask(self.config.mask);
+        filter.exclude_owner = None;
+        self.walls.clear();
+        map.walls_in(&region, &filter, &mut self.walls);
+        let width = self.shape.support(self.side);
+        let steepest = match self.shape {
+            CharacterShape::Circle { radius } => {
+                Some(radius * (1.0 - self.walkable * self.walkable).max(0.0).sqrt())
+            }
+            CharacterShape::Rect { .. } => None,
+        };
+        let along = from.dot(self.side);
+        for wall in &self.walls {
+            let capsule = &wall.capsule;
+            if !self.held_by(wall.flags, capsule.segment.a, capsule.normal, options) {
+                continue;
+            }
+            for (end, &cap) in capsule.caps.iter().enumerate() {
+                if !cap || across == 0.0 {
+                    continue;
+                }
+                let corner = end_point(&capsule.segment, end);
+                let at = corner.dot(self.side) - along;
+                let mut offsets = [Some(width), Some(-width), steepest, steepest.map(|s| -s)];
+                for offset in offsets.iter_mut().flatten() {
+                    self.events.push((at + *offset) / across);
+                }
+                // Where a walkable line takes over from the corner below a circle.
+                if let CharacterShape::Circle { radius } = self.shape {
+                    for line in &self.walls {
+                        for offset in
+                            takeovers(corner, radius, line, self.up, self.side, self.walkable)
+                                .into_iter()
+                                .flatten()
+                        {
+                            self.events.push((at + offset) / across);
+                        }
+                    }
+                }
+            }
+            let rise = capsule.normal.dot(self.up);
+            let closing = leg.dot(capsule.normal);
+            if rise >= self.walkable && closing != 0.0 {
+                // The gap below along `up` is the height above the line over `rise`.
+                let height = (from - capsule.segment.a).dot(capsule.normal)
+                    - self.shape.support(capsule.normal);
+                self.events.push((reach * rise - height) / closing);
+            }
+        }
+        self.events.retain(|f| *f > 0.0 && *f < 1.0);
+        self.events.sort_by(f32::total_cmp);
+        self.events.dedup();
+    }
+
+    /// The walkable ground within the snap distance below the character at `at`: how far
+    /// it would drop onto it (see [`ground_hit`](Self::ground_hit)) and, for a circle
+    /// standing on a rounded corner, the corner. `None` when there is none. Moves the
+    /// character to `at`.
+    fn ground_below(&mut self, map: &TileMap, at: Vec2, options: MoveOptions) -> Option<Footing> {
+        self.position = at;
+        let (hit, wall, drop) = self.ground_hit(map, self.config.snap_distance, options)?;
+        let corner = self
+            .at_rounded_corner(&hit, &wall)
+            .then(|| nearest_end(&wall.capsule.segment, at - self.up * drop));
+        Some(Footing { drop, corner })
+    }
+
+    /// The walkable ground up to `reach` below the character, and how far it drops onto it
+    /// (to a skin above it; 0 when it is closer): the first surface it meets moving down
+    /// when that is walkable, or else walkable ground met within two skins of it, which it
+    /// stands on as well (a circle that rolled around a corner down onto the floor touches
+    /// both, the corner first); the drop then stops a skin short of the first surface.
+    fn ground_hit(
+        &mut self,
+        map: &TileMap,
+        reach: f32,
+        options: MoveOptions,
+    ) -> Option<(SweepHit, Wall, f32)> {
+        let down = -self.up * reach;
+        let ((first, _), (hit, wall)) = match self.first_hits(map, down, options, None) {
+            (Some(first), Some(ground)) => (first, ground),
+            _ => return None,
+        };
+        let (gap, limit) = (reach * hit.t, reach * first.t);
+        if gap - limit > 2.0 * self.config.skin {
+            return None;
+        }
+        let mut drop = gap - self.config.skin / self.up.dot(hit.normal);
+        if first.t < hit.t {
+            drop = drop.min(limit - self.config.skin);
+        }
+        Some((hit, wall, drop.max(0.0)))
     }
 
     /// Sweeps `motion` with collide and slide, recording contacts: a walk along the ground
-    /// `line` when there is one, a move through the air otherwise. Returns the phase it
-    /// ended in (a move through the air that lands walks on) and, when its last leg was
-    /// swept clear to its end, that leg (its start and motion).
+    /// `line` when there is one, a move through the air otherwise, `first` being the surface
+    /// it meets first when that is known (a roll stopped by it). Returns the phase it
+    /// ended in (a move through the air that lands walks on); when its last leg was swept
+    /// clear to its end, that leg (its start and motion); and when a walk left the ground
+    /// (see [`edge`](Self::edge)), the ground just before, the character having stopped
+    /// there.
     fn slide(
         &mut self,
         map: &TileMap,
         motion: Vec2,
         mut line: Option<GroundLine>,
+        mut first: Option<(SweepHit, Wall)>,
         options: MoveOptions,
         contacts: &mut Contacts,
-    ) -> (Phase, Option<(Vec2, Vec2)>) {
+    ) -> (Phase, Option<(Vec2, Vec2)>, Option<Footing>) {
         let mut remaining = motion;
         for _ in 0..self.config.max_slides {
             let phase = if line.is_some() {
@@ -376,8 +571,21 @@ impl Character {
                 Phase::Air
             };
             let from = self.position;
-            let Some((hit, wall, rest)) = self.go(map, remaining, options, None) else {
-                return (phase, Some((from, remaining)));
+            let gone = match first.take() {
+                Some((hit, wall)) => Some((hit, wall, remaining)),
+                None => self.go(map, remaining, options, None),
+            };
+            // The walk leaves the ground where the ground ends under this leg, even if there
+            // is ground again further on: a gap is not stepped over, however long the step.
+            if phase == Phase::Walk
+                && let leg = self.position - from
+                && let Some((f, footing)) = self.edge(map, from, leg, true, options)
+            {
+                self.step_off(map, from + leg * f, &footing, options);
+                return (phase, None, Some(footing));
+            }
+            let Some((hit, wall, rest)) = gone else {
+                return (phase, Some((from, remaining)), None);
             };
             let mut surface = Surface::of(hit.normal, self.up, self.side, self.walkable);
             // A corner (a segment's end, met by a circle's rounded side) higher above the
@@ -400,7 +608,7 @@ impl Character {
                 && matches!(surface, Surface::Left | Surface::Right)
                 && self.step_up(map, rest, &line, options)
             {
-                return (Phase::Walk, None);
+                return (Phase::Walk, None, None);
             }
             let contact = Contact {
                 normal: hit.normal,
@@ -417,7 +625,7 @@ impl Character {
                 surface == Surface::Ground && (phase == Phase::Walk || rest.dot(self.up) <= 0.0);
             if phase == Phase::Air && !landing && self.at_rounded_corner(&hit, &wall) {
                 let corner = nearest_end(&wall.capsule.segment, self.position);
-                remaining = self.roll(map, corner, rest, options);
+                (remaining, first) = self.roll(map, corner, rest, options);
                 continue;
             }
             let slid = rest - hit.normal * rest.dot(hit.normal);
@@ -426,7 +634,7 @@ impl Character {
                 // on it: on along it, keeping the sideways progress still to make (a smaller
                 // step would walk on from there in its next steps).
                 (_, Surface::Ground) if landing => {
-                    line = Some(self.ground_line(hit.normal));
+                    line = Some(self.ground_line(hit.normal, self.at_rounded_corner(&hit, &wall)));
                     along(hit.normal, self.side, rest.dot(self.side))
                 }
                 // A wall or steep slope: slide along it, but a walk never climbs it.
@@ -455,7 +663,14 @@ impl Character {
         } else {
             Phase::Air
         };
-        (phase, None)
+        (phase, None, None)
+    }
+
+    /// Puts the character where a walk leaves the ground: at `at` on the walk, down onto the
+    /// ground as it was just before (`footing`).
+    fn step_off(&mut self, map: &TileMap, at: Vec2, footing: &Footing, options: MoveOptions) {
+        self.position = at;
+        self.go(map, -self.up * footing.drop, options, None);
     }
 
     /// Whether `hit` is a circle meeting `wall`'s rounded end (its normal is not the face's).
@@ -464,8 +679,8 @@ impl Character {
     }
 
     /// Rolls the circle, touching `corner`, around it by as much of `rest` as presses it
-    /// there, and returns what is left of `rest` once it leaves the corner (or is stopped by
-    /// another surface on the way).
+    /// there, and returns what is left of `rest` once it leaves the corner, or once another
+    /// surface stops it on the way (with that surface, which the rest meets first).
     ///
     /// Sliding by the projection of each step's motion on the tangent (as on a flat face)
     /// would follow the arc by chords, one a step, and end in a different place at each
@@ -478,21 +693,35 @@ impl Character {
     /// move's rise or fall rolls it (until it is level with the corner, where the whole
     /// move presses again). The arc is travelled by swept legs along its tangents (at most
     /// [`ROLL_STEP`] of turn each), so nothing on the way is passed through.
-    fn roll(&mut self, map: &TileMap, corner: Vec2, rest: Vec2, options: MoveOptions) -> Vec2 {
+    fn roll(
+        &mut self,
+        map: &TileMap,
+        corner: Vec2,
+        rest: Vec2,
+        options: MoveOptions,
+    ) -> (Vec2, Option<(SweepHit, Wall)>) {
         let offset = self.position - corner;
-        let radius = offset.length();
-        let driver = if offset.dot(self.up) > ROLL_LEVEL * radius {
+        // Rolled a skin from the corner, however close the move that met it came (a move
+        // that grazes the corner ends closer than a skin, by how much depends on the rate).
+        let radius = self.shape.support(offset) + self.config.skin;
+        if rest.dot(offset) >= 0.0 {
+            // Moving off the corner: free.
+            return (rest, None);
+        }
+        // Above the corner, sideways motion towards it does not lift the circle over it
+        // (as on a steep slope): only the rise or fall rolls it. Sideways motion away from
+        // it carries the circle off its far side, so the whole move rolls it there, and it
+        // leaves the corner where a straight move from the corner's skin would graze it.
+        let above = offset.dot(self.up) > ROLL_LEVEL * radius;
+        let towards = rest.dot(self.side) * offset.dot(self.side) < 0.0;
+        let driver = if above && towards {
             self.up * rest.dot(self.up)
         } else {
             rest
         };
         let length = driver.length();
-        if radius <= 0.0 || length <= MIN_MOVE {
-            return Vec2::ZERO;
-        }
-        if driver.dot(offset) >= 0.0 {
-            // Moving off the corner: free.
-            return driver;
+        if radius <= 0.0 || length <= MIN_MOVE || driver.dot(offset) >= 0.0 {
+            return (Vec2::ZERO, None);
         }
         let start = driver.angle_to(offset);
         let k = (0.5 * start).tan();
@@ -508,11 +737,18 @@ impl Character {
             let middle = dir.rotate(Vec2::from_angle(0.5 * (from + to)));
             let apex = corner + middle * (radius / (0.5 * (to - from)).cos());
             let arrival = corner + dir.rotate(Vec2::from_angle(to)) * radius;
-            let stopped = self.go(map, apex - self.position, options, None).is_some()
-                || self
-                    .go(map, arrival - self.position, options, None)
-                    .is_some();
-            if stopped {
+            let stopped = self
+                .go(map, apex - self.position, options, None)
+                .or_else(|| self.go(map, arrival - self.position, options, None));
+            if let Some((hit, wall, _)) = stopped {
+                // Stopped on a leg: a skin from the surface where the arc itself reaches it,
+                // not where the leg (outside the arc, by an amount that depends on how the
+                // roll was cut into legs, and so on the rate) does.
+                if let Some(angle) = self.arc_meets(corner, radius, dir, (from, to), (&hit, &wall))
+                {
+                    let on_arc = corner + dir.rotate(Vec2::from_angle(angle)) * radius;
+                    self.go(map, on_arc - self.position, options, None);
+                }
                 // The part of the move rolled so far, from the angle reached.
                 let now = driver.angle_to(self.position - corner);
                 // (A ratio that rounding made negative gives NaN: taken as nothing rolled.)
@@ -522,19 +758,58 @@ impl Character {
                 } else {
                     rolled.clamp(0.0, 1.0)
                 };
-                return rest * (1.0 - rolled);
+                return (rest * (1.0 - rolled), Some((hit, wall)));
             }
             from = to;
         }
-        rest * (1.0 - done)
+        (rest * (1.0 - done), None)
+    }
+
+    /// The angle (from `dir`, between the ends of `span`) at which the centre of a circle
+    /// rolling around `corner` at `radius` comes a skin from `wall`, which `hit` met: from
+    /// its face, where `(corner + radius·u − a)·n` is the shape's reach plus the skin (`u`
+    /// the unit vector at that angle); from its rounded end `e`, where
+    /// `|corner + radius·u − e|` is. Either is `u·v = cosine` for a unit `v`.
+    fn arc_meets(
+        &self,
+        corner: Vec2,
+        radius: f32,
+        dir: Vec2,
+        span: (f32, f32),
+        (hit, wall): (&SweepHit, &Wall),
+    ) -> Option<f32> {
+        let capsule = &wall.capsule;
+        let reach = self.shape.support(hit.normal) + self.config.skin;
+        let (towards, cosine) = if hit.normal == capsule.normal {
+            let cosine = (reach - (corner - capsule.segment.a).dot(capsule.normal)) / radius;
+            (capsule.normal, cosine)
+        } else {
+            let apart = nearest_end(&capsule.segment, self.position) - corner;
+            let distance = apart.length();
+            let cosine =
+                (radius * radius + distance * distance - reach * reach) / (2.0 * radius * distance);
+            (apart / distance, cosine)
+        };
+        if !(cosine.abs() <= 1.0) {
+            return None;
+        }
+        let towards = dir.angle_to(towards);
+        let (low, high) = (span.0.min(span.1), span.0.max(span.1));
+        let turn = cosine.acos();
+        [towards - turn, towards + turn]
+            .map(|angle| (angle + PI).rem_euclid(TAU) - PI)
+            .into_iter()
+            .find(|angle| (low..=high).contains(angle))
     }
 
     /// The line of the ground with `normal` that the character stands on where it is (a
-    /// skin below it).
-    fn ground_line(&self, normal: Vec2) -> GroundLine {
+    /// skin below it). On a rounded `corner` it is level through the corner: a circle
+    /// rolling over a crack between two floors as high as each other climbs nothing to roll
+    /// out of it, though the far corner is above the tangent it rolls along.
+    fn ground_line(&self, normal: Vec2, corner: bool) -> GroundLine {
         GroundLine {
             point: self.ground_point(normal),
-            normal,
+            normal: if corner { self.up } else { normal },
         }
     }
 
@@ -632,20 +907,13 @@ impl Character {
         landed
     }
 
-    /// Looks up to `reach` below the character for walkable ground; if found, moves onto
-    /// it (a skin above) and returns it.
+    /// Looks up to `reach` below the character for walkable ground (see
+    /// [`ground_hit`](Self::ground_hit)); if found, moves onto it (a skin above) and
+    /// returns it.
     fn settle(&mut self, map: &TileMap, reach: f32, options: MoveOptions) -> Option<Contact> {
-        let down = -self.up * reach;
-        let (hit, wall) = self.first_hit(map, down, options, None)?;
-        if Surface::of(hit.normal, self.up, self.side, self.walkable) != Surface::Ground {
-            return None;
-        }
-        let approach = self.up.dot(hit.normal);
-        let gap = reach * hit.t;
-        let drop = gap - self.config.skin / approach;
-        if drop > 0.0 {
-            self.position -= self.up * drop;
-        }
+        let (hit, wall, drop) = self.ground_hit(map, reach, options)?;
+        self.position -= self.up * drop;
+        self.ground_corner = self.at_rounded_corner(&hit, &wall);
         Some(Contact {
             normal: hit.normal,
             flags: wall.flags,
@@ -664,6 +932,17 @@ impl Character {
         options: MoveOptions,
         exclude: Option<Owner>,
     ) -> Option<(SweepHit, Wall)> {
+        self.first_hits(map, motion, options, exclude).0
+    }
+
+    /// [`first_hit`](Self::first_hit), and the first walkable ground met (ranked alike).
+    fn first_hits(
+        &mut self,
+        map: &TileMap,
+        motion: Vec2,
+        options: MoveOptions,
+        exclude: Option<Owner>,
+    ) -> (Option<(SweepHit, Wall)>, Option<(SweepHit, Wall)>) {
         let (start, end) = (
             self.shape.bounds(self.position),
             self.shape.bounds(self.position + motion),
@@ -675,6 +954,7 @@ impl Character {
         self.walls.clear();
         map.walls_in(&region, &filter, &mut self.walls);
         let mut best: Option<(SweepHit, Wall)> = None;
+        let mut ground: Option<(SweepHit, Wall)> = None;
         for wall in &self.walls {
             let capsule = &wall.capsule;
             if !self.held_by(wall.flags, capsule.segment.a, capsule.normal, options) {
@@ -694,11 +974,19 @@ impl Character {
                     hit = face;
                 }
             }
-            if best.is_none_or(|(b, w)| self.meets_before(motion, (&hit, wall), (&b, &w))) {
+            let before = |kept: &Option<(SweepHit, Wall)>| {
+                kept.is_none_or(|(b, w)| self.meets_before(motion, (&hit, wall), (&b, &w)))
+            };
+            if Surface::of(hit.normal, self.up, self.side, self.walkable) == Surface::Ground
+                && before(&ground)
+            {
+                ground = Some((hit, *wall));
+            }
+            if before(&best) {
                 best = Some((hit, *wall));
             }
         }
-        best
+        (best, ground)
     }
 
     /// Whether the surface `a` (a hit and its segment) stops a move by `motion` before
@@ -897,6 +1185,41 @@ fn nearest_end(segment: &Segment, point: Vec2) -> Vec2 {
     } else {
         segment.b
     }
+}
+
+/// The sideways offsets from `corner` at which a circle of `radius` lowered onto both
+/// touches `corner` and the line of `wall` (when that is walkable for `up` and `walkable`)
+/// at the same height: where one takes over from the other below it. The circle's centre
+/// over `corner + offset·side` touches the corner at height `√(r² − offset²)` above it and
+/// the line at `α + β·offset`, which are equal at the roots of
+/// `(1 + β²)·offset² + 2αβ·offset + α² − r² = 0`.
+fn takeovers(
+    corner: Vec2,
+    radius: f32,
+    wall: &Wall,
+    up: Vec2,
+    side: Vec2,
+    walkable: f32,
+) -> [Option<f32>; 2] {
+    let normal = wall.capsule.normal;
+    let rise = normal.dot(up);
+    if rise < walkable {
+        return [None; 2];
+    }
+    let alpha = (radius - (corner - wall.capsule.segment.a).dot(normal)) / rise;
+    let beta = -normal.dot(side) / rise;
+    let (a, b, c) = (
+        1.0 + beta * beta,
+        alpha * beta,
+        alpha * alpha - radius * radius,
+    );
+    let discriminant = b * b - a * c;
+    if discriminant < 0.0 {
+        return [None; 2];
+    }
+    let root = discriminant.sqrt();
+    [(-b - root) / a, (-b + root) / a]
+        .map(|offset| (offset.abs() <= radius && alpha + beta * offset >= 0.0).then_some(offset))
 }
 
 /// `segment`'s end `end` (0: `a`, 1: `b`).
