@@ -1,6 +1,6 @@
 //! The controller beside ledges (ASCII maps, y down: `up` is −y): stepping up never climbs
-//! more than `step_height`, for boxes and circles, and a move through the air ends in the
-//! same place whatever the frame rate, whether it lands on a ledge or slides down its face.
+//! more than `step_height`, for boxes and circles, and a move through the air, a walk off a
+//! ledge and a walk across a gap end in the same place whatever the frame rate.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use proptest::prelude::*;
@@ -300,6 +300,22 @@ fn a_box_walking_off_a_ledge_starts_to_fall_at_its_edge_at_30_60_120_and_240_hz(
 /// 240 Hz makes up to 192 steps in 0.8 s.
 const DRIFT: f32 = 192.0 / 2_097_152.0;
 
+/// An error unless the ends of a walk at every rate of [`RATES`] are within `tolerance` of
+/// the 30 Hz one; `what` describes the walk.
+fn walks_alike(ends: [Vec2; 4], tolerance: f32, what: &str) -> Result<(), TestCaseError> {
+    for (rate, end) in RATES.iter().zip(ends) {
+        prop_assert!(
+            (end - ends[0]).abs().max_element() <= tolerance,
+            "{}: {} Hz ends at {:?}, 30 Hz at {:?}",
+            what,
+            rate,
+            end,
+            ends[0]
+        );
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
 
@@ -330,13 +346,8 @@ proptest! {
         // Rounding moves the walk's x by up to DRIFT, and so when it reaches the edge by
         // DRIFT / vx seconds: the fall then differs by DRIFT · vy / vx.
         let tolerance = TOLERANCE + DRIFT * (1.0 + vy / vx);
-        for (rate, end) in RATES.iter().zip(ends) {
-            prop_assert!(
-                (end - ends[0]).abs().max_element() <= tolerance,
-                "{:?} from x = {} off a ledge {} high at {:?} for {} s: {} Hz ends at {:?}, 30 Hz at {:?}",
-                half, x, height, v(-vx, vy), time, rate, end, ends[0]
-            );
-        }
+        let what = format!("{half:?} from x = {x} off a ledge {height} high at {:?} for {time} s", v(-vx, vy));
+        walks_alike(ends, tolerance, &what)?;
     }
 }
 
@@ -363,6 +374,22 @@ fn a_circle_walking_off_a_ledge_falls_from_where_the_corner_turns_steeper_than_5
             "{rate} Hz: {end:?}, not {ideal:?}"
         );
     }
+}
+
+/// How much higher a circle of `radius` wedged between the two corners of a gap `width`
+/// wide rests when it is a skin from both than when it touches them: 0 when it does not
+/// wedge. Its distance from each corner is between its radius and that plus a skin (a stop
+/// on a move that grazes a surface may end closer than a skin), and its height over the
+/// corners is `√(d² − (width/2)²)` at distance `d`, steep in `d` near `width/2`: in the
+/// case the property test below found, 3.6e-4 closer to a corner than a skin put the
+/// circle 2.5e-3 lower.
+fn wedge(radius: f32, width: f32) -> f32 {
+    let half = 0.5 * width;
+    let far = radius + SKIN;
+    if half >= far {
+        return 0.0;
+    }
+    (far * far - half * half).sqrt() - (radius * radius - half * half).max(0.0).sqrt()
 }
 
 /// [`ledge`] with a gap `width` wide left of it: a platform as high as the ledge, its
@@ -408,18 +435,16 @@ proptest! {
         let x = 10.0 + radius + gap;
         let ends = RATES.map(|rate| walk(&m, ball, x, 5.0 - height, v(-vx, vy), time, rate));
         let tolerance = TOLERANCE + DRIFT * (1.0 + vy / vx);
-        for (rate, end) in RATES.iter().zip(ends) {
-            prop_assert!(
-                (end - ends[0]).abs().max_element() <= tolerance,
-                "radius {} from x = {} off a ledge {} high at {:?} for {} s: {} Hz ends at {:?}, 30 Hz at {:?}",
-                radius, x, height, v(-vx, vy), time, rate, end, ends[0]
-            );
-        }
+        let what = format!("radius {radius} from x = {x} off a ledge {height} high at {:?} for {time} s", v(-vx, vy));
+        walks_alike(ends, tolerance, &what)?;
     }
 
     /// Boxes and circles walking left across a gap of random width in a ledge deeper than
     /// the snap distance (0.3): a walker fast enough to cross the gap in one step falls
-    /// into it where a slower step would, so the ends at every rate agree.
+    /// into it where a slower step would, so the ends at every rate agree within
+    /// [`TOLERANCE`] and the rounding of the walk ([`DRIFT`]), plus, for a circle that can
+    /// end wedged between the gap's two corners, how much higher that leaves it at a skin
+    /// from them than touching them ([`wedge`]).
     #[test]
     fn a_walker_crossing_a_gap_ends_in_the_same_place_at_30_60_120_and_240_hz(
         circle in any::<bool>(),
@@ -439,13 +464,9 @@ proptest! {
         };
         let x = 10.0 + size + 0.05;
         let ends = RATES.map(|rate| walk(&m, shape, x, 5.0 - height, v(-vx, vy), time, rate));
-        let tolerance = TOLERANCE + DRIFT * (1.0 + vy / vx);
-        for (rate, end) in RATES.iter().zip(ends) {
-            prop_assert!(
-                (end - ends[0]).abs().max_element() <= tolerance,
-                "{:?} across a gap {} wide in a ledge {} high at {:?} for {} s: {} Hz ends at {:?}, 30 Hz at {:?}",
-                shape, width, height, v(-vx, vy), time, rate, end, ends[0]
-            );
-        }
+        let wedged = if circle { wedge(size, width) } else { 0.0 };
+        let tolerance = TOLERANCE + wedged + DRIFT * (1.0 + vy / vx);
+        let what = format!("{shape:?} across a gap {width} wide in a ledge {height} high at {:?} for {time} s", v(-vx, vy));
+        walks_alike(ends, tolerance, &what)?;
     }
 }

@@ -70,8 +70,11 @@ pub struct MoveOptions {
 /// - Downward motion while on the ground only presses the character onto it: standing on a
 ///   ramp it does not creep down.
 /// - A walk that leaves the ground (none within the snap distance below it) goes only to
-///   where the ground ends; the rest of the step, fall included, is a move through the
-///   air from there, so the fall starts at the edge whatever the frame rate.
+///   where the ground ends under it, even if there is ground again further on in the same
+///   step; the rest of the step, fall included, is a move through the air from there, so
+///   the fall starts at the edge whatever the frame rate, and a gap is not stepped over. A
+///   circle walking over a rounded corner stays on it until its contact normal there is
+///   steeper than the slope limit.
 /// - In the air the whole displacement is swept at once, so the frame rate does not decide
 ///   whether a ledge is caught. Landing on walkable ground walks on along it with the rest
 ///   of the move's sideways part; falling along a wall or a steep slope slides down it;
@@ -357,8 +360,8 @@ impl Character {
     ///
     /// Whether there is ground changes only at the leg's [`ground_events`]: where the
     /// shape's side passes a segment's capped end, where a circle's contact normal with a
-    /// corner reaches the slope limit, where a walkable segment's line is the snap distance
-    /// below. Each stretch between two of them is tested at its middle, in order along the
+    /// corner reaches the slope limit, where a walkable line takes over from a corner below
+    /// a circle, where a walkable segment's line is the snap distance below. Each stretch between two of them is tested at its middle, in order along the
     /// leg, so a gap the leg crosses is not stepped over however long the step. The first
     /// stretch without ground is then bisected to 2⁻²⁰ of the leg, and the fraction is
     /// returned on the side past the edge, so that a fall from there does not catch the
@@ -438,8 +441,9 @@ impl Character {
     /// ground within the snap distance below it can change: where its side passes a
     /// capped segment end (the surface ends there), where a circle's contact normal with
     /// such an end reaches the slope limit (`|offset| = radius · sin max_slope` along the
-    /// side), and where the line of a walkable segment not parallel to the leg is the snap
-    /// distance below it.
+    /// side), where a walkable line takes over from such an end below a circle (see
+    /// [`takeovers`]), and where the line of a walkable segment not parallel to the leg is
+    /// the snap distance below it.
     fn ground_events(&mut self, map: &TileMap, from: Vec2, leg: Vec2, options: MoveOptions) {
         self.events.clear();
         let across = leg.dot(self.side);
@@ -453,8 +457,7 @@ impl Character {
             a.max.max(b.max).max(c.max.max(d.max)),
         )
         .expand(self.config.skin);
-        let mut filter = RayFilter::default().with_mask(self.config.mask);
-        filter.exclude_owner = None;
+        let filter = RayFilter::default().with_mask(self.config.mask);
         self.walls.clear();
         map.walls_in(&region, &filter, &mut self.walls);
         let width = self.shape.support(self.side);
@@ -476,9 +479,9 @@ impl Character {
                 }
                 let corner = end_point(&capsule.segment, end);
                 let at = corner.dot(self.side) - along;
-                let mut offsets = [Some(width), Some(-width), steepest, steepest.map(|s| -s)];
-                for offset in offsets.iter_mut().flatten() {
-                    self.events.push((at + *offset) / across);
+                let offsets = [Some(width), Some(-width), steepest, steepest.map(|s| -s)];
+                for offset in offsets.into_iter().flatten() {
+                    self.events.push((at + offset) / across);
                 }
                 // Where a walkable line takes over from the corner below a circle.
                 if let CharacterShape::Circle { radius } = self.shape {
