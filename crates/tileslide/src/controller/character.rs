@@ -1,9 +1,12 @@
 //! A platformer character and its move: collide and slide against the tile world and its
 //! temporary segments, walk along slopes, snap to the ground, one-way platforms.
 
-use std::f32::consts::{PI, TAU};
+mod edge;
+mod roll;
 
 use glam::Vec2;
+
+use edge::Footing;
 
 use super::contact::{Contact, Contacts, Surface};
 use super::platform::Riding;
@@ -145,20 +148,6 @@ const MIN_MOVE: f32 = 1e-7;
 /// decides it, `tiles::continuity`).
 const CONVEX_COSINE: f32 = 1e-4;
 
-/// A circle whose contact normal with a corner rises more than this (its sine) is above
-/// the corner: only the rise or fall of a move rolls it (see `Character::roll`). Not zero,
-/// so that a circle rolled to exactly level is not taken for above it through rounding.
-const ROLL_LEVEL: f32 = 1e-5;
-
-/// The most a circle's contact normal turns on one swept leg of a roll around a corner
-/// (radians): the legs run along the arc's tangents, at most `1/cos(ROLL_STEP/2) − 1`
-/// (0.9 %) of the distance outside it.
-const ROLL_STEP: f32 = 0.27;
-
-/// How many halvings [`Character::edge`] makes of a walk's leg to find where the ground
-/// ends: to 2⁻²⁰ of the leg, far below the skin for any step a game makes.
-const EDGE_STEPS: u32 = 20;
-
 /// How a move is being swept: a walk along the ground, or a move through the air (which
 /// becomes a walk where it lands).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -167,13 +156,8 @@ enum Phase {
     Air,
 }
 
-/// The ground just before a walk leaves it (see [`Character::edge`]): how far the character
-/// drops onto it there, and the corner it stands on, for a circle on a rounded corner.
-#[derive(Clone, Copy, Debug)]
-struct Footing {
-    drop: f32,
-    corner: Option<Vec2>,
-}
+/// A surface a sweep met: the hit and its segment.
+type Met = (SweepHit, Wall);
 
 /// The line of the ground a walk follows: a point on it and its unit normal. The height of
 /// a corner above it is what stepping onto that corner climbs.
@@ -351,178 +335,6 @@ impl Character {
         }
     }
 
-    /// Where a walk along the straight `leg` from `from` (swept clear) leaves the ground:
-    /// the first fraction of the leg at which the character has no walkable ground within
-    /// the snap distance below it, and how far below the ground was just before it (the
-    /// drop that puts the character on it there). `None` when it has ground all along the
-    /// leg; a fraction of 0 (and no drop) when it has none at `from`. `grounded` says
-    /// whether it has ground at the leg's end. The character is left where it was.
-    ///
-    /// Whether there is ground changes only at the leg's [`ground_events`]: where the
-    /// shape's side passes a segment's capped end, where a circle's contact normal with a
-    /// corner reaches the slope limit, where a walkable line takes over from a corner below
-    /// a circle, where a walkable segment's line is the snap distance below. Each stretch between two of them is tested at its middle, in order along the
-    /// leg, so a gap the leg crosses is not stepped over however long the step. The first
-    /// stretch without ground is then bisected to 2⁻²⁰ of the leg, and the fraction is
-    /// returned on the side past the edge, so that a fall from there does not catch the
-    /// edge it left.
-    ///
-    /// [`ground_events`]: Self::ground_events
-    fn edge(
-        &mut self,
-        map: &TileMap,
-        from: Vec2,
-        leg: Vec2,
-        grounded: bool,
-        options: MoveOptions,
-    ) -> Option<(f32, Footing)> {
-        let end = self.position;
-        self.ground_events(map, from, leg, options);
-        let found = if grounded && self.events.is_empty() {
-            None
-        } else {
-            self.first_bare(map, from, leg, grounded, options)
-        };
-        self.position = end;
-        found
-    }
-
-    /// [`edge`](Self::edge)'s search, over the events found: the first fraction without
-    /// ground and the drop onto the ground just before it. Moves the character.
-    fn first_bare(
-        &mut self,
-        map: &TileMap,
-        from: Vec2,
-        leg: Vec2,
-        grounded: bool,
-        options: MoveOptions,
-    ) -> Option<(f32, Footing)> {
-        let Some(mut footing) = self.ground_below(map, from, options) else {
-            let none = Footing {
-                drop: 0.0,
-                corner: None,
-            };
-            return Some((0.0, none));
-        };
-        let (mut lo, mut hi) = (0.0f32, None);
-        let mut before = 0.0f32;
-        for i in 0..=self.events.len() {
-            let after = self.events.get(i).copied().unwrap_or(1.0);
-            let middle = 0.5 * (before + after);
-            before = after;
-            match self.ground_below(map, from + leg * middle, options) {
-                Some(below) => (lo, footing) = (middle, below),
-                None => {
-                    hi = Some(middle);
-                    break;
-                }
-            }
-        }
-        let mut hi = match hi {
-            Some(hi) => hi,
-            None if grounded => return None,
-            None => 1.0,
-        };
-        for _ in 0..EDGE_STEPS {
-            let middle = 0.5 * (lo + hi);
-            if !(lo < middle && middle < hi) {
-                break;
-            }
-            match self.ground_below(map, from + leg * middle, options) {
-                Some(below) => (lo, footing) = (middle, below),
-                None => hi = middle,
-            }
-        }
-        Some((hi, footing))
-    }
-
-    /// Collects in `self.events`, sorted, the fractions of the walk along `leg` from
-    /// `from` (strictly between 0 and 1) at which whether the character has walkable
-    /// ground within the snap distance below it can change: where its side passes a
-    /// capped segment end (the surface ends there), where a circle's contact normal with
-    /// such an end reaches the slope limit (`|offset| = radius · sin max_slope` along the
-    /// side), where a walkable line takes over from such an end below a circle (see
-    /// [`takeovers`]), and where the line of a walkable segment not parallel to the leg is
-    /// the snap distance below it.
-    fn ground_events(&mut self, map: &TileMap, from: Vec2, leg: Vec2, options: MoveOptions) {
-        self.events.clear();
-        let across = leg.dot(self.side);
-        let reach = self.config.snap_distance;
-        let to = from + leg;
-        let down = -self.up * reach;
-        let (a, b) = (self.shape.bounds(from), self.shape.bounds(to));
-        let (c, d) = (self.shape.bounds(from + down), self.shape.bounds(to + down));
-        let region = Aabb::from_corners(
-            a.min.min(b.min).min(c.min.min(d.min)),
-            a.max.max(b.max).max(c.max.max(d.max)),
-        )
-        .expand(self.config.skin);
-        let filter = RayFilter::default().with_mask(self.config.mask);
-        self.walls.clear();
-        map.walls_in(&region, &filter, &mut self.walls);
-        let width = self.shape.support(self.side);
-        let steepest = match self.shape {
-            CharacterShape::Circle { radius } => {
-                Some(radius * (1.0 - self.walkable * self.walkable).max(0.0).sqrt())
-            }
-            CharacterShape::Rect { .. } => None,
-        };
-        let along = from.dot(self.side);
-        for wall in &self.walls {
-            let capsule = &wall.capsule;
-            if !self.held_by(wall.flags, capsule.segment.a, capsule.normal, options) {
-                continue;
-            }
-            for (end, &cap) in capsule.caps.iter().enumerate() {
-                if !cap || across == 0.0 {
-                    continue;
-                }
-                let corner = end_point(&capsule.segment, end);
-                let at = corner.dot(self.side) - along;
-                let offsets = [Some(width), Some(-width), steepest, steepest.map(|s| -s)];
-                for offset in offsets.into_iter().flatten() {
-                    self.events.push((at + offset) / across);
-                }
-                // Where a walkable line takes over from the corner below a circle.
-                if let CharacterShape::Circle { radius } = self.shape {
-                    for line in &self.walls {
-                        for offset in
-                            takeovers(corner, radius, line, self.up, self.side, self.walkable)
-                                .into_iter()
-                                .flatten()
-                        {
-                            self.events.push((at + offset) / across);
-                        }
-                    }
-                }
-            }
-            let rise = capsule.normal.dot(self.up);
-            let closing = leg.dot(capsule.normal);
-            if rise >= self.walkable && closing != 0.0 {
-                // The gap below along `up` is the height above the line over `rise`.
-                let height = (from - capsule.segment.a).dot(capsule.normal)
-                    - self.shape.support(capsule.normal);
-                self.events.push((reach * rise - height) / closing);
-            }
-        }
-        self.events.retain(|f| *f > 0.0 && *f < 1.0);
-        self.events.sort_by(f32::total_cmp);
-        self.events.dedup();
-    }
-
-    /// The walkable ground within the snap distance below the character at `at`: how far
-    /// it would drop onto it (see [`ground_hit`](Self::ground_hit)) and, for a circle
-    /// standing on a rounded corner, the corner. `None` when there is none. Moves the
-    /// character to `at`.
-    fn ground_below(&mut self, map: &TileMap, at: Vec2, options: MoveOptions) -> Option<Footing> {
-        self.position = at;
-        let (hit, wall, drop) = self.ground_hit(map, self.config.snap_distance, options)?;
-        let corner = self
-            .at_rounded_corner(&hit, &wall)
-            .then(|| nearest_end(&wall.capsule.segment, at - self.up * drop));
-        Some(Footing { drop, corner })
-    }
-
     /// The walkable ground up to `reach` below the character, and how far it drops onto it
     /// (to a skin above it; 0 when it is closer): the first surface it meets moving down
     /// when that is walkable, or else walkable ground met within two skins of it, which it
@@ -562,7 +374,7 @@ impl Character {
         map: &TileMap,
         motion: Vec2,
         mut line: Option<GroundLine>,
-        mut first: Option<(SweepHit, Wall)>,
+        mut first: Option<Met>,
         options: MoveOptions,
         contacts: &mut Contacts,
     ) -> (Phase, Option<(Vec2, Vec2)>, Option<Footing>) {
@@ -667,142 +479,6 @@ impl Character {
             Phase::Air
         };
         (phase, None, None)
-    }
-
-    /// Puts the character where a walk leaves the ground: at `at` on the walk, down onto the
-    /// ground as it was just before (`footing`).
-    fn step_off(&mut self, map: &TileMap, at: Vec2, footing: &Footing, options: MoveOptions) {
-        self.position = at;
-        self.go(map, -self.up * footing.drop, options, None);
-    }
-
-    /// Whether `hit` is a circle meeting `wall`'s rounded end (its normal is not the face's).
-    fn at_rounded_corner(&self, hit: &SweepHit, wall: &Wall) -> bool {
-        matches!(self.shape, CharacterShape::Circle { .. }) && hit.normal != wall.capsule.normal
-    }
-
-    /// Rolls the circle, touching `corner`, around it by as much of `rest` as presses it
-    /// there, and returns what is left of `rest` once it leaves the corner, or once another
-    /// surface stops it on the way (with that surface, which the rest meets first).
-    ///
-    /// Sliding by the projection of each step's motion on the tangent (as on a flat face)
-    /// would follow the arc by chords, one a step, and end in a different place at each
-    /// frame rate. Rolling is exact instead: pressed by a constant displacement `d` (length
-    /// `L`) at distance `R`, the angle `ψ` from `d` to the contact normal obeys
-    /// `dψ/ds = −(L/R)·sin ψ` over the fraction `s` of the move, so
-    /// `tan(ψ/2) = tan(ψ₀/2)·e^(−L·s/R)`, and the circle leaves the corner when `|ψ| = 90°`.
-    /// Steps compose exactly, so any frame rate ends in the same place. As on a steep slope,
-    /// sideways motion does not lift the character over a corner it is above: there only the
-    /// move's rise or fall rolls it (until it is level with the corner, where the whole
-    /// move presses again). The arc is travelled by swept legs along its tangents (at most
-    /// [`ROLL_STEP`] of turn each), so nothing on the way is passed through.
-    fn roll(
-        &mut self,
-        map: &TileMap,
-        corner: Vec2,
-        rest: Vec2,
-        options: MoveOptions,
-    ) -> (Vec2, Option<(SweepHit, Wall)>) {
-        let offset = self.position - corner;
-        // Rolled a skin from the corner, however close the move that met it came (a move
-        // that grazes the corner ends closer than a skin, by how much depends on the rate).
-        let radius = self.shape.support(offset) + self.config.skin;
-        if rest.dot(offset) >= 0.0 {
-            // Moving off the corner: free.
-            return (rest, None);
-        }
-        // Above the corner, sideways motion towards it does not lift the circle over it
-        // (as on a steep slope): only the rise or fall rolls it. Sideways motion away from
-        // it carries the circle off its far side, so the whole move rolls it there, and it
-        // leaves the corner where a straight move from the corner's skin would graze it.
-        let above = offset.dot(self.up) > ROLL_LEVEL * radius;
-        let towards = rest.dot(self.side) * offset.dot(self.side) < 0.0;
-        let driver = if above && towards {
-            self.up * rest.dot(self.up)
-        } else {
-            rest
-        };
-        let length = driver.length();
-        if radius <= 0.0 || length <= MIN_MOVE || driver.dot(offset) >= 0.0 {
-            return (Vec2::ZERO, None);
-        }
-        let start = driver.angle_to(offset);
-        let k = (0.5 * start).tan();
-        // The fraction of the move at which the normal turns square to the motion.
-        let leave = radius / length * k.abs().ln();
-        let done = leave.clamp(0.0, 1.0);
-        let end = 2.0 * (k * (-length * done / radius).exp()).atan();
-        let dir = driver / length;
-        let pieces = ((end - start).abs() / ROLL_STEP).ceil().max(1.0);
-        let mut from = start;
-        for i in 1..=pieces as u32 {
-            let to = start + (end - start) * (i as f32 / pieces);
-            let middle = dir.rotate(Vec2::from_angle(0.5 * (from + to)));
-            let apex = corner + middle * (radius / (0.5 * (to - from)).cos());
-            let arrival = corner + dir.rotate(Vec2::from_angle(to)) * radius;
-            let stopped = self
-                .go(map, apex - self.position, options, None)
-                .or_else(|| self.go(map, arrival - self.position, options, None));
-            if let Some((hit, wall, _)) = stopped {
-                // Stopped on a leg: a skin from the surface where the arc itself reaches it,
-                // not where the leg (outside the arc, by an amount that depends on how the
-                // roll was cut into legs, and so on the rate) does.
-                if let Some(angle) = self.arc_meets(corner, radius, dir, (from, to), (&hit, &wall))
-                {
-                    let on_arc = corner + dir.rotate(Vec2::from_angle(angle)) * radius;
-                    self.go(map, on_arc - self.position, options, None);
-                }
-                // The part of the move rolled so far, from the angle reached.
-                let now = driver.angle_to(self.position - corner);
-                // (A ratio that rounding made negative gives NaN: taken as nothing rolled.)
-                let rolled = radius / length * (k / (0.5 * now).tan()).ln();
-                let rolled = if rolled.is_nan() {
-                    0.0
-                } else {
-                    rolled.clamp(0.0, 1.0)
-                };
-                return (rest * (1.0 - rolled), Some((hit, wall)));
-            }
-            from = to;
-        }
-        (rest * (1.0 - done), None)
-    }
-
-    /// The angle (from `dir`, between the ends of `span`) at which the centre of a circle
-    /// rolling around `corner` at `radius` comes a skin from `wall`, which `hit` met: from
-    /// its face, where `(corner + radius·u − a)·n` is the shape's reach plus the skin (`u`
-    /// the unit vector at that angle); from its rounded end `e`, where
-    /// `|corner + radius·u − e|` is. Either is `u·v = cosine` for a unit `v`.
-    fn arc_meets(
-        &self,
-        corner: Vec2,
-        radius: f32,
-        dir: Vec2,
-        span: (f32, f32),
-        (hit, wall): (&SweepHit, &Wall),
-    ) -> Option<f32> {
-        let capsule = &wall.capsule;
-        let reach = self.shape.support(hit.normal) + self.config.skin;
-        let (towards, cosine) = if hit.normal == capsule.normal {
-            let cosine = (reach - (corner - capsule.segment.a).dot(capsule.normal)) / radius;
-            (capsule.normal, cosine)
-        } else {
-            let apart = nearest_end(&capsule.segment, self.position) - corner;
-            let distance = apart.length();
-            let cosine =
-                (radius * radius + distance * distance - reach * reach) / (2.0 * radius * distance);
-            (apart / distance, cosine)
-        };
-        if !(cosine.abs() <= 1.0) {
-            return None;
-        }
-        let towards = dir.angle_to(towards);
-        let (low, high) = (span.0.min(span.1), span.0.max(span.1));
-        let turn = cosine.acos();
-        [towards - turn, towards + turn]
-            .map(|angle| (angle + PI).rem_euclid(TAU) - PI)
-            .into_iter()
-            .find(|angle| (low..=high).contains(angle))
     }
 
     /// The line of the ground with `normal` that the character stands on where it is (a
@@ -934,7 +610,7 @@ impl Character {
         motion: Vec2,
         options: MoveOptions,
         exclude: Option<Owner>,
-    ) -> Option<(SweepHit, Wall)> {
+    ) -> Option<Met> {
         self.first_hits(map, motion, options, exclude).0
     }
 
@@ -945,7 +621,7 @@ impl Character {
         motion: Vec2,
         options: MoveOptions,
         exclude: Option<Owner>,
-    ) -> (Option<(SweepHit, Wall)>, Option<(SweepHit, Wall)>) {
+    ) -> (Option<Met>, Option<Met>) {
         let (start, end) = (
             self.shape.bounds(self.position),
             self.shape.bounds(self.position + motion),
@@ -956,8 +632,8 @@ impl Character {
         filter.exclude_owner = exclude;
         self.walls.clear();
         map.walls_in(&region, &filter, &mut self.walls);
-        let mut best: Option<(SweepHit, Wall)> = None;
-        let mut ground: Option<(SweepHit, Wall)> = None;
+        let mut best: Option<Met> = None;
+        let mut ground: Option<Met> = None;
         for wall in &self.walls {
             let capsule = &wall.capsule;
             if !self.held_by(wall.flags, capsule.segment.a, capsule.normal, options) {
@@ -977,7 +653,7 @@ impl Character {
                     hit = face;
                 }
             }
-            let before = |kept: &Option<(SweepHit, Wall)>| {
+            let before = |kept: &Option<Met>| {
                 kept.is_none_or(|(b, w)| self.meets_before(motion, (&hit, wall), (&b, &w)))
             };
             if Surface::of(hit.normal, self.up, self.side, self.walkable) == Surface::Ground
@@ -1188,41 +864,6 @@ fn nearest_end(segment: &Segment, point: Vec2) -> Vec2 {
     } else {
         segment.b
     }
-}
-
-/// The sideways offsets from `corner` at which a circle of `radius` lowered onto both
-/// touches `corner` and the line of `wall` (when that is walkable for `up` and `walkable`)
-/// at the same height: where one takes over from the other below it. The circle's centre
-/// over `corner + offset·side` touches the corner at height `√(r² − offset²)` above it and
-/// the line at `α + β·offset`, which are equal at the roots of
-/// `(1 + β²)·offset² + 2αβ·offset + α² − r² = 0`.
-fn takeovers(
-    corner: Vec2,
-    radius: f32,
-    wall: &Wall,
-    up: Vec2,
-    side: Vec2,
-    walkable: f32,
-) -> [Option<f32>; 2] {
-    let normal = wall.capsule.normal;
-    let rise = normal.dot(up);
-    if rise < walkable {
-        return [None; 2];
-    }
-    let alpha = (radius - (corner - wall.capsule.segment.a).dot(normal)) / rise;
-    let beta = -normal.dot(side) / rise;
-    let (a, b, c) = (
-        1.0 + beta * beta,
-        alpha * beta,
-        alpha * alpha - radius * radius,
-    );
-    let discriminant = b * b - a * c;
-    if discriminant < 0.0 {
-        return [None; 2];
-    }
-    let root = discriminant.sqrt();
-    [(-b - root) / a, (-b + root) / a]
-        .map(|offset| (offset.abs() <= radius && alpha + beta * offset >= 0.0).then_some(offset))
 }
 
 /// `segment`'s end `end` (0: `a`, 1: `b`).
