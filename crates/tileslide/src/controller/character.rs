@@ -1,7 +1,12 @@
 //! A platformer character and its move: collide and slide against the tile world and its
 //! temporary segments, walk along slopes, snap to the ground, one-way platforms.
 
+mod edge;
+mod roll;
+
 use glam::Vec2;
+
+use edge::Footing;
 
 use super::contact::{Contact, Contacts, Surface};
 use super::platform::Riding;
@@ -88,8 +93,11 @@ pub struct MoveOptions {
 /// - Downward motion while on the ground only presses the character onto it: standing on a
 ///   ramp it does not creep down.
 /// - A walk that leaves the ground (none within the snap distance below it) goes only to
-///   where the ground ends; the rest of the step, fall included, is a move through the
-///   air from there, so the fall starts at the edge whatever the frame rate.
+///   where the ground ends under it, even if there is ground again further on in the same
+///   step; the rest of the step, fall included, is a move through the air from there, so
+///   the fall starts at the edge whatever the frame rate, and a gap is not stepped over. A
+///   circle walking over a rounded corner stays on it until its contact normal there is
+///   steeper than the slope limit.
 /// - In the air the whole displacement is swept at once, so the frame rate does not decide
 ///   whether a ledge is caught. Landing on walkable ground walks on along it with the rest
 ///   of the move's sideways part; falling along a wall or a steep slope slides down it;
@@ -141,10 +149,15 @@ pub struct Character {
     walkable: f32,
     /// The ground under the character after its last move.
     pub(super) ground: Option<Contact>,
+    /// Whether that ground is a rounded corner (a circle on a segment's end).
+    ground_corner: bool,
     /// The moving platform it stands on, if its ground is one.
     pub(super) riding: Option<Riding>,
     /// Scratch: the segments near the current sweep.
     walls: Vec<Wall>,
+    /// Scratch: where whether a walk has ground below it can change (see
+    /// [`edge`](Self::edge)).
+    events: Vec<f32>,
 }
 
 /// Moves shorter than this are not swept (they are rounding, not motion).
@@ -155,20 +168,6 @@ const MIN_MOVE: f32 = 1e-7;
 /// decides it, `tiles::continuity`).
 const CONVEX_COSINE: f32 = 1e-4;
 
-/// A circle whose contact normal with a corner rises more than this (its sine) is above
-/// the corner: only the rise or fall of a move rolls it (see `Character::roll`). Not zero,
-/// so that a circle rolled to exactly level is not taken for above it through rounding.
-const ROLL_LEVEL: f32 = 1e-5;
-
-/// The most a circle's contact normal turns on one swept leg of a roll around a corner
-/// (radians): the legs run along the arc's tangents, at most `1/cos(ROLL_STEP/2) − 1`
-/// (0.9 %) of the distance outside it.
-const ROLL_STEP: f32 = 0.27;
-
-/// How many halvings [`Character::edge`] makes of a walk's leg to find where the ground
-/// ends: to 2⁻²⁰ of the leg, far below the skin for any step a game makes.
-const EDGE_STEPS: u32 = 20;
-
 /// How a move is being swept: a walk along the ground, or a move through the air (which
 /// becomes a walk where it lands).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -176,6 +175,9 @@ enum Phase {
     Walk,
     Air,
 }
+
+/// A surface a sweep met: the hit and its segment.
+type Met = (SweepHit, Wall);
 
 /// The line of the ground a walk follows: a point on it and its unit normal. The height of
 /// a corner above it is what stepping onto that corner climbs.
@@ -221,8 +223,10 @@ impl Character {
             walkable: config.max_slope_degrees.to_radians().cos(),
             config,
             ground: None,
+            ground_corner: false,
             riding: None,
             walls: Vec::new(),
+            events: Vec::new(),
         })
     }
 
@@ -295,29 +299,45 @@ impl Character {
         // take is the same straight line, so where it lands (or meets a ledge's face) does
         // not depend on the frame rate.
         let start = self.position;
-        let (mut ends, last) = if let Some(ground) = walking {
+        let (mut ends, last, mut left) = if let Some(ground) = walking {
             let walk = along(ground.normal, self.side, sideways);
-            let line = self.ground_line(ground.normal);
-            self.slide(map, walk, Some(line), options, &mut contacts)
+            let line = self.ground_line(ground.normal, self.ground_corner);
+            self.slide(map, walk, Some(line), None, options, &mut contacts)
         } else {
-            self.slide(map, displacement, None, options, &mut contacts)
+            self.slide(map, displacement, None, None, options, &mut contacts)
         };
         // Find the ground under the character: within the snap distance when it walked (so
         // it follows ramps down and steps down small ledges; a landing walks on, as the
         // next step would), within two skins otherwise (touching, not snapping).
-        contacts.ground = self.settle(map, self.reach(ends), options);
-        // Walked off the ground's edge: the walk ends where the ground did, and the rest of
-        // the step (its share of the whole displacement, fall included) is a move through
-        // the air from there, so where the fall starts does not depend on the frame rate.
-        if contacts.ground.is_none()
-            && ends == Phase::Walk
-            && let Some((from, leg)) = last
+        if left.is_none() {
+            contacts.ground = self.settle(map, self.reach(ends), options);
+            // No ground at the end of a walk whose last leg seemed to have some all along
+            // (rounding at an edge): the walk ends where it does along that leg.
+            if contacts.ground.is_none()
+                && ends == Phase::Walk
+                && let Some((from, leg)) = last
+                && let Some((f, footing)) = self.edge(map, from, leg, false, options)
+            {
+                self.step_off(map, from + leg * f, &footing, options);
+                left = Some(footing);
+            }
+        }
+        // Walked off the ground's edge, or over a gap: the walk ends where the ground did,
+        // on it, and the rest of the step (its share of the whole displacement, fall
+        // included) is a move through the air from there, so where the fall starts does
+        // not depend on the frame rate.
+        if let Some(footing) = left
             && sideways != 0.0
         {
-            self.position = from + leg * self.edge(map, from, leg, options);
             let made = (self.position - start).dot(self.side) / sideways;
-            let rest = displacement * (1.0 - made).clamp(0.0, 1.0);
-            (ends, _) = self.slide(map, rest, None, options, &mut contacts);
+            let mut rest = displacement * (1.0 - made).clamp(0.0, 1.0);
+            // A circle leaving a rounded corner is still on it: it rolls on around it as far
+            // as the move presses it there, as a circle meeting it in the air does.
+            let mut first = None;
+            if let Some(corner) = footing.corner {
+                (rest, first) = self.roll(map, corner, rest, options);
+            }
+            (ends, _, _) = self.slide(map, rest, None, first, options, &mut contacts);
             contacts.ground = self.settle(map, self.reach(ends), options);
         }
         self.ground = contacts.ground;
@@ -335,59 +355,49 @@ impl Character {
         }
     }
 
-    /// The fraction of the straight `leg` from `from`, swept clear, at which the character
-    /// first has no walkable ground within the snap distance below it (1 when it has some
-    /// all the way; 0 when it has none at `from`): where a walk along it leaves the ground.
-    /// Found by bisection to 2⁻²⁰ of the leg, on the side past the edge, so that a fall
-    /// from there does not catch the edge it left. The character is left at `from`.
-    fn edge(&mut self, map: &TileMap, from: Vec2, leg: Vec2, options: MoveOptions) -> f32 {
-        let held = |character: &mut Self, f: f32| {
-            character.position = from + leg * f;
-            character
-                .first_hit(
-                    map,
-                    -character.up * character.config.snap_distance,
-                    options,
-                    None,
-                )
-                .is_some_and(|(hit, _)| {
-                    Surface::of(hit.normal, character.up, character.side, character.walkable)
-                        == Surface::Ground
-                })
+    /// The walkable ground up to `reach` below the character, and how far it drops onto it
+    /// (to a skin above it; 0 when it is closer): the first surface it meets moving down
+    /// when that is walkable, or else walkable ground met within two skins of it, which it
+    /// stands on as well (a circle that rolled around a corner down onto the floor touches
+    /// both, the corner first); the drop then stops a skin short of the first surface.
+    fn ground_hit(
+        &mut self,
+        map: &TileMap,
+        reach: f32,
+        options: MoveOptions,
+    ) -> Option<(SweepHit, Wall, f32)> {
+        let down = -self.up * reach;
+        let ((first, _), (hit, wall)) = match self.first_hits(map, down, options, None) {
+            (Some(first), Some(ground)) => (first, ground),
+            _ => return None,
         };
-        let (mut lo, mut hi) = (0.0f32, 1.0f32);
-        if !held(self, lo) {
-            hi = lo;
-        } else if held(self, hi) {
-            lo = hi;
+        let (gap, limit) = (reach * hit.t, reach * first.t);
+        if gap - limit > 2.0 * self.config.skin {
+            return None;
         }
-        for _ in 0..EDGE_STEPS {
-            if hi - lo <= 0.0 {
-                break;
-            }
-            let mid = 0.5 * (lo + hi);
-            if held(self, mid) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
+        let mut drop = gap - self.config.skin / self.up.dot(hit.normal);
+        if first.t < hit.t {
+            drop = drop.min(limit - self.config.skin);
         }
-        self.position = from;
-        hi
+        Some((hit, wall, drop.max(0.0)))
     }
 
     /// Sweeps `motion` with collide and slide, recording contacts: a walk along the ground
-    /// `line` when there is one, a move through the air otherwise. Returns the phase it
-    /// ended in (a move through the air that lands walks on) and, when its last leg was
-    /// swept clear to its end, that leg (its start and motion).
+    /// `line` when there is one, a move through the air otherwise, `first` being the surface
+    /// it meets first when that is known (a roll stopped by it). Returns the phase it
+    /// ended in (a move through the air that lands walks on); when its last leg was swept
+    /// clear to its end, that leg (its start and motion); and when a walk left the ground
+    /// (see [`edge`](Self::edge)), the ground just before, the character having stopped
+    /// there.
     fn slide(
         &mut self,
         map: &TileMap,
         motion: Vec2,
         mut line: Option<GroundLine>,
+        mut first: Option<Met>,
         options: MoveOptions,
         contacts: &mut Contacts,
-    ) -> (Phase, Option<(Vec2, Vec2)>) {
+    ) -> (Phase, Option<(Vec2, Vec2)>, Option<Footing>) {
         let mut remaining = motion;
         for _ in 0..self.config.max_slides {
             let phase = if line.is_some() {
@@ -396,8 +406,21 @@ impl Character {
                 Phase::Air
             };
             let from = self.position;
-            let Some((hit, wall, rest)) = self.go(map, remaining, options, None) else {
-                return (phase, Some((from, remaining)));
+            let gone = match first.take() {
+                Some((hit, wall)) => Some((hit, wall, remaining)),
+                None => self.go(map, remaining, options, None),
+            };
+            // The walk leaves the ground where the ground ends under this leg, even if there
+            // is ground again further on: a gap is not stepped over, however long the step.
+            if phase == Phase::Walk
+                && let leg = self.position - from
+                && let Some((f, footing)) = self.edge(map, from, leg, true, options)
+            {
+                self.step_off(map, from + leg * f, &footing, options);
+                return (phase, None, Some(footing));
+            }
+            let Some((hit, wall, rest)) = gone else {
+                return (phase, Some((from, remaining)), None);
             };
             let mut surface = Surface::of(hit.normal, self.up, self.side, self.walkable);
             // A corner (a segment's end, met by a circle's rounded side) higher above the
@@ -420,7 +443,7 @@ impl Character {
                 && matches!(surface, Surface::Left | Surface::Right)
                 && self.step_up(map, rest, &line, options)
             {
-                return (Phase::Walk, None);
+                return (Phase::Walk, None, None);
             }
             let contact = Contact {
                 normal: hit.normal,
@@ -437,7 +460,7 @@ impl Character {
                 surface == Surface::Ground && (phase == Phase::Walk || rest.dot(self.up) <= 0.0);
             if phase == Phase::Air && !landing && self.at_rounded_corner(&hit, &wall) {
                 let corner = nearest_end(&wall.capsule.segment, self.position);
-                remaining = self.roll(map, corner, rest, options);
+                (remaining, first) = self.roll(map, corner, rest, options);
                 continue;
             }
             let slid = rest - hit.normal * rest.dot(hit.normal);
@@ -446,7 +469,7 @@ impl Character {
                 // on it: on along it, keeping the sideways progress still to make (a smaller
                 // step would walk on from there in its next steps).
                 (_, Surface::Ground) if landing => {
-                    line = Some(self.ground_line(hit.normal));
+                    line = Some(self.ground_line(hit.normal, self.at_rounded_corner(&hit, &wall)));
                     along(hit.normal, self.side, rest.dot(self.side))
                 }
                 // A wall or steep slope: slide along it, but a walk never climbs it.
@@ -475,86 +498,17 @@ impl Character {
         } else {
             Phase::Air
         };
-        (phase, None)
-    }
-
-    /// Whether `hit` is a circle meeting `wall`'s rounded end (its normal is not the face's).
-    fn at_rounded_corner(&self, hit: &SweepHit, wall: &Wall) -> bool {
-        matches!(self.shape, CharacterShape::Circle { .. }) && hit.normal != wall.capsule.normal
-    }
-
-    /// Rolls the circle, touching `corner`, around it by as much of `rest` as presses it
-    /// there, and returns what is left of `rest` once it leaves the corner (or is stopped by
-    /// another surface on the way).
-    ///
-    /// Sliding by the projection of each step's motion on the tangent (as on a flat face)
-    /// would follow the arc by chords, one a step, and end in a different place at each
-    /// frame rate. Rolling is exact instead: pressed by a constant displacement `d` (length
-    /// `L`) at distance `R`, the angle `ψ` from `d` to the contact normal obeys
-    /// `dψ/ds = −(L/R)·sin ψ` over the fraction `s` of the move, so
-    /// `tan(ψ/2) = tan(ψ₀/2)·e^(−L·s/R)`, and the circle leaves the corner when `|ψ| = 90°`.
-    /// Steps compose exactly, so any frame rate ends in the same place. As on a steep slope,
-    /// sideways motion does not lift the character over a corner it is above: there only the
-    /// move's rise or fall rolls it (until it is level with the corner, where the whole
-    /// move presses again). The arc is travelled by swept legs along its tangents (at most
-    /// [`ROLL_STEP`] of turn each), so nothing on the way is passed through.
-    fn roll(&mut self, map: &TileMap, corner: Vec2, rest: Vec2, options: MoveOptions) -> Vec2 {
-        let offset = self.position - corner;
-        let radius = offset.length();
-        let driver = if offset.dot(self.up) > ROLL_LEVEL * radius {
-            self.up * rest.dot(self.up)
-        } else {
-            rest
-        };
-        let length = driver.length();
-        if radius <= 0.0 || length <= MIN_MOVE {
-            return Vec2::ZERO;
-        }
-        if driver.dot(offset) >= 0.0 {
-            // Moving off the corner: free.
-            return driver;
-        }
-        let start = driver.angle_to(offset);
-        let k = (0.5 * start).tan();
-        // The fraction of the move at which the normal turns square to the motion.
-        let leave = radius / length * k.abs().ln();
-        let done = leave.clamp(0.0, 1.0);
-        let end = 2.0 * (k * (-length * done / radius).exp()).atan();
-        let dir = driver / length;
-        let pieces = ((end - start).abs() / ROLL_STEP).ceil().max(1.0);
-        let mut from = start;
-        for i in 1..=pieces as u32 {
-            let to = start + (end - start) * (i as f32 / pieces);
-            let middle = dir.rotate(Vec2::from_angle(0.5 * (from + to)));
-            let apex = corner + middle * (radius / (0.5 * (to - from)).cos());
-            let arrival = corner + dir.rotate(Vec2::from_angle(to)) * radius;
-            let stopped = self.go(map, apex - self.position, options, None).is_some()
-                || self
-                    .go(map, arrival - self.position, options, None)
-                    .is_some();
-            if stopped {
-                // The part of the move rolled so far, from the angle reached.
-                let now = driver.angle_to(self.position - corner);
-                // (A ratio that rounding made negative gives NaN: taken as nothing rolled.)
-                let rolled = radius / length * (k / (0.5 * now).tan()).ln();
-                let rolled = if rolled.is_nan() {
-                    0.0
-                } else {
-                    rolled.clamp(0.0, 1.0)
-                };
-                return rest * (1.0 - rolled);
-            }
-            from = to;
-        }
-        rest * (1.0 - done)
+        (phase, None, None)
     }
 
     /// The line of the ground with `normal` that the character stands on where it is (a
-    /// skin below it).
-    fn ground_line(&self, normal: Vec2) -> GroundLine {
+    /// skin below it). On a rounded `corner` it is level through the corner: a circle
+    /// rolling over a crack between two floors as high as each other climbs nothing to roll
+    /// out of it, though the far corner is above the tangent it rolls along.
+    fn ground_line(&self, normal: Vec2, corner: bool) -> GroundLine {
         GroundLine {
             point: self.ground_point(normal),
-            normal,
+            normal: if corner { self.up } else { normal },
         }
     }
 
@@ -652,20 +606,13 @@ impl Character {
         landed
     }
 
-    /// Looks up to `reach` below the character for walkable ground; if found, moves onto
-    /// it (a skin above) and returns it.
+    /// Looks up to `reach` below the character for walkable ground (see
+    /// [`ground_hit`](Self::ground_hit)); if found, moves onto it (a skin above) and
+    /// returns it.
     fn settle(&mut self, map: &TileMap, reach: f32, options: MoveOptions) -> Option<Contact> {
-        let down = -self.up * reach;
-        let (hit, wall) = self.first_hit(map, down, options, None)?;
-        if Surface::of(hit.normal, self.up, self.side, self.walkable) != Surface::Ground {
-            return None;
-        }
-        let approach = self.up.dot(hit.normal);
-        let gap = reach * hit.t;
-        let drop = gap - self.config.skin / approach;
-        if drop > 0.0 {
-            self.position -= self.up * drop;
-        }
+        let (hit, wall, drop) = self.ground_hit(map, reach, options)?;
+        self.position -= self.up * drop;
+        self.ground_corner = self.at_rounded_corner(&hit, &wall);
         Some(Contact {
             normal: hit.normal,
             flags: wall.flags,
@@ -683,7 +630,18 @@ impl Character {
         motion: Vec2,
         options: MoveOptions,
         exclude: Option<Owner>,
-    ) -> Option<(SweepHit, Wall)> {
+    ) -> Option<Met> {
+        self.first_hits(map, motion, options, exclude).0
+    }
+
+    /// [`first_hit`](Self::first_hit), and the first walkable ground met (ranked alike).
+    fn first_hits(
+        &mut self,
+        map: &TileMap,
+        motion: Vec2,
+        options: MoveOptions,
+        exclude: Option<Owner>,
+    ) -> (Option<Met>, Option<Met>) {
         let (start, end) = (
             self.shape.bounds(self.position),
             self.shape.bounds(self.position + motion),
@@ -694,7 +652,8 @@ impl Character {
         filter.exclude_owner = exclude;
         self.walls.clear();
         map.walls_in(&region, &filter, &mut self.walls);
-        let mut best: Option<(SweepHit, Wall)> = None;
+        let mut best: Option<Met> = None;
+        let mut ground: Option<Met> = None;
         for wall in &self.walls {
             let capsule = &wall.capsule;
             if !self.held_by(wall.flags, capsule.segment.a, capsule.normal, options) {
@@ -714,11 +673,19 @@ impl Character {
                     hit = face;
                 }
             }
-            if best.is_none_or(|(b, w)| self.meets_before(motion, (&hit, wall), (&b, &w))) {
+            let before = |kept: &Option<Met>| {
+                kept.is_none_or(|(b, w)| self.meets_before(motion, (&hit, wall), (&b, &w)))
+            };
+            if Surface::of(hit.normal, self.up, self.side, self.walkable) == Surface::Ground
+                && before(&ground)
+            {
+                ground = Some((hit, *wall));
+            }
+            if before(&best) {
                 best = Some((hit, *wall));
             }
         }
-        best
+        (best, ground)
     }
 
     /// Whether the surface `a` (a hit and its segment) stops a move by `motion` before
