@@ -236,10 +236,9 @@ impl TileMap {
         filter: &RayFilter,
         sweep: impl Fn(&Capsule) -> Option<SweepHit>,
     ) -> Option<(SweepHit, Wall)> {
-        let mut walls = Vec::new();
-        self.walls_in(region, filter, &mut walls);
+        // Visited in place, not collected: a cast allocates nothing.
         let mut best: Option<(SweepHit, Wall)> = None;
-        for wall in &walls {
+        self.for_each_wall_in(region, filter, |wall| {
             let facing = match filter.faces {
                 Faces::Both => [Some(wall.capsule), Some(wall.capsule.back())],
                 _ => [Some(wall.capsule), None],
@@ -248,10 +247,10 @@ impl TileMap {
                 if let Some(hit) = sweep(&capsule)
                     && best.is_none_or(|(b, _)| hit.t < b.t)
                 {
-                    best = Some((hit, *wall));
+                    best = Some((hit, wall));
                 }
             }
-        }
+        });
         best
     }
 
@@ -259,6 +258,12 @@ impl TileMap {
     /// that share a point with `region`, that `filter` lets block a moving circle (flag mask,
     /// excluded owner, and for [`Faces::Against`] the direction).
     pub(crate) fn walls_in(&self, region: &Aabb, filter: &RayFilter, out: &mut Vec<Wall>) {
+        self.for_each_wall_in(region, filter, |wall| out.push(wall));
+    }
+
+    /// Calls `f` with each wall [`walls_in`](Self::walls_in) appends, in the same order.
+    #[inline]
+    fn for_each_wall_in(&self, region: &Aabb, filter: &RayFilter, mut f: impl FnMut(Wall)) {
         let keeps = |normal: Vec2, flags: SegmentFlags| {
             flags.intersects(filter.mask)
                 && match filter.faces {
@@ -273,7 +278,7 @@ impl TileMap {
             {
                 continue;
             }
-            out.push(Wall {
+            f(Wall {
                 capsule: Capsule::new(tmp.segment, tmp.normal, [true; 2]),
                 flags: tmp.flags,
                 source: SegmentSource::Temporary {
@@ -285,7 +290,7 @@ impl TileMap {
         }
         self.for_each_segment_in(region, |index, i, s, capsule| {
             if keeps(s.normal, s.flags) {
-                out.push(Wall {
+                f(Wall {
                     capsule,
                     flags: s.flags,
                     source: SegmentSource::Tile {
