@@ -24,7 +24,7 @@ fn map(side: u32) -> TileMap {
     let tiles: Vec<_> = (0..side * side)
         .map(|_| {
             state = next(state);
-            if state % 4 == 0 {
+            if state.is_multiple_of(4) {
                 kinds[(state >> 8) as usize % kinds.len()]
             } else {
                 None
