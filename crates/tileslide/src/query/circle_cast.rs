@@ -29,7 +29,9 @@ pub struct CircleHit {
     /// Unit contact normal, from the segment towards the centre (the segment's normal on
     /// its flat side, radial at a rounded end).
     pub normal: Vec2,
-    /// The point of contact, on the segment.
+    /// The point of contact, on the segment; for a circle that already overlaps the
+    /// segment at `t = 0`, the point of its edge opposite the normal
+    /// (`center − normal·radius`).
     pub point: Vec2,
     /// The segment's flags.
     pub flags: SegmentFlags,
@@ -125,16 +127,28 @@ impl TileMap {
     /// a one-way platform moves out freely, and one sliding along a surface is not stopped by
     /// it. [`Faces::Both`] makes segments block from both sides;
     /// [`Faces::Against`]`(dir)` keeps only segments whose normal opposes `dir`. On equal
-    /// `t`, temporary segments win, then cells row by row. A non-finite input or a radius
-    /// that is not positive hits nothing.
+    /// `t`, temporary segments win, then cells row by row.
     ///
-    /// Range: a motion of any finite length is checked whole. Every segment lies within
-    /// [`MAX_COORD`] of the origin, so a circle of radius at most
-    /// `MAX_COORD` can touch one only while its centre is within `2·MAX_COORD`; a motion
-    /// longer than 2²⁷ along an axis is first scaled down by a power of two (exactly) to
-    /// at most 2²⁷, which still carries a centre from within `MAX_COORD` out of that box,
-    /// and the hit's `t` is scaled back. A centre or radius beyond `MAX_COORD` lies outside
-    /// the range tileslide handles and hits nothing.
+    /// Range: every finite input is answered. A motion of any finite length is checked
+    /// whole: a motion longer than 2²⁷ along an axis is first scaled down by a power of two
+    /// (exactly) to at most 2²⁷, which still carries the circle across and out of the box
+    /// of every segment it can reach, and the hit's `t` is scaled back. A centre farther
+    /// from the map's rectangle than the radius plus the map's larger side plus 8 cells
+    /// (the rule of rays), or a radius beyond [`MAX_COORD`], is not rounded near the map,
+    /// which would move the line it travels: the motion is clipped in `f64` to the box of
+    /// every segment grown by the radius and a cell, from a point of the exact line, each
+    /// segment is swept from there with its offset taken in `f64`, and `t` (along the
+    /// motion as given), the centre and the point are computed in `f64` and rounded once
+    /// (see `docs/ray-casting.md`).
+    ///
+    /// A circle that already overlaps a segment at its start and moves towards its front
+    /// gets `t = 0` there, whatever its radius: one of radius 10³⁰ holding the whole map
+    /// stops at once against the first segment (in the order above) that faces its centre
+    /// and that it moves towards, and moves freely when there is none. Its `point` is then
+    /// `center − normal·radius`, on the circle's edge, not on the segment.
+    ///
+    /// A radius that is zero, negative or NaN, and a NaN or infinite centre, radius or
+    /// motion, hit nothing (`None`).
     ///
     /// ```
     /// # use tileslide::{io::ascii, RayFilter, Vec2};
@@ -158,8 +172,18 @@ impl TileMap {
         motion: Vec2,
         filter: &RayFilter,
     ) -> Option<CircleHit> {
-        if !(in_range(center) && radius > 0.0 && radius <= MAX_COORD && motion.is_finite()) {
-            return None;
+        let ordinary = radius > 0.0
+            && radius <= MAX_COORD
+            && in_range(center)
+            && motion.is_finite()
+            && self.is_near(center, radius);
+        if !ordinary {
+            let finite = center.is_finite() && radius.is_finite() && motion.is_finite();
+            return if radius > 0.0 && finite {
+                self.cast_circle_wide(center, radius, motion, filter)
+            } else {
+                None
+            };
         }
         // The part of the motion where a contact can be, as `motion · 2^-k` (exact but for
         // components that underflow, which move nothing that matters); `t` along it is
@@ -173,22 +197,9 @@ impl TileMap {
         let t_scale = 2f32.powi(-k);
         let motion = motion * t_scale;
         let swept = Aabb::from_corners(center, center + motion).expand(radius);
-        let mut walls = Vec::new();
-        self.walls_in(&swept, filter, &mut walls);
-        let mut best: Option<(SweepHit, Wall)> = None;
-        for wall in &walls {
-            let facing = match filter.faces {
-                Faces::Both => [Some(wall.capsule), Some(wall.capsule.back())],
-                _ => [Some(wall.capsule), None],
-            };
-            for capsule in facing.into_iter().flatten() {
-                if let Some(hit) = capsule.sweep(center, radius, motion)
-                    && best.is_none_or(|(b, _)| hit.t < b.t)
-                {
-                    best = Some((hit, *wall));
-                }
-            }
-        }
+        let best = self.first_wall_in(&swept, filter, |capsule| {
+            capsule.sweep(center, radius, motion)
+        });
         best.map(|(hit, wall)| {
             let at = center + motion * hit.t;
             CircleHit {
@@ -202,10 +213,57 @@ impl TileMap {
         })
     }
 
+    /// Whether `cast_circle` sweeps a circle of `radius` (at most `MAX_COORD`) at `center`
+    /// in `f32` as given: its centre lies within the radius plus the map's larger side
+    /// plus 8 cells of the map's rectangle, where rounding its offset from a segment moves
+    /// it no more than rounding the segment's own coordinates does.
+    #[inline]
+    fn is_near(&self, center: Vec2, radius: f32) -> bool {
+        let cell = self.cell_size();
+        let size = Vec2::new(self.width() as f32, self.height() as f32) * cell;
+        let margin = radius + size.max_element() + 8.0 * cell.max_element();
+        let lo = self.origin() - margin;
+        let hi = self.origin() + size + margin;
+        center.cmpge(lo).all() && center.cmple(hi).all()
+    }
+
+    /// The wall near `region` that `filter` keeps which `sweep` meets first, with its hit:
+    /// each wall's front, and its back too for [`Faces::Both`]; the smallest `t`, the first
+    /// found of equals (in the order of [`walls_in`](Self::walls_in)).
+    pub(super) fn first_wall_in(
+        &self,
+        region: &Aabb,
+        filter: &RayFilter,
+        sweep: impl Fn(&Capsule) -> Option<SweepHit>,
+    ) -> Option<(SweepHit, Wall)> {
+        // Visited in place, not collected: a cast allocates nothing.
+        let mut best: Option<(SweepHit, Wall)> = None;
+        self.for_each_wall_in(region, filter, |wall| {
+            let facing = match filter.faces {
+                Faces::Both => [Some(wall.capsule), Some(wall.capsule.back())],
+                _ => [Some(wall.capsule), None],
+            };
+            for capsule in facing.into_iter().flatten() {
+                if let Some(hit) = sweep(&capsule)
+                    && best.is_none_or(|(b, _)| hit.t < b.t)
+                {
+                    best = Some((hit, wall));
+                }
+            }
+        });
+        best
+    }
+
     /// Appends the temporary segments, then the active segments of the cells (row by row)
     /// that share a point with `region`, that `filter` lets block a moving circle (flag mask,
     /// excluded owner, and for [`Faces::Against`] the direction).
     pub(crate) fn walls_in(&self, region: &Aabb, filter: &RayFilter, out: &mut Vec<Wall>) {
+        self.for_each_wall_in(region, filter, |wall| out.push(wall));
+    }
+
+    /// Calls `f` with each wall [`walls_in`](Self::walls_in) appends, in the same order.
+    #[inline]
+    fn for_each_wall_in(&self, region: &Aabb, filter: &RayFilter, mut f: impl FnMut(Wall)) {
         let keeps = |normal: Vec2, flags: SegmentFlags| {
             flags.intersects(filter.mask)
                 && match filter.faces {
@@ -220,7 +278,7 @@ impl TileMap {
             {
                 continue;
             }
-            out.push(Wall {
+            f(Wall {
                 capsule: Capsule::new(tmp.segment, tmp.normal, [true; 2]),
                 flags: tmp.flags,
                 source: SegmentSource::Temporary {
@@ -232,7 +290,7 @@ impl TileMap {
         }
         self.for_each_segment_in(region, |index, i, s, capsule| {
             if keeps(s.normal, s.flags) {
-                out.push(Wall {
+                f(Wall {
                     capsule,
                     flags: s.flags,
                     source: SegmentSource::Tile {

@@ -2,6 +2,7 @@
 //! exact grid traversal, circle casts, and overlap and point queries.
 
 mod circle_cast;
+mod circle_wide;
 mod fast_walk;
 mod filter;
 mod hit;
