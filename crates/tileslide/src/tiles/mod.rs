@@ -10,6 +10,7 @@ mod continuity;
 mod culling;
 pub(crate) mod face_kind;
 mod flags;
+mod journal;
 pub(crate) mod link;
 pub(crate) mod map;
 mod segment_ref;
@@ -21,6 +22,7 @@ mod trace;
 
 pub use cell::{Cell, TileId};
 pub use flags::SegmentFlags;
+pub use journal::{JOURNAL_EDITS, JournalError, MapRevision};
 pub use map::{ActiveSegment, MAX_CELLS, MapError, TileMap};
 pub use segment_ref::SegmentRef;
 pub use shape::{MAX_SHAPE_SEGMENTS, ShapeError, TileSegment, TileShape};
