@@ -2,7 +2,6 @@ use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use glam::Vec2;
-use thiserror::Error;
 
 use super::SegmentRef;
 use super::continuity::link_cell;
@@ -10,91 +9,11 @@ use super::culling::{Side, active_segments};
 use super::face_kind::{canonical_faces, kind_of};
 use super::journal::Journal;
 use super::store::{HotSegment, Links, SegmentStore};
-use super::{Cell, SegmentFlags, TemporaryError, TemporarySegment, TileId, TileSet, TileShape};
+use super::{Cell, MapError, SegmentFlags, TemporarySegment, TileId, TileSet, TileShape};
 use crate::geometry::{Aabb, Segment, in_range};
 
 /// The most cells a map may have (2²⁶, e.g. 8192 × 8192).
 pub const MAX_CELLS: u64 = 1 << 26;
-
-/// Why a map could not be built or edited.
-#[derive(Clone, Debug, PartialEq, Error)]
-pub enum MapError {
-    /// Width and height must both be at least 1.
-    #[error("map size {width}×{height} is empty")]
-    EmptySize {
-        /// Width given.
-        width: u32,
-        /// Height given.
-        height: u32,
-    },
-    /// More cells than [`MAX_CELLS`], or more segments than the map can index.
-    #[error("map size {width}×{height} is too large (at most {MAX_CELLS} cells)")]
-    TooLarge {
-        /// Width given.
-        width: u32,
-        /// Height given.
-        height: u32,
-    },
-    /// The origin has a NaN or infinite coordinate.
-    #[error("map origin ({x}, {y}) is not finite")]
-    NonFiniteOrigin {
-        /// x given.
-        x: f32,
-        /// y given.
-        y: f32,
-    },
-    /// The map would reach past [`MAX_COORD`](crate::MAX_COORD) from the origin: its
-    /// corners are where every query and body would compute.
-    #[error(
-        "map of {width}×{height} cells at ({x}, {y}) reaches ({far_x}, {far_y}), past the \
-         ±{max} coordinate range (MAX_COORD)",
-        max = crate::MAX_COORD
-    )]
-    OutOfRange {
-        /// Width given.
-        width: u32,
-        /// Height given.
-        height: u32,
-        /// Origin x.
-        x: f32,
-        /// Origin y.
-        y: f32,
-        /// The far corner's x (origin + width × tile width).
-        far_x: f32,
-        /// The far corner's y.
-        far_y: f32,
-    },
-    /// A cell outside the map.
-    #[error("cell {cell} is outside the {width}×{height} map")]
-    CellOutOfBounds {
-        /// The cell asked for.
-        cell: Cell,
-        /// Map width.
-        width: u32,
-        /// Map height.
-        height: u32,
-    },
-    /// A tile id the tile set does not have.
-    #[error("tile {id} is not in the tile set")]
-    UnknownTile {
-        /// The id asked for.
-        id: TileId,
-    },
-    /// The list of tiles does not have one entry per cell.
-    #[error("expected {expected} tiles (one per cell), got {got}")]
-    WrongTileCount {
-        /// width × height.
-        expected: usize,
-        /// Length of the list given.
-        got: usize,
-    },
-    /// The map would hold more active segments than it can index (about 2³²).
-    #[error("the map would hold more active segments than it can index")]
-    TooManySegments,
-    /// A temporary segment was refused.
-    #[error(transparent)]
-    Temporary(#[from] TemporaryError),
-}
 
 /// An active segment of a map: what queries test, after seam culling, in world coordinates.
 ///
@@ -608,36 +527,5 @@ impl TileMap {
     #[must_use]
     pub fn active_segment(&self, r: SegmentRef) -> Option<ActiveSegment> {
         self.active_segments(r.cell).nth(r.index as usize)
-    }
-
-    /// Adds a temporary segment (a moving platform, a door) that every query sees until
-    /// [`clear_temporaries`](Self::clear_temporaries). Refused if non-finite or degenerate.
-    pub fn add_temporary(&mut self, segment: TemporarySegment) -> Result<(), MapError> {
-        self.temporaries.push(segment.validated()?);
-        self.journal.record_temporaries();
-        Ok(())
-    }
-
-    /// Removes every temporary segment (call once per frame before submitting new ones).
-    pub fn clear_temporaries(&mut self) {
-        if !self.temporaries.is_empty() {
-            self.temporaries.clear();
-            self.journal.record_temporaries();
-        }
-    }
-
-    /// Removes the temporary segments of one owner.
-    pub fn clear_temporaries_of(&mut self, owner: super::Owner) {
-        let before = self.temporaries.len();
-        self.temporaries.retain(|t| t.owner != owner);
-        if self.temporaries.len() != before {
-            self.journal.record_temporaries();
-        }
-    }
-
-    /// The temporary segments, in the order they were added.
-    #[must_use]
-    pub fn temporaries(&self) -> &[TemporarySegment] {
-        &self.temporaries
     }
 }
