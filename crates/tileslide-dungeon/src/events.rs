@@ -2,19 +2,18 @@
 //! none calls another.
 
 use hecs::Entity;
-use tileslide::{Cell, NavChange};
+use tileslide::Cell;
 
 use crate::components::{Kind, Team};
 
 /// Something that happened this step.
 #[derive(Clone, Debug)]
 pub enum Event {
-    /// The keeper dug a square; `change` is what it changed in the navigation grid.
+    /// The keeper dug a square (the map is edited; the navigation grid and flow fields
+    /// catch up by themselves, see `Level::catch_up`).
     Dug {
         /// The square.
         cell: Cell,
-        /// The grid's change.
-        change: NavChange,
     },
     /// The keeper summoned a creature.
     Summoned {

@@ -293,30 +293,23 @@ impl Game {
     }
 }
 
-/// Refreshes the flow fields and drops creature paths that dug squares affect.
+/// Brings the navigation up to date with the map (see [`Level::catch_up`]), drops creature
+/// paths home that the edits affect, and lets heroes try their dead ends again after a dig.
 fn refresh_ways(level: &mut Level, world: &mut World, events: &[Event]) -> Result<(), GameError> {
-    let (mut treasure, mut exit) = (false, false);
-    for event in events {
-        if let Event::Dug { change, .. } = event {
-            level.explored.forget_dead_ends();
-            treasure |= level.to_treasure.is_affected_by(&level.nav, change);
-            exit |= level.to_exit.is_affected_by(&level.nav, change);
-            for brain in world.query_mut::<&mut crate::components::CreatureBrain>() {
-                if brain
-                    .way_home
-                    .as_ref()
-                    .is_some_and(|(p, _)| p.is_affected_by(change))
-                {
-                    brain.way_home = None;
-                }
+    if events.iter().any(|e| matches!(e, Event::Dug { .. })) {
+        level.explored.forget_dead_ends();
+    }
+    let change = level.catch_up()?;
+    if !change.is_empty() {
+        for brain in world.query_mut::<&mut crate::components::CreatureBrain>() {
+            if brain
+                .way_home
+                .as_ref()
+                .is_some_and(|(p, _)| p.is_affected_by(&change))
+            {
+                brain.way_home = None;
             }
         }
-    }
-    if treasure {
-        level.to_treasure.refresh(&level.nav, &level.map)?;
-    }
-    if exit {
-        level.to_exit.refresh(&level.nav, &level.map)?;
     }
     Ok(())
 }

@@ -104,13 +104,12 @@ impl Keeper {
             self.dug += 1;
             self.gold -= DIG_COST;
             level.map.clear_tile(cell)?;
-            let change = level.nav.update(&level.map, cell)?;
             for (post, kind) in [(LAIR, Kind::Skeleton), (ROOST, Kind::Imp)] {
                 if self.defends && level.map.cell_at(post) == Some(cell) {
                     self.summons.extend([(kind, post), (kind, post)]);
                 }
             }
-            events.push(Event::Dug { cell, change });
+            events.push(Event::Dug { cell });
         }
         Ok(())
     }

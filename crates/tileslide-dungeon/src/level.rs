@@ -1,7 +1,7 @@
 //! The shared ground every system works on: the map, the rock/earth split, the navigation
 //! grid and the two flow fields heroes follow.
 
-use tileslide::{Bodies, FlowField, NavConfig, NavGrid, TileMap, Vec2};
+use tileslide::{Bodies, FlowField, NavChange, NavConfig, NavGrid, TileMap, Vec2};
 
 use crate::GameError;
 use crate::explore::Explored;
@@ -58,6 +58,20 @@ impl Level {
             explored,
             exit: layout.exit,
         })
+    }
+
+    /// Brings the navigation grid and the heroes' flow fields up to date with the map's
+    /// edits since the last call (each reads the map's edit journal; a field is
+    /// recomputed only when an edit changed its way), and returns what changed in the
+    /// grid, for the paths creatures keep.
+    ///
+    /// # Errors
+    /// A navigation error (a bug: the grid and fields are this map's).
+    pub fn catch_up(&mut self) -> Result<NavChange, GameError> {
+        let change = self.nav.sync(&self.map)?;
+        self.to_treasure.sync(&self.nav, &self.map)?;
+        self.to_exit.sync(&self.nav, &self.map)?;
+        Ok(change)
     }
 
     /// True when nothing blocks the straight line from `a` to `b` (ray cast).

@@ -79,9 +79,9 @@ pub use path::{
 };
 pub use query::{CircleHit, Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{
-    ActiveSegment, Cell, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError, Owner, SegmentFlags, SegmentRef,
-    ShapeError, TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet,
-    TileSetError, TileShape,
+    ActiveSegment, Cell, JOURNAL_EDITS, JournalError, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError,
+    MapRevision, Owner, SegmentFlags, SegmentRef, ShapeError, TemporaryError, TemporarySegment,
+    TileId, TileMap, TileSegment, TileSet, TileSetError, TileShape,
 };
 pub use volumes::{
     Facing, HitEvent, HitObject, HitRule, HitTypes, HitWorld, ObjectId, TeamRule, Volume,

@@ -9,8 +9,11 @@
 //! - flow fields lead every point to the goal, lowering the distance at every step and
 //!   never nearer a wall than the radius, and a crowd moved by the resolver along one
 //!   reaches the goal through a door and past pillars;
-//! - local updates after random digs and fills equal a full rebuild, and the
-//!   `is_affected_by` answers never miss a change;
+//! - a grid and a field caught up with random digs and fills (`sync`, read from the map's
+//!   edit journal, rebuilt when the journal was overrun) equal ones built on the edited
+//!   map, and `Path::is_affected_by` never misses a change;
+//! - a grid or field used with a map that is not its own (another map, a clone edited
+//!   apart) is refused;
 //! - bad input is refused with the error naming it.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -21,8 +24,8 @@ use glam::DVec2;
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, NavConfig, NavError, NavGrid,
-    Path, RayFilter, SegmentFlags, TileMap, Vec2,
+    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, JOURNAL_EDITS, NavConfig,
+    NavError, NavGrid, Path, RayFilter, SegmentFlags, TileMap, Vec2,
 };
 
 use path_support::any_angle::{InflatedScene, room_and_blocks};
@@ -760,7 +763,7 @@ fn a_body_touching_another_slides_round_it_when_moving_obliquely_into_it() {
 }
 
 // ----------------------------------------------------------------------------------------
-// 5. Updates equal a full recompute
+// 5. Catching up with edits equals a full recompute
 // ----------------------------------------------------------------------------------------
 
 /// A tile for an edit: `None` digs (`clear_tile`), `Some` fills (one-way platforms too).
@@ -776,18 +779,65 @@ fn edit_tile() -> impl Strategy<Value = Option<char>> {
 
 const UPDATE_RADII: [f32; 4] = [0.2, 0.45, 0.8, 1.0];
 
+/// Asserts that `nav` opens the same moves as `fresh` at every node for every radius of
+/// [`UPDATE_RADII`].
+fn assert_same_moves(nav: &NavGrid, fresh: &NavGrid, map: &TileMap, context: &str) {
+    let (nx, ny) = fresh.nodes();
+    assert_eq!(nav.nodes(), (nx, ny));
+    for r in UPDATE_RADII {
+        for j in 0..ny {
+            for i in 0..nx {
+                assert_eq!(
+                    nav.open_moves(map, i, j, r).unwrap(),
+                    fresh.open_moves(map, i, j, r).unwrap(),
+                    "r {r}: node ({i}, {j}) {context}"
+                );
+            }
+        }
+    }
+}
+
+/// Asserts that every run of `path` is still clear for its radius on `map` (solid walls
+/// from both sides, one-way platforms from the front).
+fn assert_still_clear(path: &Path, map: &TileMap, context: &str) {
+    let solid = both_faces().with_mask(SegmentFlags::SOLID);
+    let one_way = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
+    let r = path.radius();
+    for run in path.points().windows(2) {
+        let (a, motion) = (run[0], run[1] - run[0]);
+        assert!(
+            map.cast_circle(a, r, motion, &solid).is_none()
+                && map.cast_circle(a, r, motion, &one_way).is_none(),
+            "the edits blocked the run {} -> {} of a path they do not affect: {context}",
+            run[0],
+            run[1]
+        );
+    }
+}
+
+/// The tile `tile` stands for (`None`: dig).
+fn edit_to(map: &mut TileMap, cell: Cell, tile: Option<char>) {
+    match tile {
+        None => map.clear_tile(cell).unwrap(),
+        Some(c) => map
+            .set_tile(cell, ascii::tile_for_char(c).unwrap())
+            .unwrap(),
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
 
-    /// After random digs and fills anywhere (border included), each followed by
-    /// `nav.update`: the grid opens the same moves as one built from scratch at every node
-    /// for every radius; a flow field refreshed after the edits equals a new one; one
-    /// refreshed only when `is_affected_by` says so equals it too; and a path that
+    /// After random digs and fills anywhere (border included), with `sync` after some of
+    /// them (several edits between two syncs too): the grid opens the same moves as one
+    /// built from scratch at every node for every radius; a flow field synced along with it
+    /// equals a new one (recomputed only when its way changed); and a path that
     /// `is_affected_by` calls unaffected is still clear by circle cast.
     #[test]
-    fn updates_after_random_digs_and_fills_equal_a_full_recompute(
+    fn syncs_after_random_digs_and_fills_equal_a_full_recompute(
         random in random_map(10, 8),
-        edits in prop::collection::vec((0u32..10, 0u32..8, edit_tile()), 1..12),
+        edits in prop::collection::vec(
+            (0u32..10, 0u32..8, edit_tile(), prop::bool::weighted(0.6)), 1..16),
         seed in any::<u64>(),
     ) {
         let mut map = random.build();
@@ -796,66 +846,76 @@ proptest! {
         let r = 0.4;
         let goal = fitting_point(&nav, &map, &mut rng, r).unwrap_or(v(5.0, 4.0));
         let mut field = FlowField::new(&nav, &map, goal, r).unwrap();
-        let mut lazy = field.clone();
         let from = fitting_point(&nav, &map, &mut rng, r).unwrap_or(v(1.0, 1.0));
         let mut path = nav.find_path(&map, from, goal, r).unwrap();
-        for &(col, row, tile) in &edits {
-            let cell = Cell::new(col, row);
-            let goal_fitted = nav.fits(&map, goal, r).unwrap();
-            match tile {
-                None => map.clear_tile(cell).unwrap(),
-                Some(c) => map.set_tile(cell, ascii::tile_for_char(c).unwrap()).unwrap(),
+        let context = || format!("after edits {edits:?}\n{}", random.text());
+        for (k, &(col, row, tile, sync)) in edits.iter().enumerate() {
+            edit_to(&mut map, Cell::new(col, row), tile);
+            if !sync && k + 1 < edits.len() {
+                continue;
             }
-            let change = nav.update(&map, cell).unwrap();
-            // An edit that walls the goal in or frees it is missed by `is_affected_by`
-            // (see `a_field_whose_goal_was_walled_in_is_affected_when_it_is_dug_out`):
-            // refresh then regardless, and hold it to everything else.
-            let goal_fits = nav.fits(&map, goal, r).unwrap();
-            if lazy.is_affected_by(&nav, &change) || goal_fits != goal_fitted {
-                lazy.refresh(&nav, &map).unwrap();
-            }
+            let change = nav.sync(&map).unwrap();
+            prop_assert!(!change.is_rebuild());
+            field.sync(&nav, &map).unwrap();
             if let Some(p) = &path {
                 if p.is_affected_by(&change) {
                     path = nav.find_path(&map, from, goal, r).unwrap();
                 } else {
-                    // Solid walls from both sides, one-way platforms from the front.
-                    let solid = both_faces().with_mask(SegmentFlags::SOLID);
-                    let one_way = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
-                    for run in p.points().windows(2) {
-                        let (a, motion) = (run[0], run[1] - run[0]);
-                        prop_assert!(
-                            map.cast_circle(a, r, motion, &solid).is_none()
-                                && map.cast_circle(a, r, motion, &one_way).is_none(),
-                            "editing {} blocked the run {} -> {} of a path it does not affect\n{}",
-                            cell, run[0], run[1], random.text()
-                        );
-                    }
+                    assert_still_clear(p, &map, &context());
                 }
             }
         }
         let fresh = NavGrid::new(&map, NavConfig::default()).unwrap();
-        let (nx, ny) = fresh.nodes();
-        prop_assert_eq!(nav.nodes(), (nx, ny));
-        for r in UPDATE_RADII {
-            for j in 0..ny {
-                for i in 0..nx {
-                    prop_assert_eq!(
-                        nav.open_moves(&map, i, j, r).unwrap(),
-                        fresh.open_moves(&map, i, j, r).unwrap(),
-                        "r {}: node ({}, {}) after edits {:?}\n{}",
-                        r, i, j, edits, random.text()
-                    );
-                }
-            }
-        }
-        field.refresh(&nav, &map).unwrap();
+        assert_same_moves(&nav, &fresh, &map, &context());
         let new = FlowField::new(&fresh, &map, goal, r).unwrap();
-        prop_assert!(field == new, "a refreshed field differs from a new one");
-        prop_assert!(
-            lazy == new,
-            "a field refreshed only when affected differs from a new one: edits {:?}\n{}",
-            edits, random.text()
-        );
+        prop_assert!(field == new, "a synced field differs from a new one {}", context());
+    }
+
+    /// More edits between two syncs than the map's journal keeps (and, for comparison, a
+    /// few fewer): the grid and the field rebuild, say so, and equal ones built on the
+    /// edited map; within the journal they catch up edit by edit and say they did not
+    /// rebuild.
+    #[test]
+    fn a_sync_past_the_journal_rebuilds_says_so_and_equals_a_full_recompute(
+        random in random_map(10, 8),
+        edits in prop_oneof![1usize..40, JOURNAL_EDITS - 8..JOURNAL_EDITS + 8],
+        seed in any::<u64>(),
+    ) {
+        let mut map = random.build();
+        let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let mut rng = SplitMix64::new(seed);
+        let r = 0.4;
+        let goal = fitting_point(&nav, &map, &mut rng, r).unwrap_or(v(5.0, 4.0));
+        let mut field = FlowField::new(&nav, &map, goal, r).unwrap();
+        let from = fitting_point(&nav, &map, &mut rng, r).unwrap_or(v(1.0, 1.0));
+        let path = nav.find_path(&map, from, goal, r).unwrap();
+        // Every edit changes its cell (the same tile again is no edit).
+        let tiles = ['.', '#', '/', '='];
+        for _ in 0..edits {
+            let cell = Cell::new(rng.below(10) as u32, rng.below(8) as u32);
+            let now = map.tile(cell);
+            let tile = tiles
+                .iter()
+                .map(|&c| ascii::tile_for_char(c).unwrap())
+                .cycle()
+                .skip(rng.below(4))
+                .find(|&t| t != now)
+                .unwrap();
+            map.set_tile(cell, tile).unwrap();
+        }
+        let change = nav.sync(&map).unwrap();
+        let rebuilt = field.sync(&nav, &map).unwrap();
+        prop_assert_eq!(change.is_rebuild(), edits > JOURNAL_EDITS, "{} edits", edits);
+        if edits > JOURNAL_EDITS {
+            prop_assert!(rebuilt, "the field is recomputed");
+            prop_assert!(!change.is_empty() && change.region() == Some(map.bounds()));
+            prop_assert!(path.as_ref().is_none_or(|p| p.is_affected_by(&change)));
+        }
+        let fresh = NavGrid::new(&map, NavConfig::default()).unwrap();
+        assert_same_moves(&nav, &fresh, &map, &format!("{edits} edits\n{}", random.text()));
+        let new = FlowField::new(&fresh, &map, goal, r).unwrap();
+        prop_assert!(field == new, "a synced field differs from a new one");
+        prop_assert!(nav.find_path(&map, from, goal, r).is_ok());
     }
 }
 
@@ -880,16 +940,36 @@ fn a_far_edit_does_not_affect_a_path_and_filling_a_cell_on_it_does() {
     assert_eq!(path.points(), &[from, to], "a straight run along row 3");
     let field = FlowField::new(&nav, &map, to, 0.4).unwrap();
 
+    // A block put in the closet, which is closed off from every room: moves close in it,
+    // none the field's nodes make.
+    let mut field = field;
+    map.set_tile(Cell::new(2, 6), Some(ascii::SOLID)).unwrap();
+    let closet = nav.sync(&map).unwrap();
+    assert!(!closet.is_empty() && !path.is_affected_by(&closet));
+    assert_eq!(
+        field.sync(&nav, &map),
+        Ok(false),
+        "the field's way is the same"
+    );
     // Dig in the closet at the bottom left, far from the path.
     map.clear_tile(Cell::new(5, 7)).unwrap();
-    let far = nav.update(&map, Cell::new(5, 7)).unwrap();
+    let far = nav.sync(&map).unwrap();
     assert!(!far.is_empty(), "digging opens moves in the closet");
+    assert!(!far.is_rebuild());
     assert!(!path.is_affected_by(&far));
+    // The dug cell joins the closet to the bottom room, which the field reaches: the
+    // field's way changes (the closet's nodes now reach the goal).
+    assert_eq!(
+        field.distance(&nav, &map, v(3.5, 7.5)),
+        Err(NavError::Stale)
+    );
+    assert_eq!(field.sync(&nav, &map), Ok(true));
+    assert!(field.distance(&nav, &map, v(3.5, 7.5)).unwrap().is_some());
     // Fill a cell of the corridor the path runs through.
     map.set_tile(Cell::new(9, 3), Some(ascii::SOLID)).unwrap();
-    let near = nav.update(&map, Cell::new(9, 3)).unwrap();
+    let near = nav.sync(&map).unwrap();
     assert!(path.is_affected_by(&near));
-    assert!(field.is_affected_by(&nav, &near));
+    assert_eq!(field.sync(&nav, &map), Ok(true));
     // Round the block, above or below it: at least as far as the straight lines to and
     // from its top corners at the radius's distance (the doors only add to that).
     let around = nav.find_path(&map, from, to, 0.4).unwrap().unwrap();
@@ -911,11 +991,11 @@ fn a_far_edit_does_not_affect_a_path_and_filling_a_cell_on_it_does() {
     );
 }
 
-/// Regression (FlowField::is_affected_by): it only looks at moves touching nodes the field
-/// reaches, so a field whose goal was walled in (it reaches no node) is never told that
-/// digging the goal out changed it. Found by the update property test.
+/// Regression (FlowField::is_affected_by, now `sync`): it only looked at moves touching
+/// nodes the field reaches, so a field whose goal was walled in (it reaches no node) was
+/// never told that digging the goal out changed it. Found by the update property test.
 #[test]
-fn a_field_whose_goal_was_walled_in_is_affected_when_it_is_dug_out() {
+fn a_field_whose_goal_was_walled_in_is_recomputed_when_it_is_dug_out() {
     let mut map = map(ROOM);
     let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
     let (goal, far) = (v(2.5, 1.5), v(5.5, 4.5));
@@ -923,20 +1003,21 @@ fn a_field_whose_goal_was_walled_in_is_affected_when_it_is_dug_out() {
     assert!(field.distance(&nav, &map, far).unwrap().is_some());
     let cell = Cell::new(2, 1);
     map.set_tile(cell, Some(ascii::SOLID)).unwrap();
-    let change = nav.update(&map, cell).unwrap();
-    assert!(field.is_affected_by(&nav, &change));
-    field.refresh(&nav, &map).unwrap();
+    nav.sync(&map).unwrap();
+    assert_eq!(field.sync(&nav, &map), Ok(true));
     assert_eq!(
         field.distance(&nav, &map, far),
         Ok(None),
         "the goal is in a wall"
     );
     map.clear_tile(cell).unwrap();
-    let change = nav.update(&map, cell).unwrap();
-    assert!(
-        field.is_affected_by(&nav, &change),
-        "digging the goal out lets every node reach it again, but the field is told it is unaffected"
+    nav.sync(&map).unwrap();
+    assert_eq!(
+        field.sync(&nav, &map),
+        Ok(true),
+        "digging the goal out lets every node reach it again, but the field was not recomputed"
     );
+    assert!(field.distance(&nav, &map, far).unwrap().is_some());
 }
 
 // ----------------------------------------------------------------------------------------
@@ -1076,10 +1157,10 @@ fn max_radius_that_is_not_positive_finite_or_is_over_31_cells_is_refused() {
 }
 
 #[test]
-fn a_map_edited_without_update_makes_every_query_stale() {
+fn a_map_edited_without_sync_makes_every_query_stale() {
     let mut map = map(ROOM);
     let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
-    let field = FlowField::new(&nav, &map, v(5.5, 4.5), 0.3).unwrap();
+    let mut field = FlowField::new(&nav, &map, v(5.5, 4.5), 0.3).unwrap();
     let (a, b) = (v(1.5, 1.5), v(5.5, 4.5));
     map.clear_tile(Cell::new(3, 3)).unwrap();
     assert_eq!(nav.find_path(&map, a, b, 0.3), Err(NavError::Stale));
@@ -1091,79 +1172,129 @@ fn a_map_edited_without_update_makes_every_query_stale() {
         FlowField::new(&nav, &map, b, 0.3).unwrap_err(),
         NavError::Stale
     );
-    let mut refreshed = field.clone();
-    assert_eq!(refreshed.refresh(&nav, &map), Err(NavError::Stale));
-    // Another map of the same size is not the grid's either.
-    let other = self::map(ROOM);
-    assert_eq!(nav.fits(&other, a, 0.3), Err(NavError::Stale));
-    // After the update everything answers again.
-    nav.update(&map, Cell::new(3, 3)).unwrap();
+    assert_eq!(field.sync(&nav, &map), Err(NavError::Stale), "grid first");
+    // After the grid's sync the grid answers, and the field once synced too.
+    assert!(!nav.sync(&map).unwrap().is_empty());
     assert!(nav.find_path(&map, a, b, 0.3).unwrap().is_some());
-    refreshed.refresh(&nav, &map).unwrap();
+    assert_eq!(field.direction(&nav, &map, a), Err(NavError::Stale));
+    field.sync(&nav, &map).unwrap();
     assert!(field.direction(&nav, &map, a).unwrap().is_some());
+    // Synced again with nothing new: no change. Temporary segments are no tile edits.
+    assert!(nav.sync(&map).unwrap().is_empty());
+    map.add_temporary(tileslide::TemporarySegment {
+        segment: tileslide::Segment::new(v(1.0, 2.0), v(3.0, 2.0)),
+        normal: Vec2::Y,
+        flags: SegmentFlags::SOLID,
+        owner: tileslide::Owner(1),
+        velocity: Vec2::ZERO,
+    })
+    .unwrap();
+    assert!(nav.fits(&map, a, 0.3).unwrap());
 }
 
-/// The grid is current again only when every edited cell has been updated, in any order;
-/// updating some other cell, or another map's edit, does not count.
+/// One sync catches up with every edit since the last, in the order they were made,
+/// filled and dug cells alike (an edit that sets the same tile again is none).
 #[test]
-fn a_grid_is_stale_until_every_edited_cell_is_updated() {
+fn one_sync_catches_up_with_every_edit_since_the_last() {
     let mut map = map(ROOM);
     let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
     let a = v(1.5, 1.5);
     let (c1, c2, c3) = (Cell::new(3, 3), Cell::new(4, 1), Cell::new(2, 4));
+    let before = map.revision();
     map.clear_tile(c1).unwrap();
     map.set_tile(c2, Some(ascii::SOLID)).unwrap();
     map.clear_tile(c1).unwrap(); // no change: not an edit
     map.set_tile(c3, Some(ascii::SOLID)).unwrap();
-    nav.update(&map, c3).unwrap();
-    assert_eq!(
-        nav.fits(&map, a, 0.3),
-        Err(NavError::Stale),
-        "c1, c2 missed"
-    );
-    nav.update(&map, Cell::new(1, 1)).unwrap();
-    assert_eq!(
-        nav.fits(&map, a, 0.3),
-        Err(NavError::Stale),
-        "not an edited cell"
-    );
-    nav.update(&map, c1).unwrap();
-    assert_eq!(nav.fits(&map, a, 0.3), Err(NavError::Stale), "c2 missed");
-    nav.update(&map, c2).unwrap();
+    let edited: Vec<Cell> = map.changes_since(&before).unwrap().collect();
+    assert_eq!(edited, [c1, c2, c3]);
+    assert_eq!(map.changes_since(&map.revision()).unwrap().len(), 0);
+    let change = nav.sync(&map).unwrap();
+    assert!(!change.is_empty() && !change.is_rebuild());
     assert!(nav.fits(&map, a, 0.3).unwrap());
-    // Equal to a grid built now, for every node's moves.
     let fresh = NavGrid::new(&map, NavConfig::default()).unwrap();
-    let (nx, ny) = nav.nodes();
-    for j in 0..ny {
-        for i in 0..nx {
-            assert_eq!(
-                nav.open_moves(&map, i, j, 0.3),
-                fresh.open_moves(&map, i, j, 0.3)
-            );
-        }
-    }
-    // A clone shares the history up to now: updated with the clone's edit, the grid is
-    // the clone's, and the original (without that edit) is not its map any more.
-    let mut other = map.clone();
-    other.clear_tile(c2).unwrap();
-    nav.update(&other, c2).unwrap();
-    assert!(nav.fits(&other, a, 0.3).is_ok());
-    assert_eq!(nav.fits(&map, a, 0.3), Err(NavError::Stale));
+    assert_same_moves(&nav, &fresh, &map, "after three edits");
 }
 
+/// A grid (or field) answers only on its own map: another map, even of the same tiles, is
+/// refused, by the queries and by `sync`, and leaves the grid as it was.
 #[test]
-fn an_update_for_a_cell_outside_the_map_or_another_map_size_is_refused() {
-    let map = map(ROOM);
+fn a_grid_or_field_used_with_another_map_is_refused() {
+    let mut map = map(ROOM);
     let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
-    for cell in [
-        Cell::new(8, 0),
-        Cell::new(0, 6),
-        Cell::new(u32::MAX, u32::MAX),
-    ] {
-        assert_eq!(nav.update(&map, cell), Err(NavError::CellOutside(cell)));
-    }
+    let mut field = FlowField::new(&nav, &map, v(5.5, 4.5), 0.3).unwrap();
+    let a = v(1.5, 1.5);
+    let same_tiles = self::map(ROOM);
     let wider = self::map("#########\n#.......#\n#########");
-    assert_eq!(nav.update(&wider, Cell::new(1, 1)), Err(NavError::Stale));
+    for other in [&same_tiles, &wider] {
+        assert_eq!(nav.sync(other), Err(NavError::OtherMap));
+        assert_eq!(nav.fits(other, a, 0.3), Err(NavError::OtherMap));
+        assert_eq!(nav.open_moves(other, 1, 1, 0.3), Err(NavError::OtherMap));
+        assert_eq!(
+            nav.find_path(other, a, v(2.5, 1.5), 0.3),
+            Err(NavError::OtherMap)
+        );
+        assert_eq!(field.sync(&nav, other), Err(NavError::OtherMap));
+        assert_eq!(field.distance(&nav, other, a), Err(NavError::OtherMap));
+    }
+    // A grid and field of the other map, used with this one's field and grid.
+    let other_nav = NavGrid::new(&same_tiles, NavConfig::default()).unwrap();
+    assert_eq!(field.sync(&other_nav, &same_tiles), Err(NavError::OtherMap));
+    assert_eq!(
+        field.distance(&other_nav, &same_tiles, a),
+        Err(NavError::OtherMap)
+    );
+    // Still this map's, and catching up with it.
+    map.clear_tile(Cell::new(3, 3)).unwrap();
+    assert!(!nav.sync(&map).unwrap().is_empty());
+    field.sync(&nav, &map).unwrap();
+    assert!(field.distance(&nav, &map, a).unwrap().is_some());
+    // A map dropped and another made in its place is still another map.
+    let nav2 = NavGrid::new(&self::map(ROOM), NavConfig::default()).unwrap();
+    let later = self::map(ROOM);
+    assert_eq!(nav2.fits(&later, a, 0.3), Err(NavError::OtherMap));
+}
+
+/// A clone is its original as it was when cloned: a grid caught up with the original then
+/// answers on the clone and catches up with the clone's edits. Once the two are edited
+/// apart, a grid that has seen one's edits is refused by the other.
+#[test]
+fn a_clone_is_the_same_map_until_the_two_are_edited_apart() {
+    let mut map = map(ROOM);
+    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let a = v(1.5, 1.5);
+    let mut clone = map.clone();
+    assert!(
+        nav.fits(&clone, a, 0.3).unwrap(),
+        "an unedited clone is the map"
+    );
+    // Both edited, differently.
+    map.clear_tile(Cell::new(3, 3)).unwrap();
+    clone.set_tile(Cell::new(2, 1), Some(ascii::SOLID)).unwrap();
+    // The grid has seen neither edit: it can catch up with either copy. A copy of it
+    // follows the clone (as a worker thread would, with its own copies).
+    let mut clone_nav = nav.clone();
+    clone_nav.sync(&clone).unwrap();
+    nav.sync(&map).unwrap();
+    assert_same_moves(
+        &clone_nav,
+        &NavGrid::new(&clone, NavConfig::default()).unwrap(),
+        &clone,
+        "clone",
+    );
+    assert_same_moves(
+        &nav,
+        &NavGrid::new(&map, NavConfig::default()).unwrap(),
+        &map,
+        "original",
+    );
+    // Each grid has seen an edit the other copy never had.
+    assert_eq!(nav.sync(&clone), Err(NavError::OtherMap));
+    assert_eq!(nav.fits(&clone, a, 0.3), Err(NavError::OtherMap));
+    assert_eq!(clone_nav.sync(&map), Err(NavError::OtherMap));
+    // Flow fields follow the same rule.
+    let mut field = FlowField::new(&nav, &map, v(5.5, 4.5), 0.3).unwrap();
+    assert_eq!(field.sync(&clone_nav, &clone), Err(NavError::OtherMap));
+    assert_eq!(field.sync(&nav, &map), Ok(false));
 }
 
 #[test]

@@ -9,15 +9,16 @@
 //! - **A tile edit** recomputes its cell and the four next to it (seam culling) and relinks
 //!   the segment ends within two cells (caps; see `TileMap::set_tile`), so walls change only
 //!   inside the cell's box grown by two cells. The map's edit journal
-//!   (`TileMap::edits_since`) names the cells.
+//!   (`TileMap::changes_since`) names the cells.
 //! - **A temporary segment** changes walls where it was and where it is. Temporaries are
 //!   compared entry by entry in list order, the order every query lists them in (equal
 //!   contacts go to the first listed), so an entry that moved, appeared, vanished or holds
 //!   another segment than before changes the boxes of both its old and its new segment.
 //!   A game that clears and re-submits the same temporaries every frame changes nothing.
 //!
-//! Anything the journal cannot account for (another map, more edits than it keeps, more
-//! changes than [`MAX_REGIONS`]) changes everything.
+//! Anything the journal cannot account for (another map, a clone edited apart, more edits
+//! than it keeps, more changes than [`MAX_REGIONS`]) changes everything: the resolver
+//! forgets its memories and carries on with the map it is given.
 //!
 //! The changed boxes are marked on a bitmap of the map's cells, so asking whether a disc's
 //! box touches any of them reads the few cells the box covers, however many changed: every
@@ -26,7 +27,7 @@
 use glam::Vec2;
 
 use crate::geometry::{Aabb, Segment};
-use crate::tiles::{SegmentFlags, TileMap};
+use crate::tiles::{MapRevision, SegmentFlags, TileMap};
 
 /// Most changed boxes tracked one by one; past this, every memory is dropped.
 const MAX_REGIONS: usize = 1024;
@@ -53,8 +54,8 @@ type TemporaryWall = (Segment, Vec2, SegmentFlags);
 /// The map as the last resolve saw it.
 #[derive(Clone, Debug, Default)]
 pub(super) struct MapWatch {
-    /// Its tiles and temporaries revisions; `None` before the first resolve.
-    seen: Option<(u64, u64)>,
+    /// The map's revision; `None` before the first resolve.
+    seen: Option<MapRevision>,
     temporaries: Vec<TemporaryWall>,
     /// The boxes outside which nothing changed, when the change is local.
     regions: Vec<Aabb>,
@@ -66,15 +67,14 @@ impl MapWatch {
     /// How `map` changed since the last call, which it then remembers.
     pub fn update(&mut self, map: &TileMap) -> MapChange {
         self.regions.clear();
-        let now = (map.tiles_revision(), map.temporaries_revision());
-        let Some((tiles, temporaries)) = self.seen.replace(now) else {
+        let Some(seen) = self.seen.replace(map.revision()) else {
             self.remember_temporaries(map);
             return MapChange::Everything;
         };
         let mut everything = false;
-        if now.0 != tiles {
-            match map.edits_since(tiles) {
-                Some(cells) => {
+        if !map.tiles_at(&seen) {
+            match map.changes_since(&seen) {
+                Ok(cells) => {
                     let reach = map.cell_size() * EDIT_REACH;
                     for cell in cells {
                         let rect = map.cell_rect(cell);
@@ -86,10 +86,10 @@ impl MapWatch {
                         }
                     }
                 }
-                None => everything = true,
+                Err(_) => everything = true,
             }
         }
-        if now.1 != temporaries {
+        if !map.temporaries_at(&seen) {
             let old = std::mem::take(&mut self.temporaries);
             self.remember_temporaries(map);
             let longest = old.len().max(self.temporaries.len());

@@ -239,19 +239,27 @@ impl Clearance {
     /// 3 × 3 block: seam culling changes the cell and its four neighbours). Returns the moves
     /// whose clearance changed.
     pub fn update_cell(&mut self, map: &TileMap, cell: Cell) -> Vec<ChangedMove> {
+        let (i0, j0, i1, j1) = self.cell_nodes(map, cell);
+        let mut changed = Vec::new();
+        self.recompute(map, i0, j0, i1, j1, &mut changed);
+        changed
+    }
+
+    /// The (inclusive) lattice rectangle of the nodes whose stored moves an edit of `cell`
+    /// may change: what [`update_cell`](Self::update_cell) recomputes.
+    pub fn cell_nodes(&self, map: &TileMap, cell: Cell) -> (u32, u32, u32, u32) {
         let cell_size = map.cell_size();
         let lo = map.cell_corner(cell) - cell_size;
         let hi = lo + 3.0 * cell_size;
         let reach = self.lattice.step + Vec2::splat(self.cap);
         let a = self.lattice.local(lo - reach).floor().max(Vec2::ZERO);
         let b = self.lattice.local(hi + reach).ceil();
-        let (i1, j1) = (
+        (
+            a.x as u32,
+            a.y as u32,
             (b.x as u32).min(self.lattice.nx - 1),
             (b.y as u32).min(self.lattice.ny - 1),
-        );
-        let mut changed = Vec::new();
-        self.recompute(map, a.x as u32, a.y as u32, i1, j1, &mut changed);
-        changed
+        )
     }
 
     /// The clearance (map units, at most the cap) of a straight move from `a` to `b`

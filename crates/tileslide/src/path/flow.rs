@@ -6,14 +6,21 @@
 //! in a straight line, not towards the next node: it cuts the lattice's 45° turns and
 //! never aims at a node behind a corner it would have to round, so agents moved by the
 //! resolver flow around each other and corners instead of catching on them.
+//!
+//! A field catches up with the map by itself ([`FlowField::sync`]): it keeps, for every node
+//! it reaches, which moves into and out of the node were open, and after edits compares
+//! them with the grid's near each edited cell. Only a change there (or near the goal, where
+//! the goal joins the lattice) can change its distances, so only then is it recomputed.
 
 use glam::Vec2;
 
-use super::clearance::incoming_moves;
+use super::clearance::{incoming_moves, open_moves};
 use super::lattice::MOVES;
 use super::radix_heap::RadixHeap;
-use super::{End, NavChange, NavError, NavGrid, check_point};
-use crate::tiles::TileMap;
+use super::sync::behind;
+use super::{End, NavError, NavGrid, WIDE_JOIN, check_point};
+use crate::geometry::Aabb;
+use crate::tiles::{Cell, JournalError, MapRevision, TileMap};
 
 /// Distance of a node the goal cannot be reached from.
 const UNREACHED: u32 = u32::MAX;
@@ -43,6 +50,11 @@ pub struct FlowField {
     next: Vec<u8>,
     /// Map units per cost unit.
     unit: f32,
+    /// Per node the field reaches, the moves open out of it (low byte) and into it (high
+    /// byte) when it was filled; 0 for the others.
+    open: Vec<u16>,
+    /// The map's revision the field is caught up with.
+    revision: MapRevision,
 }
 
 impl FlowField {
@@ -59,6 +71,8 @@ impl FlowField {
             distance: vec![UNREACHED; nodes],
             next: vec![TO_GOAL; nodes],
             unit: nav.table.lattice.unit,
+            open: vec![0; nodes],
+            revision: map.revision(),
         };
         field.fill(nav, map);
         Ok(field)
@@ -96,6 +110,21 @@ impl FlowField {
                 }
             }
         }
+        for n in 0..self.open.len() {
+            self.open[n] = if self.distance[n] == UNREACHED {
+                0
+            } else {
+                self.open_moves(nav, n)
+            };
+        }
+    }
+
+    /// The moves out of (low byte) and into (high byte) node `n` open for the field's
+    /// radius on `nav`.
+    fn open_moves(&self, nav: &NavGrid, n: usize) -> u16 {
+        let (i, j) = nav.table.lattice.coords(n);
+        let out = open_moves(&nav.table, n, i, j, self.need);
+        u16::from(out) | u16::from(incoming_moves(&nav.table, n, i, j, self.need)) << 8
     }
 
     /// The goal.
@@ -190,45 +219,65 @@ impl FlowField {
         Ok((target - p).try_normalize())
     }
 
-    /// True when `change` opened or closed, for this field's radius, a move that touches a
-    /// node the field reaches, or changed walls near enough to the goal to change how it
-    /// joins the lattice (a goal walled in and dug out again): then
-    /// [`refresh`](Self::refresh) it.
-    #[must_use]
-    pub fn is_affected_by(&self, nav: &NavGrid, change: &NavChange) -> bool {
-        let lattice = &nav.table.lattice;
-        // The goal joins nodes up to a cell away (`NavGrid::attach`), by lines that walls
-        // within the radius and margin of them block.
-        let joins = crate::geometry::Aabb::from_corners(self.goal, self.goal)
-            .expand(lattice.step.max_element() * 2.0 + self.radius + nav.table.margin);
-        if change.edited.overlaps(&joins) {
-            return true;
+    /// Catches up with `map`'s tile edits since the field was made or last synced, once
+    /// `nav` has ([`NavGrid::sync`]): recomputes the field if an edit opened or closed a
+    /// move into or out of a node the field reaches, or changed walls near enough to the
+    /// goal to change how it joins the lattice (a goal walled in and dug out again), or if
+    /// the field is more edits behind than the map remembers. Returns true when it
+    /// recomputed the field: its distances and directions may then differ.
+    ///
+    /// # Errors
+    /// [`NavError::Stale`] when `nav` has not caught up with `map`;
+    /// [`NavError::OtherMap`] when `map` (or `nav`) is not the field's map.
+    pub fn sync(&mut self, nav: &NavGrid, map: &TileMap) -> Result<bool, NavError> {
+        nav.check(map, self.radius)?;
+        let affected = match map.changes_since(&self.revision) {
+            Err(JournalError::OtherMap) => return Err(NavError::OtherMap),
+            Err(JournalError::Overrun { .. }) => true,
+            Ok(cells) if cells.len() == 0 => return Ok(false),
+            Ok(mut cells) => {
+                // The goal joins nodes up to WIDE_JOIN away (`NavGrid::attach`), by lines
+                // that walls within the radius and margin (less than the cap) of them block.
+                let reach = nav.table.lattice.step.max_element() * WIDE_JOIN as f32;
+                let joins = Aabb::from_corners(self.goal, self.goal).expand(reach + nav.table.cap);
+                cells.any(|cell| {
+                    // Walls change in the cell's 3 × 3 block (seam culling).
+                    let corner = map.cell_corner(cell) - map.cell_size();
+                    let block = Aabb::from_corners(corner, corner + 3.0 * map.cell_size());
+                    block.overlaps(&joins) || self.moves_changed(nav, map, cell)
+                })
+            }
+        };
+        if affected {
+            self.fill(nav, map);
         }
-        change.flips_for(self.need, |m| {
-            let n = m.node as usize;
-            let (i, j) = lattice.coords(n);
-            let other = lattice
-                .neighbour(i, j, m.dir as usize)
-                .map(|(a, b)| lattice.index(a, b));
-            self.distance[n] != UNREACHED || other.is_some_and(|o| self.distance[o] != UNREACHED)
+        self.revision = map.revision();
+        Ok(affected)
+    }
+
+    /// True when a move into or out of a node the field reaches is open or closed on `nav`
+    /// where it was not when the field was filled, among the moves an edit of `cell` may
+    /// change (those stored at the nodes `nav` recomputes for it, which touch those nodes
+    /// or their neighbours).
+    fn moves_changed(&self, nav: &NavGrid, map: &TileMap, cell: Cell) -> bool {
+        let lattice = &nav.table.lattice;
+        let (i0, j0, i1, j1) = nav.table.cell_nodes(map, cell);
+        let (i0, j0) = (i0.saturating_sub(1), j0.saturating_sub(1));
+        let (i1, j1) = ((i1 + 1).min(lattice.nx - 1), (j1 + 1).min(lattice.ny - 1));
+        (j0..=j1).any(|j| {
+            (i0..=i1).any(|i| {
+                let n = lattice.index(i, j);
+                self.distance[n] != UNREACHED && self.open_moves(nav, n) != self.open[n]
+            })
         })
     }
 
-    /// Recomputes the field against the grid's current state (after [`NavGrid::update`]).
-    pub fn refresh(&mut self, nav: &NavGrid, map: &TileMap) -> Result<(), NavError> {
-        nav.check(map, self.radius)?;
-        if self.distance.len() != nav.table.lattice.len() {
-            return Err(NavError::Stale);
-        }
-        self.fill(nav, map);
-        Ok(())
-    }
-
+    /// Refuses `p` if not finite, and `nav` or the field if not caught up with `map`.
     fn check(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Result<(), NavError> {
         check_point("p", p)?;
         nav.check(map, self.radius)?;
-        if self.distance.len() != nav.table.lattice.len() {
-            return Err(NavError::Stale);
+        if !map.tiles_at(&self.revision) {
+            return Err(behind(map, &self.revision));
         }
         Ok(())
     }

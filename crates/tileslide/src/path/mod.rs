@@ -10,9 +10,14 @@
 //!   way its normal points, as the resolver lets a body through;
 //! - [`FlowField`] holds, for one goal and one radius, every node's distance to the goal
 //!   and the way there, for crowds that share the goal;
-//! - [`NavGrid::update`] brings the grid up to date after a tile edit, recomputing only the
-//!   moves near the edited cell, and returns a [`NavChange`] that tells which paths and
-//!   fields the edit affects.
+//! - [`NavGrid::sync`] catches the grid up with the map's edits (read from the map's edit
+//!   journal, [`TileMap::changes_since`]), recomputing only the moves near each edited
+//!   cell, and returns a [`NavChange`] that tells which paths the edits affect;
+//!   [`FlowField::sync`] does the same for a field, which recomputes itself only when an
+//!   edit changed its way.
+//!
+//! Nothing has to be told which cells changed, and a grid or field is never used with a map
+//! it was not built for: it refuses with [`NavError::OtherMap`].
 //!
 //! ```
 //! use tileslide::{io::ascii, NavConfig, NavGrid, Vec2};
@@ -30,7 +35,7 @@
 //! assert!(nav.find_path(&map, Vec2::new(1.5, 3.5), Vec2::new(8.5, 1.5), 0.6)?.is_none());
 //! // Dig out the middle: the way from the top corridor to the bottom one gets shorter.
 //! map.clear_tile(tileslide::Cell::new(4, 2))?;
-//! let change = nav.update(&map, tileslide::Cell::new(4, 2))?;
+//! let change = nav.sync(&map)?;
 //! // It opens a way right beside the path: the path may no longer be the best one.
 //! assert!(path.is_affected_by(&change));
 //! let up = nav.find_path(&map, Vec2::new(4.5, 3.5), Vec2::new(4.5, 1.5), 0.4)?.unwrap();
@@ -39,22 +44,27 @@
 //! ```
 
 mod clearance;
+mod error;
 mod flow;
 mod landmarks;
 mod lattice;
 mod radius_class;
 mod radix_heap;
+mod route;
 mod search;
 mod smooth;
+mod sync;
 
 use glam::Vec2;
-use thiserror::Error;
 
+pub use error::NavError;
+pub(crate) use error::check_point;
 pub use flow::FlowField;
+pub use route::Path;
+pub use sync::NavChange;
 
-use crate::geometry::Aabb;
-use crate::tiles::{Cell, SegmentFlags, TileMap};
-use clearance::{ChangedMove, Clearance};
+use crate::tiles::{MapRevision, SegmentFlags, TileMap};
+use clearance::Clearance;
 use radius_class::RadiusClass;
 use search::{Attach, Search};
 
@@ -115,89 +125,6 @@ pub(crate) enum End {
     Goal,
 }
 
-/// What a navigation call refuses.
-#[derive(Clone, Debug, PartialEq, Error)]
-pub enum NavError {
-    /// `max_radius` is not positive and finite, or too large for the cell size.
-    #[error("max_radius {max_radius} must be positive, finite and at most {limit} (31 cells)")]
-    BadMaxRadius {
-        /// The value given.
-        max_radius: f32,
-        /// The largest allowed for this map.
-        limit: f32,
-    },
-    /// The map has more lattice nodes than [`MAX_NAV_NODES`].
-    #[error("a {width} × {height} map has {nodes} navigation nodes, more than {MAX_NAV_NODES}")]
-    TooLarge {
-        /// Map width in cells.
-        width: u32,
-        /// Map height in cells.
-        height: u32,
-        /// Its lattice nodes.
-        nodes: u64,
-    },
-    /// The map reaches so far from (0, 0) that `f32` coordinates there are farther apart
-    /// than the grid's margin (1/1000 of a cell), so clearances cannot keep it.
-    #[error(
-        "the map reaches {corner}, where coordinates are {spacing} apart, more than the navigation grid's margin {margin} (1/1000 of a cell): move its origin nearer (0, 0)"
-    )]
-    TooFar {
-        /// The map's corner farthest from (0, 0).
-        corner: Vec2,
-        /// The spacing of `f32` values there (map units).
-        spacing: f32,
-        /// The grid's margin (map units).
-        margin: f32,
-    },
-    /// A radius that is not positive and finite, or above the grid's `max_radius`.
-    #[error(
-        "radius {radius} must be positive, finite and at most the grid's max_radius {max_radius}"
-    )]
-    BadRadius {
-        /// The radius asked for.
-        radius: f32,
-        /// The grid's `max_radius`.
-        max_radius: f32,
-    },
-    /// A point with a NaN or infinite coordinate.
-    #[error("the {what} point {point} is not finite")]
-    NonFinite {
-        /// Which point (`from`, `to`, `goal`, …).
-        what: &'static str,
-        /// Its value.
-        point: Vec2,
-    },
-    /// A point with a coordinate beyond [`MAX_COORD`](crate::MAX_COORD) in magnitude.
-    #[error("the {what} point {point} is beyond the ±{max} coordinate range (MAX_COORD)", max = crate::MAX_COORD)]
-    OutOfRange {
-        /// Which point (`from`, `to`, `goal`, …).
-        what: &'static str,
-        /// Its value.
-        point: Vec2,
-    },
-    /// The map is not the one the grid was built for, or its tiles changed since without
-    /// [`NavGrid::update`].
-    #[error(
-        "the navigation grid is out of date: the map's tiles changed since it was built or updated (call NavGrid::update after each edit)"
-    )]
-    Stale,
-    /// A cell outside the map.
-    #[error("cell ({}, {}) is outside the map", .0.col, .0.row)]
-    CellOutside(Cell),
-}
-
-/// Refuses a point that is not finite or lies beyond [`MAX_COORD`](crate::MAX_COORD):
-/// lattice coordinates of such a point overflow the integers nodes are counted in.
-pub(crate) fn check_point(what: &'static str, point: Vec2) -> Result<(), NavError> {
-    if !point.is_finite() {
-        Err(NavError::NonFinite { what, point })
-    } else if !crate::geometry::in_range(point) {
-        Err(NavError::OutOfRange { what, point })
-    } else {
-        Ok(())
-    }
-}
-
 /// Navigation data for one map: move clearances on a half-cell lattice and search scratch.
 #[derive(Clone, Debug)]
 pub struct NavGrid {
@@ -206,107 +133,8 @@ pub struct NavGrid {
     search: Search,
     /// Moves and parts per radius class, most recently used last.
     classes: Vec<RadiusClass>,
-    /// The map's tiles revision this grid last matched.
-    tiles_revision: u64,
-    /// Cells updated since then, sorted, while other edits are still to come (see
-    /// `update`).
-    updated: Vec<Cell>,
-    size: (u32, u32),
-}
-
-/// A path found by [`NavGrid::find_path`]: straight runs from the start point to the goal
-/// point, each clear for the radius it was found for.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Path {
-    points: Vec<Vec2>,
-    length: f32,
-    radius: f32,
-    /// Clearance steps the radius needs (for [`Path::is_affected_by`]).
-    need: u16,
-    bounds: Aabb,
-}
-
-impl Path {
-    fn new(points: Vec<Vec2>, radius: f32, need: u16) -> Self {
-        let length = points.windows(2).map(|w| w[0].distance(w[1])).sum();
-        let mut bounds = Aabb::from_corners(points[0], points[0]);
-        for &p in &points {
-            bounds = bounds.union(&Aabb::from_corners(p, p));
-        }
-        Self {
-            points,
-            length,
-            radius,
-            need,
-            bounds: bounds.expand(radius),
-        }
-    }
-
-    /// The corners, from the start point to the goal point.
-    #[must_use]
-    pub fn points(&self) -> &[Vec2] {
-        &self.points
-    }
-
-    /// Total length (map units).
-    #[must_use]
-    pub fn length(&self) -> f32 {
-        self.length
-    }
-
-    /// The radius the path was found for.
-    #[must_use]
-    pub fn radius(&self) -> f32 {
-        self.radius
-    }
-
-    /// True when `change` may have blocked this path or opened a shorter way near it: a
-    /// move within reach of the path opened or closed for its radius. Far-away edits and
-    /// edits that only change clearances no circle of this radius notices do not affect it.
-    #[must_use]
-    pub fn is_affected_by(&self, change: &NavChange) -> bool {
-        change.region.is_some_and(|r| r.overlaps(&self.bounds))
-            && change.flips_for(self.need, |_| true)
-    }
-}
-
-/// What a tile edit changed in a [`NavGrid`] (from [`NavGrid::update`]).
-#[derive(Clone, Debug, PartialEq)]
-pub struct NavChange {
-    moves: Vec<ChangedMove>,
-    /// The moves' extent (map units), `None` if nothing changed.
-    region: Option<Aabb>,
-    /// Where walls may have changed: the edited cell's 3 × 3 block (seam culling changes
-    /// the segments of its neighbours too).
-    edited: Aabb,
-}
-
-impl NavChange {
-    /// True when no move's clearance changed.
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        self.moves.is_empty()
-    }
-
-    /// The region whose moves changed, if any.
-    #[must_use]
-    pub fn region(&self) -> Option<Aabb> {
-        self.region
-    }
-
-    /// Number of moves whose clearance changed.
-    #[must_use]
-    pub fn changed_moves(&self) -> usize {
-        self.moves.len()
-    }
-
-    /// True when some move from a node `node_filter` accepts opened or closed for a circle
-    /// needing `need` clearance steps.
-    fn flips_for(&self, need: u16, mut touches: impl FnMut(&ChangedMove) -> bool) -> bool {
-        self.moves
-            .iter()
-            .any(|m| (m.before >= need) != (m.after >= need) && touches(m))
-    }
+    /// The map's revision the grid is caught up with (see [`NavGrid::sync`]).
+    revision: MapRevision,
 }
 
 impl NavGrid {
@@ -349,9 +177,7 @@ impl NavGrid {
             max_radius: config.max_radius,
             search: Search::default(),
             classes: Vec::new(),
-            tiles_revision: map.tiles_revision(),
-            updated: Vec::new(),
-            size: (map.width(), map.height()),
+            revision: map.revision(),
         })
     }
 
@@ -361,69 +187,11 @@ impl NavGrid {
         self.max_radius
     }
 
-    /// Brings the grid up to date after `map.set_tile(cell, …)` (or `clear_tile`), in time
-    /// independent of the map's size. Call it once per edited cell, in any order; the grid
-    /// is then what [`NavGrid::new`] would build.
-    ///
-    /// The grid checks the map's record of its latest edits: until every cell edited since
-    /// the grid was last current has been updated, queries refuse with
-    /// [`NavError::Stale`]. So does a grid more than 4,096 edits behind, or used with
-    /// another map: build it anew then.
-    pub fn update(&mut self, map: &TileMap, cell: Cell) -> Result<NavChange, NavError> {
-        if (map.width(), map.height()) != self.size
-            || map.cell_size() * 0.5 != self.table.lattice.step
-        {
-            return Err(NavError::Stale);
-        }
-        if cell.col >= map.width() || cell.row >= map.height() {
-            return Err(NavError::CellOutside(cell));
-        }
-        let moves = self.table.update_cell(map, cell);
-        for class in &mut self.classes {
-            class.apply(&self.table, &moves);
-        }
-        self.note_updated(map, cell);
-        let lattice = &self.table.lattice;
-        let region = moves.iter().fold(None, |acc: Option<Aabb>, m| {
-            let p = lattice.position_of(m.node as usize);
-            let q = p + lattice.step
-                * Vec2::new(
-                    lattice::MOVES[m.dir as usize].0 as f32,
-                    lattice::MOVES[m.dir as usize].1 as f32,
-                );
-            let b = Aabb::from_corners(p, q);
-            Some(acc.map_or(b, |a| a.union(&b)))
-        });
-        let corner =
-            |c: i64, r: i64| map.origin() + Vec2::new(c as f32, r as f32) * map.cell_size();
-        let (c, r) = (i64::from(cell.col), i64::from(cell.row));
-        let edited = Aabb::from_corners(corner(c - 1, r - 1), corner(c + 2, r + 2));
-        Ok(NavChange {
-            moves,
-            region,
-            edited,
-        })
-    }
-
-    /// Records that `cell` is up to date, and the grid current if that was the last
-    /// edited cell not yet updated.
-    fn note_updated(&mut self, map: &TileMap, cell: Cell) {
-        // Sorted, so checking a batch of edits costs k log k, not k².
-        if let Err(at) = self.updated.binary_search(&cell) {
-            self.updated.insert(at, cell);
-        }
-        let Some(mut edits) = map.edits_since(self.tiles_revision) else {
-            return;
-        };
-        if edits.all(|c| self.updated.binary_search(&c).is_ok()) {
-            self.tiles_revision = map.tiles_revision();
-            self.updated.clear();
-        }
-    }
-
+    /// The clearance steps a circle of `radius` needs, once the grid is known to be
+    /// caught up with `map` ([`NavError::Stale`] or [`NavError::OtherMap`] if not).
     pub(crate) fn check(&self, map: &TileMap, radius: f32) -> Result<u16, NavError> {
-        if map.tiles_revision() != self.tiles_revision {
-            return Err(NavError::Stale);
+        if !map.tiles_at(&self.revision) {
+            return Err(sync::behind(map, &self.revision));
         }
         if !(radius > 0.0 && radius <= self.max_radius) {
             return Err(NavError::BadRadius {

@@ -1,100 +1,19 @@
-use std::collections::{BTreeMap, VecDeque};
+use std::collections::BTreeMap;
 use std::sync::Arc;
-use std::sync::atomic::{AtomicU64, Ordering};
 
 use glam::Vec2;
-use thiserror::Error;
 
 use super::SegmentRef;
 use super::continuity::link_cell;
 use super::culling::{Side, active_segments};
 use super::face_kind::{canonical_faces, kind_of};
+use super::journal::Journal;
 use super::store::{HotSegment, Links, SegmentStore};
-use super::{Cell, SegmentFlags, TemporaryError, TemporarySegment, TileId, TileSet, TileShape};
+use super::{Cell, MapError, SegmentFlags, TemporarySegment, TileId, TileSet, TileShape};
 use crate::geometry::{Aabb, Segment, in_range};
 
 /// The most cells a map may have (2²⁶, e.g. 8192 × 8192).
 pub const MAX_CELLS: u64 = 1 << 26;
-
-/// Why a map could not be built or edited.
-#[derive(Clone, Debug, PartialEq, Error)]
-pub enum MapError {
-    /// Width and height must both be at least 1.
-    #[error("map size {width}×{height} is empty")]
-    EmptySize {
-        /// Width given.
-        width: u32,
-        /// Height given.
-        height: u32,
-    },
-    /// More cells than [`MAX_CELLS`], or more segments than the map can index.
-    #[error("map size {width}×{height} is too large (at most {MAX_CELLS} cells)")]
-    TooLarge {
-        /// Width given.
-        width: u32,
-        /// Height given.
-        height: u32,
-    },
-    /// The origin has a NaN or infinite coordinate.
-    #[error("map origin ({x}, {y}) is not finite")]
-    NonFiniteOrigin {
-        /// x given.
-        x: f32,
-        /// y given.
-        y: f32,
-    },
-    /// The map would reach past [`MAX_COORD`](crate::MAX_COORD) from the origin: its
-    /// corners are where every query and body would compute.
-    #[error(
-        "map of {width}×{height} cells at ({x}, {y}) reaches ({far_x}, {far_y}), past the \
-         ±{max} coordinate range (MAX_COORD)",
-        max = crate::MAX_COORD
-    )]
-    OutOfRange {
-        /// Width given.
-        width: u32,
-        /// Height given.
-        height: u32,
-        /// Origin x.
-        x: f32,
-        /// Origin y.
-        y: f32,
-        /// The far corner's x (origin + width × tile width).
-        far_x: f32,
-        /// The far corner's y.
-        far_y: f32,
-    },
-    /// A cell outside the map.
-    #[error("cell {cell} is outside the {width}×{height} map")]
-    CellOutOfBounds {
-        /// The cell asked for.
-        cell: Cell,
-        /// Map width.
-        width: u32,
-        /// Map height.
-        height: u32,
-    },
-    /// A tile id the tile set does not have.
-    #[error("tile {id} is not in the tile set")]
-    UnknownTile {
-        /// The id asked for.
-        id: TileId,
-    },
-    /// The list of tiles does not have one entry per cell.
-    #[error("expected {expected} tiles (one per cell), got {got}")]
-    WrongTileCount {
-        /// width × height.
-        expected: usize,
-        /// Length of the list given.
-        got: usize,
-    },
-    /// The map would hold more active segments than it can index (about 2³²).
-    #[error("the map would hold more active segments than it can index")]
-    TooManySegments,
-    /// A temporary segment was refused.
-    #[error(transparent)]
-    Temporary(#[from] TemporaryError),
-}
 
 /// An active segment of a map: what queries test, after seam culling, in world coordinates.
 ///
@@ -152,24 +71,15 @@ pub struct TileMap {
     placed: usize,
     pub(crate) store: SegmentStore,
     pub(crate) temporaries: Vec<TemporarySegment>,
-    /// Changes whenever its tiles change (see [`next_revision`]): what a navigation grid
-    /// built from the map compares to know it is current.
-    tiles_revision: u64,
-    /// Changes whenever its temporary segments change.
-    temporaries_revision: u64,
-    /// The latest tile edits, oldest first: each the tiles revision before it and the cell
-    /// (see [`TileMap::edits_since`]); at most [`EDIT_JOURNAL`] of them.
-    journal: VecDeque<(u64, Cell)>,
+    /// Its revisions and latest tile edits, for everything that remembers map data (see
+    /// [`TileMap::changes_since`]).
+    pub(super) journal: Journal,
     /// Reused buffers for the active segments of the cells an edit recomputes (the cell
     /// and its four neighbours), so an edit does not allocate once warmed up.
     scratch: [Vec<HotSegment>; 5],
 }
 
 const EMPTY: u32 = u32::MAX;
-
-/// How many of its latest tile edits a map remembers: a navigation grid told of each
-/// edited cell in turn (`NavGrid::update`) checks against them that none was missed.
-const EDIT_JOURNAL: usize = 4096;
 
 /// The number of cells of a `width × height` map at `origin`, or why it cannot be.
 fn checked_size(width: u32, height: u32, origin: Vec2, cell_size: Vec2) -> Result<u64, MapError> {
@@ -198,15 +108,6 @@ fn checked_size(width: u32, height: u32, origin: Vec2, cell_size: Vec2) -> Resul
         });
     }
     Ok(cells)
-}
-
-/// A number no map has had yet: every new map and every edit takes one, so two maps with the
-/// same tiles revision hold the same tiles, and two with the same temporaries revision the
-/// same temporaries (a clone keeps its original's until it is edited). Memories of a map's
-/// contents (a navigation grid, the resolver's kept walls and settled bodies) compare them.
-fn next_revision() -> u64 {
-    static NEXT: AtomicU64 = AtomicU64::new(0);
-    NEXT.fetch_add(1, Ordering::Relaxed)
 }
 
 /// The number of tile-shape segments `tiles` (raw ids, `u32::MAX` for empty) place, or the
@@ -273,9 +174,7 @@ impl TileMap {
             placed,
             store,
             temporaries: Vec::new(),
-            tiles_revision: next_revision(),
-            temporaries_revision: next_revision(),
-            journal: VecDeque::new(),
+            journal: Journal::default(),
             scratch: Default::default(),
         }
     }
@@ -409,11 +308,7 @@ impl TileMap {
             }
         }
         self.scratch = scratch;
-        if self.journal.len() == EDIT_JOURNAL {
-            self.journal.pop_front();
-        }
-        self.journal.push_back((self.tiles_revision, cell));
-        self.tiles_revision = next_revision();
+        self.journal.record_edit(cell);
         let count = |map: &Self, t: u32| map.shape_of_raw(t).map_or(0, |s| s.segments().len());
         self.placed = self.placed - count(self, old) + count(self, raw);
         // Links read the active segments of the 3×3 block around a cell, and active segments
@@ -632,61 +527,5 @@ impl TileMap {
     #[must_use]
     pub fn active_segment(&self, r: SegmentRef) -> Option<ActiveSegment> {
         self.active_segments(r.cell).nth(r.index as usize)
-    }
-
-    /// Adds a temporary segment (a moving platform, a door) that every query sees until
-    /// [`clear_temporaries`](Self::clear_temporaries). Refused if non-finite or degenerate.
-    pub fn add_temporary(&mut self, segment: TemporarySegment) -> Result<(), MapError> {
-        self.temporaries.push(segment.validated()?);
-        self.temporaries_revision = next_revision();
-        Ok(())
-    }
-
-    /// Removes every temporary segment (call once per frame before submitting new ones).
-    pub fn clear_temporaries(&mut self) {
-        if !self.temporaries.is_empty() {
-            self.temporaries.clear();
-            self.temporaries_revision = next_revision();
-        }
-    }
-
-    /// Removes the temporary segments of one owner.
-    pub fn clear_temporaries_of(&mut self, owner: super::Owner) {
-        let before = self.temporaries.len();
-        self.temporaries.retain(|t| t.owner != owner);
-        if self.temporaries.len() != before {
-            self.temporaries_revision = next_revision();
-        }
-    }
-
-    /// Changes with every change of the temporary segments; equal for two maps only if
-    /// they hold the same temporaries (a map and its clones, until one changes them).
-    pub(crate) fn temporaries_revision(&self) -> u64 {
-        self.temporaries_revision
-    }
-
-    /// Changes with every edit of the tiles (not of the temporaries).
-    pub(crate) fn tiles_revision(&self) -> u64 {
-        self.tiles_revision
-    }
-
-    /// The cells edited since the map's tiles were at `revision` (a past
-    /// [`tiles_revision`](Self::tiles_revision)), oldest first, or `None` if the map
-    /// remembers no such state: another map's, or more than [`EDIT_JOURNAL`] edits ago.
-    pub(crate) fn edits_since(&self, revision: u64) -> Option<impl Iterator<Item = Cell> + '_> {
-        let from = if revision == self.tiles_revision {
-            self.journal.len()
-        } else {
-            self.journal
-                .iter()
-                .position(|&(before, _)| before == revision)?
-        };
-        Some(self.journal.range(from..).map(|&(_, c)| c))
-    }
-
-    /// The temporary segments, in the order they were added.
-    #[must_use]
-    pub fn temporaries(&self) -> &[TemporarySegment] {
-        &self.temporaries
     }
 }

@@ -1,7 +1,7 @@
 use glam::Vec2;
 use thiserror::Error;
 
-use super::SegmentFlags;
+use super::{MapError, SegmentFlags, TileMap};
 use crate::geometry::{Segment, in_range, unit_normal};
 
 /// Who submitted a temporary segment: any number the game uses for its objects.
@@ -79,5 +79,38 @@ impl TemporarySegment {
         // (Finite here, so `None` means the zero vector.)
         self.normal = unit_normal(self.normal).ok_or(TemporaryError::ZeroNormal(id))?;
         Ok(self)
+    }
+}
+
+impl TileMap {
+    /// Adds a temporary segment (a moving platform, a door) that every query sees until
+    /// [`clear_temporaries`](Self::clear_temporaries). Refused if non-finite or degenerate.
+    pub fn add_temporary(&mut self, segment: TemporarySegment) -> Result<(), MapError> {
+        self.temporaries.push(segment.validated()?);
+        self.journal.record_temporaries();
+        Ok(())
+    }
+
+    /// Removes every temporary segment (call once per frame before submitting new ones).
+    pub fn clear_temporaries(&mut self) {
+        if !self.temporaries.is_empty() {
+            self.temporaries.clear();
+            self.journal.record_temporaries();
+        }
+    }
+
+    /// Removes the temporary segments of one owner.
+    pub fn clear_temporaries_of(&mut self, owner: Owner) {
+        let before = self.temporaries.len();
+        self.temporaries.retain(|t| t.owner != owner);
+        if self.temporaries.len() != before {
+            self.journal.record_temporaries();
+        }
+    }
+
+    /// The temporary segments, in the order they were added.
+    #[must_use]
+    pub fn temporaries(&self) -> &[TemporarySegment] {
+        &self.temporaries
     }
 }

@@ -1,0 +1,148 @@
+//! Catching up with the map: [`NavGrid::sync`] reads the map's edit journal and recomputes
+//! the moves near each cell edited since the grid last caught up, and [`NavChange`] says
+//! what that changed, for the paths a game keeps.
+
+use glam::Vec2;
+
+use super::clearance::{ChangedMove, Clearance};
+use super::{NavError, NavGrid, lattice};
+use crate::geometry::Aabb;
+use crate::tiles::{JournalError, MapRevision, TileMap};
+
+/// What the map's edits changed in a [`NavGrid`] since it last caught up (from
+/// [`NavGrid::sync`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct NavChange {
+    /// The moves whose clearance changed, edit after edit.
+    moves: Vec<ChangedMove>,
+    /// Per edited cell, in the order of the edits: where its moves end in `moves`, and
+    /// their extent (map units; `None` when it changed no move).
+    edits: Vec<(usize, Option<Aabb>)>,
+    /// The extent of every changed move, or the whole map after a rebuild.
+    region: Option<Aabb>,
+    /// True when the grid was built anew: the map's journal no longer reached back to it.
+    rebuilt: bool,
+}
+
+impl NavChange {
+    /// No change.
+    fn none() -> Self {
+        Self {
+            moves: Vec::new(),
+            edits: Vec::new(),
+            region: None,
+            rebuilt: false,
+        }
+    }
+
+    /// True when no move's clearance changed (never after a rebuild).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.moves.is_empty() && !self.rebuilt
+    }
+
+    /// True when the grid was more edits behind the map than the map remembers
+    /// ([`JOURNAL_EDITS`](crate::JOURNAL_EDITS)) and was built anew: which moves changed is
+    /// not known, and every path counts as affected.
+    #[must_use]
+    pub fn is_rebuild(&self) -> bool {
+        self.rebuilt
+    }
+
+    /// The region whose moves changed, if any (the whole map after a rebuild).
+    #[must_use]
+    pub fn region(&self) -> Option<Aabb> {
+        self.region
+    }
+
+    /// Number of moves whose clearance changed (0 after a rebuild).
+    #[must_use]
+    pub fn changed_moves(&self) -> usize {
+        self.moves.len()
+    }
+
+    /// Records the moves one edited cell changed.
+    fn push_edit(&mut self, lattice: &lattice::Lattice, moves: Vec<ChangedMove>) {
+        let region = moves.iter().fold(None, |acc: Option<Aabb>, m| {
+            let p = lattice.position_of(m.node as usize);
+            let (di, dj) = lattice::MOVES[m.dir as usize];
+            let q = p + lattice.step * Vec2::new(di as f32, dj as f32);
+            let b = Aabb::from_corners(p, q);
+            Some(acc.map_or(b, |a| a.union(&b)))
+        });
+        self.moves.extend(moves);
+        self.edits.push((self.moves.len(), region));
+        if let Some(r) = region {
+            self.region = Some(self.region.map_or(r, |a| a.union(&r)));
+        }
+    }
+
+    /// True when some edit changed moves within `bounds` and opened or closed some move for
+    /// a circle needing `need` clearance steps (what [`Path::is_affected_by`] asks, edit by
+    /// edit, as if the grid had caught up after each).
+    ///
+    /// [`Path::is_affected_by`]: super::Path::is_affected_by
+    pub(super) fn affects(&self, bounds: &Aabb, need: u16) -> bool {
+        if self.rebuilt {
+            return true;
+        }
+        let mut start = 0;
+        self.edits.iter().any(|&(end, region)| {
+            let moves = &self.moves[start..end];
+            start = end;
+            region.is_some_and(|r| r.overlaps(bounds))
+                && moves
+                    .iter()
+                    .any(|m| (m.before >= need) != (m.after >= need))
+        })
+    }
+}
+
+impl NavGrid {
+    /// Catches up with `map`'s tile edits since the grid was built or last synced, and
+    /// says what changed. Call it once after editing the map, before querying: until then
+    /// queries refuse with [`NavError::Stale`]. Temporary segments never block paths, so
+    /// they need no sync.
+    ///
+    /// Each edited cell costs the same as on any map size: the grid recomputes the moves
+    /// near it (see `docs/path.md`), and is then what [`NavGrid::new`] would build. A grid
+    /// more edits behind than the map remembers ([`JOURNAL_EDITS`](crate::JOURNAL_EDITS))
+    /// is built anew, and the change says so ([`NavChange::is_rebuild`]).
+    ///
+    /// # Errors
+    /// [`NavError::OtherMap`] when `map` is not the map the grid was built for (nor a clone
+    /// of it at a state the grid has seen); the grid is left as it was.
+    pub fn sync(&mut self, map: &TileMap) -> Result<NavChange, NavError> {
+        let mut change = NavChange::none();
+        match map.changes_since(&self.revision) {
+            Err(JournalError::OtherMap) => return Err(NavError::OtherMap),
+            Err(JournalError::Overrun { .. }) => {
+                self.table = Clearance::build(map, self.max_radius, self.table.mask);
+                self.classes.clear();
+                change.rebuilt = true;
+                change.region = Some(map.bounds());
+            }
+            Ok(cells) if cells.len() == 0 => return Ok(change),
+            Ok(cells) => {
+                for cell in cells {
+                    let moves = self.table.update_cell(map, cell);
+                    for class in &mut self.classes {
+                        class.apply(&self.table, &moves);
+                    }
+                    change.push_edit(&self.table.lattice, moves);
+                }
+            }
+        }
+        self.revision = map.revision();
+        Ok(change)
+    }
+}
+
+/// Why navigation data caught up with `map` at `revision` cannot answer on it when the
+/// map's tiles have changed since: it is behind, or it is another map's.
+pub(super) fn behind(map: &TileMap, revision: &MapRevision) -> NavError {
+    match map.changes_since(revision) {
+        Err(JournalError::OtherMap) => NavError::OtherMap,
+        _ => NavError::Stale,
+    }
+}
