@@ -127,29 +127,26 @@ fn demo_platformer_on_a_level_without_a_goal_reports_its_right_end() {
         "#........\n#P.......\n#########\n",
     );
     let gif = scratch("no_goal.gif");
-    let out = tileslide(&[
-        "demo",
-        "platformer",
-        level.to_str().unwrap(),
-        "-o",
-        gif.to_str().unwrap(),
-    ]);
-    assert!(out.status.success(), "{}", stderr(&out));
-    let text = stdout(&out);
+    let run = |json: bool| {
+        let mut args = vec![
+            "demo",
+            "platformer",
+            level.to_str().unwrap(),
+            "-o",
+            gif.to_str().unwrap(),
+        ];
+        args.extend(json.then_some("--json"));
+        let out = tileslide(&args);
+        assert!(out.status.success(), "{}", stderr(&out));
+        stdout(&out)
+    };
+    let text = run(false);
     assert!(
         text.contains("  right end reached (the level has no goal)"),
         "{text}"
     );
     assert!(!text.contains("goal reached"), "{text}");
-    let out = tileslide(&[
-        "demo",
-        "platformer",
-        level.to_str().unwrap(),
-        "-o",
-        gif.to_str().unwrap(),
-        "--json",
-    ]);
-    let s: serde_json::Value = serde_json::from_str(stdout(&out).trim()).unwrap();
+    let s: serde_json::Value = serde_json::from_str(run(true).trim()).unwrap();
     assert_eq!(s["goal"], "right_end", "{s}");
     assert_eq!(s["reached"], true, "{s}");
 }
