@@ -7,8 +7,10 @@ use anyhow::{Result, bail};
 use clap::Subcommand;
 use indicatif::{ProgressBar, ProgressStyle};
 use tileslide_dungeon::{Game, STEPS_PER_SECOND, Summary};
-use tileslide_platformer::{Level, MAX_STEPS};
+use tileslide_platformer::{Goal, Level, MAX_STEPS};
 use tileslide_render::{Animation, Canvas, Picture, RenderOptions, YAxis};
+
+use crate::output;
 
 /// GIF frames at most (a frame every N steps is chosen to stay under it).
 const MAX_FRAMES: u64 = 240;
@@ -69,27 +71,20 @@ pub fn run(which: DemoCommand) -> Result<()> {
     }
 }
 
-/// Refuses an output path whose folder does not exist, before a game runs, not after.
-fn check_output_folder(output: &Path) -> Result<()> {
-    let folder = output
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    if !folder.is_dir() {
-        bail!(
-            "{}: cannot write there: the folder {} does not exist",
-            output.display(),
-            folder.display()
-        );
-    }
-    Ok(())
+/// Refuses an output name the demo cannot write, before a game runs, not after: the GIF
+/// `output` and the final frame's PNG beside it.
+fn check_outputs(output: &Path) -> Result<PathBuf> {
+    output::check(output, "-o", output::GIF)?;
+    let png = output.with_extension("png");
+    output::check(&png, "-o (the final frame beside the GIF)", output::PNG)?;
+    Ok(png)
 }
 
 fn dungeon(seed: u64, minutes: f64, output: &Path, json: bool) -> Result<()> {
     if !(minutes.is_finite() && (0.0..=600.0).contains(&minutes)) {
         bail!("--minutes {minutes}: must be between 0 and 600");
     }
-    check_output_folder(output)?;
+    let png = check_outputs(output)?;
     let steps = (minutes * 60.0 * f64::from(STEPS_PER_SECOND)).round() as u64;
     let every = steps.div_ceil(MAX_FRAMES).max(1);
     let mut game = Game::new(seed)?;
@@ -115,7 +110,6 @@ fn dungeon(seed: u64, minutes: f64, output: &Path, json: bool) -> Result<()> {
     bar.finish_and_clear();
     animation.push(&game.picture(true))?;
     animation.save_gif(output)?;
-    let png = output.with_extension("png");
     Canvas::new(game.map(), &options)?
         .render(&game.picture(false))
         .save_png(&png)?;
@@ -194,6 +188,7 @@ const REPLICA_FRAME_EVERY: u64 = 12;
 const PLATFORMER_WIDTH: f32 = 1024.0;
 
 fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: bool) -> Result<()> {
+    let png = check_outputs(output)?;
     let level = match (map, tileset) {
         (None, None) => Level::bundled()?,
         (None, Some(_)) => bail!("--tileset needs a Replica Island level (MAP.bin)"),
@@ -204,7 +199,6 @@ fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: b
         ),
         (Some(map), None) => Level::load_ascii(map)?,
     };
-    check_output_folder(output)?;
     let y_axis = if level.up.y > 0.0 {
         YAxis::Up
     } else {
@@ -233,7 +227,6 @@ fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: b
     game.draw(&mut picture);
     animation.push(&picture)?;
     animation.save_gif(output)?;
-    let png = output.with_extension("png");
     canvas.render(&picture).save_png(&png)?;
     let s = game.summary();
     let audit = &s.audit;
@@ -248,7 +241,11 @@ fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: b
             "hits_taken": s.hits_taken,
             "jumps": s.jumps,
             "steps_riding": s.steps_riding,
-            "reached_goal": s.reached_goal,
+            "goal": match s.goal {
+                Goal::Marked => "marked",
+                Goal::RightEnd => "right_end",
+            },
+            "reached": s.reached_goal,
             "gif": output.display().to_string(),
             "png": png.display().to_string(),
             "audit": {
@@ -275,12 +272,15 @@ fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: b
         s.jumps,
         s.steps_riding
     );
-    let goal = if s.reached_goal {
+    let reached = if s.reached_goal {
         "reached"
     } else {
         "not reached"
     };
-    println!("  goal {goal}");
+    match s.goal {
+        Goal::Marked => println!("  goal {reached}"),
+        Goal::RightEnd => println!("  right end {reached} (the level has no goal)"),
+    }
     println!(
         "  audit: steps inside solid {}, tunnels {}, max penetration {} cells",
         audit.inside_solid, audit.tunnels, audit.max_penetration

@@ -2,9 +2,10 @@
 
 use anyhow::Result;
 use serde_json::json;
+use tileslide::io::tiled::Flip;
 
 use crate::json::number;
-use crate::map_file::{self, MapArgs};
+use crate::map_file::{self, MapArgs, MapFormat};
 
 pub fn run(args: &MapArgs, as_json: bool) -> Result<()> {
     let (map, format) = map_file::load(args)?;
@@ -45,7 +46,22 @@ pub fn run(args: &MapArgs, as_json: bool) -> Result<()> {
         origin.x,
         origin.y
     );
-    let list: Vec<String> = counts.iter().map(|(id, n)| format!("{id}×{n}")).collect();
+    let tiled = matches!(format, MapFormat::TiledXml | MapFormat::TiledJson);
+    let mut entries: Vec<_> = counts.iter().collect();
+    if tiled {
+        // By gid, each followed by its flipped placements.
+        entries.sort_by_key(|(id, _)| (id.0 & Flip::GID_MASK, id.0));
+    }
+    let list: Vec<String> = entries
+        .into_iter()
+        .map(|(id, n)| {
+            if tiled {
+                format!("{}×{n}", tiled_id(id.0))
+            } else {
+                format!("{id}×{n}")
+            }
+        })
+        .collect();
     println!(
         "tiles:     {} distinct in {} of {} cells: {}",
         counts.len(),
@@ -53,6 +69,41 @@ pub fn run(args: &MapArgs, as_json: bool) -> Result<()> {
         map.width() as u64 * map.height() as u64,
         list.join(" ")
     );
+    if tiled && counts.keys().any(|id| !Flip::from_gid(id.0).is_none()) {
+        println!("           (Tiled gids; flipped h horizontally, v vertically, d diagonally)");
+    }
     println!("segments:  {placed} placed, {active} active after seam culling");
     Ok(())
+}
+
+/// A Tiled tile id as its gid and the letters of its flips (`2hv` for gid 2 turned 180°),
+/// not as the number with Tiled's flip bits set.
+fn tiled_id(id: u32) -> String {
+    let flip = Flip::from_gid(id);
+    let mut text = (id & Flip::GID_MASK).to_string();
+    for (on, letter) in [
+        (flip.horizontal, 'h'),
+        (flip.vertical, 'v'),
+        (flip.diagonal, 'd'),
+    ] {
+        if on {
+            text.push(letter);
+        }
+    }
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tiled_ids_show_the_gid_and_its_flips() {
+        assert_eq!(tiled_id(2), "2");
+        assert_eq!(tiled_id(2 | Flip::VERTICAL_BIT), "2v");
+        assert_eq!(
+            tiled_id(7 | Flip::HORIZONTAL_BIT | Flip::DIAGONAL_BIT),
+            "7hd"
+        );
+    }
 }

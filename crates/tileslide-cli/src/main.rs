@@ -1,25 +1,29 @@
 //! The `tileslide` command-line tool: inspect maps, cast rays, find paths, simulate crowds,
-//! draw maps, run the standard benchmarks.
+//! draw and bake maps, run the demo games; with the `peers` feature, run the standard
+//! benchmarks against tileslide's peers.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
+#[cfg(feature = "peers")]
 mod bench;
 mod demo;
 mod info;
 mod json;
 mod map_file;
+mod output;
 mod path;
 mod point_arg;
 mod raycast;
 mod render;
 mod simulate;
 
-/// Collision detection for tile-based 2D games: inspect maps, cast rays, draw, benchmark.
+/// Collision detection for tile-based 2D games: inspect, cast rays, find paths, simulate,
+/// draw and bake maps, run the demo games, benchmark.
 #[derive(Parser, Debug)]
-#[command(name = "tileslide", version, about)]
+#[command(name = "tileslide", version)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -129,14 +133,24 @@ enum Command {
     Bake {
         #[command(flatten)]
         map: map_file::MapArgs,
-        /// Where to write the baked map (conventionally `.tsm`).
-        #[arg(short, long, value_name = "OUT")]
+        /// Where to write the baked map (a `.tsm` name: the other commands tell a baked
+        /// map by it).
+        #[arg(short, long, value_name = "OUT.tsm")]
         output: PathBuf,
     },
     /// Run a standard benchmark scene of BENCHMARKS.md against the peers in the same run.
+    #[cfg(feature = "peers")]
     Bench {
         #[command(subcommand)]
         which: bench::BenchCommand,
+    },
+    /// Benchmarks against parry2d, rapier2d and the pathfinding crate: not in this build
+    /// (build with `--features peers`).
+    #[cfg(not(feature = "peers"))]
+    Bench {
+        /// The benchmark and its arguments (`rays`, `crowd`, `broad`, `paths`).
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
     },
     /// Run a demo game headless and write a GIF, a final PNG and a summary.
     Demo {
@@ -147,6 +161,7 @@ enum Command {
 
 /// `tileslide bake`: loads the map, writes it baked, and says what it wrote.
 fn bake(map: &map_file::MapArgs, output: &std::path::Path) -> anyhow::Result<()> {
+    output::check(output, "-o", output::BAKED)?;
     let (loaded, _) = map_file::load(map)?;
     let bytes = tileslide::io::baked::to_bytes(&loaded);
     std::fs::write(output, &bytes)
@@ -162,8 +177,37 @@ fn bake(map: &map_file::MapArgs, output: &std::path::Path) -> anyhow::Result<()>
     Ok(())
 }
 
+/// `tileslide bench ...` in a build without the peers: says how to get them.
+#[cfg(not(feature = "peers"))]
+fn bench_without_peers(args: &[String]) -> anyhow::Result<()> {
+    let shown = if args.is_empty() {
+        "rays".to_owned()
+    } else {
+        args.join(" ")
+    };
+    anyhow::bail!(
+        "`tileslide bench` measures tileslide against parry2d, rapier2d and the pathfinding crate in the same run, and this build leaves them out; build it with the `peers` feature:\n  cargo run --release -p tileslide-cli --features peers -- bench {shown}"
+    )
+}
+
+/// The command line, where every option takes a negative number as its value (`--cell -1`
+/// reaches the check that refuses it, `--from -1.5,2` is a point), not as a flag.
+fn command() -> clap::Command {
+    fn negatives_are_values(command: clap::Command) -> clap::Command {
+        command
+            .allow_negative_numbers(true)
+            .mut_subcommands(negatives_are_values)
+    }
+    negatives_are_values(Cli::command())
+}
+
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    // Usage errors (an unknown option, a missing argument, a value of the wrong kind) are
+    // clap's, with exit status 2; errors found while running exit with 1.
+    let cli = match Cli::from_arg_matches(&command().get_matches()) {
+        Ok(cli) => cli,
+        Err(e) => e.format(&mut command()).exit(),
+    };
     let result = match cli.command {
         Command::Info { map, json } => info::run(&map, json),
         Command::Raycast {
@@ -203,13 +247,16 @@ fn main() -> ExitCode {
             output,
         } => render::run(&map, scale, output, y_up),
         Command::Bake { map, output } => bake(&map, &output),
+        #[cfg(feature = "peers")]
         Command::Bench { which } => bench::run(which),
+        #[cfg(not(feature = "peers"))]
+        Command::Bench { args } => bench_without_peers(&args),
         Command::Demo { which } => demo::run(which),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            eprintln!("error: {}", output::message(&e));
             ExitCode::FAILURE
         }
     }

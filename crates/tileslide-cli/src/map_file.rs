@@ -7,7 +7,8 @@ use anyhow::{Result, bail};
 use clap::Args;
 use tileslide::TileMap;
 use tileslide::io::tiled::{self, TiledOptions};
-use tileslide::io::{ascii, baked, replica};
+use tileslide::io::{LoadErrorKind, ascii, baked, replica};
+use tileslide_platformer::{Level, MARKERS};
 
 /// The map arguments shared by every command that reads a map.
 #[derive(Args, Debug)]
@@ -47,6 +48,8 @@ pub struct TiledLimits {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MapFormat {
     Ascii,
+    /// An ASCII map with the platformer demo's markers (`examples/maps/platformer.txt`).
+    PlatformerLevel,
     ReplicaIsland,
     Baked,
     TiledXml,
@@ -57,6 +60,7 @@ impl MapFormat {
     pub fn name(self) -> &'static str {
         match self {
             MapFormat::Ascii => "ascii",
+            MapFormat::PlatformerLevel => "ascii-platformer",
             MapFormat::ReplicaIsland => "replica-island",
             MapFormat::Baked => "baked",
             MapFormat::TiledXml => "tiled-tmx",
@@ -88,7 +92,13 @@ impl MapFormat {
 
 /// Loads the map the arguments name.
 pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
-    let format = MapFormat::of(&args.map)?;
+    if args.map.is_dir() {
+        bail!(
+            "{}: is a folder; give a map file (a .txt ASCII map, a .bin Replica Island level, a .tsm baked map or a .tmx/.tmj/.json Tiled map)",
+            args.map.display()
+        );
+    }
+    let mut format = MapFormat::of(&args.map)?;
     let tiled = matches!(format, MapFormat::TiledXml | MapFormat::TiledJson);
     if args.layer.is_some() && !tiled {
         bail!(
@@ -103,14 +113,24 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
         );
     }
     let map = match format {
-        MapFormat::Ascii => {
+        MapFormat::Ascii | MapFormat::PlatformerLevel => {
             if args.tileset.is_some() {
                 bail!(
                     "{}: an ASCII map uses the built-in tile set; drop --tileset",
                     args.map.display()
                 );
             }
-            ascii::load(&args.map, args.cell.unwrap_or(1.0))?
+            match ascii::load(&args.map, args.cell.unwrap_or(1.0)) {
+                Ok(map) => map,
+                Err(e) => match e.kind {
+                    // The platformer demo's levels are ASCII maps with markers on top.
+                    LoadErrorKind::UnknownCharacter(c) if MARKERS.contains(c) => {
+                        format = MapFormat::PlatformerLevel;
+                        platformer_level(args)?
+                    }
+                    _ => return Err(e.into()),
+                },
+            }
         }
         MapFormat::ReplicaIsland => {
             if args.cell.is_some() {
@@ -157,4 +177,16 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
         }
     };
     Ok((map, format))
+}
+
+/// The map of a platformer level (an ASCII map with the demo's markers `P`, `G`, `o`, `E`,
+/// `M`, each an empty cell), whose cells are of size 1.
+fn platformer_level(args: &MapArgs) -> Result<TileMap> {
+    if args.cell.is_some_and(|c| c != 1.0) {
+        bail!(
+            "{}: a platformer level (an ASCII map with the demo's markers {MARKERS}) has cells of size 1; drop --cell",
+            args.map.display()
+        );
+    }
+    Ok(Level::load_ascii(&args.map)?.map)
 }

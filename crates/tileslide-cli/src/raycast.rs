@@ -70,6 +70,7 @@ fn hit_json(hit: Option<&RayHit>) -> serde_json::Value {
             let mut v = json!({
                 "hit": true, "t": number(h.t), "x": number(h.point.x), "y": number(h.point.y),
                 "nx": number(h.normal.x), "ny": number(h.normal.y),
+                "one_way": h.flags.contains(SegmentFlags::ONE_WAY),
             });
             if let (Some(cell), Some(tile)) = (h.cell(), h.tile()) {
                 v["cell"] = json!([cell.col, cell.row]);

@@ -8,6 +8,7 @@ use tileslide::TileMap;
 use tileslide_render::{Canvas, Picture, RenderOptions, YAxis};
 
 use crate::map_file::{self, MapArgs, MapFormat};
+use crate::output;
 
 /// The `--scale` of `render` and `simulate --gif`, checked: pixels per cell.
 pub fn check_scale(scale: f32) -> Result<f32> {
@@ -39,11 +40,12 @@ pub fn canvas(
 
 pub fn run(args: &MapArgs, scale: f32, output: Option<PathBuf>, y_up: bool) -> Result<()> {
     let scale = check_scale(scale)?;
+    let output = output.unwrap_or_else(|| default_output(&args.map));
+    output::check(&output, "-o", output::PNG)?;
     let (map, format) = map_file::load(args)?;
     let canvas = canvas(&map, format, &args.map, scale, y_up)?;
     let mut picture = Picture::new();
     picture.temporaries(&map);
-    let output = output.unwrap_or_else(|| default_output(&args.map));
     let image = canvas.render(&picture);
     image.save_png(&output)?;
     println!(

@@ -13,6 +13,7 @@ use tileslide_render::{Animation, Canvas, Picture};
 
 use crate::json::number;
 use crate::map_file::{self, MapFormat};
+use crate::output;
 use crate::render;
 
 /// Most steps a scene may ask for (a typo of a few zeros should not run for days).
@@ -79,6 +80,7 @@ pub fn run(
     gif: Option<&GifArgs>,
 ) -> Result<()> {
     if let Some(gif) = gif {
+        output::check(&gif.path, "--gif", output::GIF)?;
         render::check_scale(gif.scale)?;
         if gif.every == 0 {
             bail!("--every 0: steps between frames must be at least 1");
@@ -110,6 +112,7 @@ pub fn run(
         gap,
         ..tileslide::ResolveConfig::default()
     })?;
+    let skin = 1e-4 * map.cell_size().min_element();
     let mut crowd: Vec<(BodyHandle, Vec2)> = Vec::with_capacity(scene.bodies.len());
     for (i, b) in scene.bodies.iter().enumerate() {
         let at = |field: &str| format!("{}: bodies[{i}].{field}", scene_path.display());
@@ -117,6 +120,17 @@ pub fn run(
         let handle = bodies
             .add(BodyDesc::new(Vec2::new(b.x, b.y), shape))
             .with_context(|| at("x/y"))?;
+        // The resolver keeps bodies out of walls; one that starts in a wall has no answer.
+        let depth = penetration(&map, &Circle::new(Vec2::new(b.x, b.y), b.r));
+        if depth > skin {
+            bail!(
+                "{}: the circle at ({}, {}) of radius {} starts inside a wall (by {depth})",
+                at("x/y"),
+                b.x,
+                b.y,
+                b.r
+            );
+        }
         let velocity = Vec2::new(b.vx, b.vy);
         if !velocity.is_finite() {
             bail!(
@@ -156,7 +170,6 @@ pub fn run(
             Ok(Circle::new(body.position(), body.shape().bounding_radius()))
         })
         .collect::<Result<_>>()?;
-    let skin = 1e-4 * map.cell_size().min_element();
     let audit = audit(&map, &circles, skin);
     let ms_per_step = if steps == 0 {
         0.0
@@ -310,6 +323,24 @@ fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<(TileMap, MapFormat)
     }
 }
 
+/// How deep `c` is in a wall: how much closer its centre is than its radius to a solid
+/// (not one-way) segment it is in front of, or its radius when its centre is in solid; 0
+/// when it is clear.
+fn penetration(map: &TileMap, c: &Circle) -> f32 {
+    let mut worst = 0.0f32;
+    for s in map.segments_overlapping_circle(c) {
+        if s.flags.contains(SegmentFlags::ONE_WAY) || (c.center - s.segment.a).dot(s.normal) < 0.0 {
+            continue;
+        }
+        let depth = c.radius - s.segment.distance_squared_to(c.center).sqrt();
+        worst = worst.max(depth);
+    }
+    if map.is_point_solid(c.center) {
+        worst = worst.max(c.radius);
+    }
+    worst
+}
+
 /// Pairs overlapping by more than `skin`, and circles whose centre is in front of a solid
 /// (not one-way) segment and closer to it than the radius by more than `skin`.
 pub fn audit(map: &TileMap, circles: &[Circle], skin: f32) -> Audit {
@@ -333,19 +364,7 @@ pub fn audit(map: &TileMap, circles: &[Circle], skin: f32) -> Audit {
         }
     }
     for c in circles {
-        let mut worst = 0.0f32;
-        for s in map.segments_overlapping_circle(c) {
-            if s.flags.contains(SegmentFlags::ONE_WAY)
-                || (c.center - s.segment.a).dot(s.normal) < 0.0
-            {
-                continue;
-            }
-            let depth = c.radius - s.segment.distance_squared_to(c.center).sqrt();
-            worst = worst.max(depth);
-        }
-        if map.is_point_solid(c.center) {
-            worst = worst.max(c.radius);
-        }
+        let worst = penetration(map, c);
         audit.max_penetration = audit.max_penetration.max(worst);
         if worst > skin {
             audit.wall_penetrations += 1;

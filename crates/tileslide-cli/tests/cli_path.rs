@@ -1,4 +1,4 @@
-//! `tileslide path` and `tileslide bench paths` as a user runs them: paths in text and JSON
+//! `tileslide path` as a user runs it: paths in text and JSON
 //! on ASCII and Tiled maps, no path, and arguments refused with errors that name them.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -240,48 +240,4 @@ fn bad_arguments_are_errors_that_name_them() {
     ]);
     assert_eq!(o.status.code(), Some(1));
     assert!(stderr(&o).contains("no-such-map.txt"), "{}", stderr(&o));
-}
-
-#[test]
-fn bench_paths_json_has_both_contenders_finding_the_same_queries() {
-    let o = tileslide(&["bench", "paths", "--queries", "20", "--json"]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
-    assert_eq!(v["scene"], "paths");
-    assert_eq!(v["queries"], 20);
-    let results = v["results"].as_array().unwrap();
-    assert_eq!(results.len(), 4, "{v}");
-    for radius in [0.3, 0.8] {
-        let of = |name: &str| {
-            results
-                .iter()
-                .find(|r| r["radius"].as_f64() == Some(radius) && r["name"] == name)
-                .unwrap_or_else(|| panic!("no {name} at radius {radius}: {v}"))
-        };
-        let (ours, peer) = (of("tileslide"), of("pathfinding-astar"));
-        for r in [ours, peer] {
-            let keys: Vec<&str> = r.as_object().unwrap().keys().map(String::as_str).collect();
-            assert_eq!(
-                keys,
-                [
-                    "radius",
-                    "name",
-                    "ms_total",
-                    "us_per_query",
-                    "found",
-                    "mean_length",
-                    "mismatches"
-                ]
-            );
-            assert_eq!(r["mismatches"], 0, "{r}");
-            assert!(r["ms_total"].as_f64().unwrap() > 0.0, "{r}");
-        }
-        assert_eq!(ours["found"], peer["found"], "radius {radius}");
-        assert!(ours["found"].as_u64().unwrap() > 0, "{ours}");
-        // Smoothing makes tileslide's paths no longer than the lattice paths.
-        assert!(
-            ours["mean_length"].as_f64().unwrap() <= peer["mean_length"].as_f64().unwrap() + 1e-3,
-            "{ours} {peer}"
-        );
-    }
 }

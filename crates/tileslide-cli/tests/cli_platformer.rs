@@ -58,7 +58,8 @@ fn demo_platformer_json_summary() {
     let out = tileslide(&["demo", "platformer", "-o", gif.to_str().unwrap(), "--json"]);
     assert!(out.status.success(), "{}", stderr(&out));
     let s: serde_json::Value = serde_json::from_str(stdout(&out).trim()).unwrap();
-    assert_eq!(s["reached_goal"], true);
+    assert_eq!(s["goal"], "marked");
+    assert_eq!(s["reached"], true);
     assert_eq!(s["coins_collected"], s["coins_total"]);
     assert_eq!(s["enemies_defeated"], 2);
     assert_eq!(s["audit"]["inside_solid"], 0);
@@ -90,7 +91,9 @@ fn demo_platformer_crosses_replica_island_levels_without_entering_solid() {
         assert!(out.status.success(), "{name}: {}", stderr(&out));
         let s: serde_json::Value = serde_json::from_str(stdout(&out).trim()).unwrap();
         assert_eq!(s["level"], format!("{name}.bin"));
-        assert_eq!(s["reached_goal"], true, "{s}");
+        // A Replica Island level has no goal: the run ends at its right end.
+        assert_eq!(s["goal"], "right_end", "{s}");
+        assert_eq!(s["reached"], true, "{s}");
         assert_eq!(s["audit"]["inside_solid"], 0, "{s}");
         assert_eq!(s["audit"]["tunnels"], 0, "{s}");
         let (_, frames) = gif_frames(&gif);
@@ -114,4 +117,36 @@ fn demo_platformer_refuses_a_missing_output_folder() {
     let out = tileslide(&["demo", "platformer", "-o", "no/such/folder/p.gif"]);
     assert!(!out.status.success());
     assert!(stderr(&out).contains("does not exist"), "{}", stderr(&out));
+}
+
+#[test]
+fn demo_platformer_on_a_level_without_a_goal_reports_its_right_end() {
+    let level = support::scratch_in(
+        "cli_platformer",
+        "no_goal.txt",
+        "#........\n#P.......\n#########\n",
+    );
+    let gif = scratch("no_goal.gif");
+    let run = |json: bool| {
+        let mut args = vec![
+            "demo",
+            "platformer",
+            level.to_str().unwrap(),
+            "-o",
+            gif.to_str().unwrap(),
+        ];
+        args.extend(json.then_some("--json"));
+        let out = tileslide(&args);
+        assert!(out.status.success(), "{}", stderr(&out));
+        stdout(&out)
+    };
+    let text = run(false);
+    assert!(
+        text.contains("  right end reached (the level has no goal)"),
+        "{text}"
+    );
+    assert!(!text.contains("goal reached"), "{text}");
+    let s: serde_json::Value = serde_json::from_str(run(true).trim()).unwrap();
+    assert_eq!(s["goal"], "right_end", "{s}");
+    assert_eq!(s["reached"], true, "{s}");
 }

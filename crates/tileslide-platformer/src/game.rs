@@ -213,6 +213,7 @@ impl Game {
             .collect::<Vec<_>>();
         let summary = Summary {
             level: level.name.clone(),
+            goal: level.goal_kind,
             coins_total: coins.len(),
             enemies_total: enemies.len(),
             end: player.body.position,

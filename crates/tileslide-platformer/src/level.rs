@@ -45,6 +45,21 @@ pub enum LevelError {
     EndlessPlatform(PathBuf),
 }
 
+/// The characters an ASCII level uses on top of the ASCII map format: `P` start, `G` goal,
+/// `o` coin, `E` enemy, `M` moving platform. Each stands for an empty cell.
+pub const MARKERS: &str = "PGoEM";
+
+/// What ends a run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Goal {
+    /// The level's goal: its `G` cell.
+    #[default]
+    Marked,
+    /// The level has no goal (an ASCII level without `G`, every Replica Island level): the
+    /// run ends when the player reaches its last three columns.
+    RightEnd,
+}
+
 /// A moving platform's track: its top segment's left end at rest, its width, and how far
 /// right it travels before it turns back.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -73,6 +88,8 @@ pub struct Level {
     pub start: Vec2,
     /// The goal: reaching it ends the run.
     pub goal: Aabb,
+    /// Whether `goal` is the level's own or its right end.
+    pub goal_kind: Goal,
     /// Coin centres.
     pub coins: Vec<Vec2>,
     /// Enemies' feet at the start.
@@ -131,7 +148,7 @@ impl Level {
                     },
                     _ => {}
                 }
-                clean.push(if "PGoEM".contains(c) { '.' } else { c });
+                clean.push(if MARKERS.contains(c) { '.' } else { c });
             }
             clean.push('\n');
             row += 1;
@@ -142,7 +159,12 @@ impl Level {
             None => None,
             Some((row, first, end)) => Some(track(&map, row, first, end, path)?),
         };
-        // Without a `G`, the goal is the last column (reach the right end).
+        // Without a `G`, the goal is the last three columns (reach the right end).
+        let goal_kind = if goal.is_some() {
+            Goal::Marked
+        } else {
+            Goal::RightEnd
+        };
         let goal = goal.map_or_else(
             || right_end(&map),
             |corner| Aabb::from_corners(corner, corner + Vec2::ONE),
@@ -154,6 +176,7 @@ impl Level {
             scale: 1.0,
             start: start + Vec2::new(0.5, 1.0),
             goal,
+            goal_kind,
             coins,
             enemies,
             platform,
@@ -183,6 +206,7 @@ impl Level {
             // The game puts its objects' feet a pixel above the bottom of the spawn cell.
             start: corner + Vec2::new(0.5 * size.x, 1.0),
             goal,
+            goal_kind: Goal::RightEnd,
             coins: Vec::new(),
             enemies: Vec::new(),
             platform: None,
@@ -307,6 +331,8 @@ mod tests {
     #[test]
     fn without_a_goal_the_goal_is_the_right_end() {
         let level = Level::parse_ascii("#P.....\n#######", "nogoal.txt").unwrap();
+        assert_eq!(level.goal_kind, Goal::RightEnd);
+        assert_eq!(Level::bundled().unwrap().goal_kind, Goal::Marked);
         assert_eq!(level.goal.min.x, 4.0);
         assert_eq!(level.goal.max.x, 7.0);
     }

@@ -40,7 +40,7 @@ pub use game::{
     STEPS_PER_SECOND,
 };
 pub use hits::{COIN_RADIUS, ENEMY_HALF, PLAYER_HALF, STOMP};
-pub use level::{BUNDLED_LEVEL, Level, LevelError, PlatformTrack};
+pub use level::{BUNDLED_LEVEL, Goal, Level, LevelError, MARKERS, PlatformTrack};
 pub use picture::{COIN_COLOR, PLAYER_COLOR};
 pub use replica_spawn::player_spawn;
 pub use script::{Input, next_input};

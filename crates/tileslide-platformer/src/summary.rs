@@ -3,6 +3,7 @@
 use tileslide::Vec2;
 
 use crate::audit::Audit;
+use crate::level::Goal;
 
 /// What a run did: progress, pickups, fights and the collision audit.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -25,7 +26,9 @@ pub struct Summary {
     pub jumps: u32,
     /// Steps the player rode the moving platform.
     pub steps_riding: u64,
-    /// Whether the player reached the goal.
+    /// What ends the run: the level's goal, or its right end when it has none.
+    pub goal: Goal,
+    /// Whether the player reached it (`goal`).
     pub reached_goal: bool,
     /// The player's centre at the end.
     pub end: Vec2,

@@ -166,6 +166,11 @@ fn header_errors_name_the_field_and_offset() {
     let mut magic = good.clone();
     magic[3] = b'X';
     assert!(error(&magic).0.contains("not a tileslide baked map"));
+    assert!(
+        error(&magic).0.contains(r#"`magic` is b"TSLXMAP\x1a""#),
+        "{}",
+        error(&magic).0
+    );
     assert_eq!(error(&magic).1, 0);
     let mut version = good.clone();
     version[8] = 1;
@@ -190,10 +195,13 @@ fn header_errors_name_the_field_and_offset() {
     flipped[last] ^= 0x40;
     let (text, at) = error(&flipped);
     assert!(
-        text.contains("checksum") && text.contains("corrupt"),
+        text.contains("`checksum` is 0x")
+            && text.contains("CRC-32 is 0x")
+            && text.contains("corrupt"),
         "{text}"
     );
-    assert_eq!(at, 32);
+    assert!(!text.contains("out of range"), "{text}");
+    assert_eq!(at, 24);
 }
 
 #[test]

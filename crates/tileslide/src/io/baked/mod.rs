@@ -37,7 +37,7 @@
 //! let bytes = baked::to_bytes(&map);
 //! let back = baked::parse(&bytes, "doc.tsm")?;
 //! assert_eq!(back.active_segment_count(), map.active_segment_count());
-//! // A flipped byte is caught by the checksum, with the offset of the payload.
+//! // A flipped byte is caught by the checksum (the error points at its field, byte 24).
 //! let mut bad = bytes.clone();
 //! bad[40] ^= 1;
 //! assert!(baked::parse(&bad, "bad.tsm").unwrap_err().to_string().contains("checksum"));
@@ -140,14 +140,14 @@ pub fn parse(data: &[u8], path: impl AsRef<Path>) -> Result<TileMap, LoadError> 
     let mut r = ByteReader::new(data, path);
     let magic = r.take(MAGIC.len(), "magic")?;
     if magic != MAGIC {
+        // The bytes as text (`b"PK\x03\x04..."`), not as a signed number.
         return Err(r.error_at(
             0,
-            LoadErrorKind::BadSignature {
-                field: "magic",
-                expected: i64::from_le_bytes(MAGIC),
-                found: i64::from_le_bytes(magic.try_into().unwrap_or([0; 8])),
-                format: "tileslide baked map",
-            },
+            LoadErrorKind::Invalid(format!(
+                "`magic` is b\"{}\", expected b\"{}\": not a tileslide baked map file",
+                magic.escape_ascii(),
+                MAGIC.escape_ascii()
+            )),
         ));
     }
     let version = r.u32("version")?;
@@ -187,13 +187,12 @@ pub fn parse(data: &[u8], path: impl AsRef<Path>) -> Result<TileMap, LoadError> 
     let payload = &data[HEADER_LEN..];
     let found = u64::from(crc32fast::hash(payload));
     if found != checksum {
+        // At the checksum field, both values in hex.
         return Err(r.error_at(
-            HEADER_LEN as u64,
-            LoadErrorKind::BadSize {
-                field: "checksum",
-                value: checksum as i64,
-                reason: format!("the payload's CRC-32 is {found:#010x}: the file is corrupt"),
-            },
+            24,
+            LoadErrorKind::Invalid(format!(
+                "`checksum` is {checksum:#010x}, but the payload's CRC-32 is {found:#010x}: the file is corrupt"
+            )),
         ));
     }
     let tile_size = Vec2::new(r.f32("tile_width")?, r.f32("tile_height")?);
