@@ -8,8 +8,11 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+mod generators;
+
 use std::sync::Arc;
 
+use generators::{tile_chars, tile_map};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
@@ -106,7 +109,7 @@ fn required(ray: &Ray, segment: &Segment, eps: f64) -> bool {
 }
 
 /// Every hit of a brute-force test of every active and temporary segment that the filter
-/// lets the ray hit (the filter rules of `cast_ray`'s documentation, restated), by
+/// lets the ray hit (`RayFilter::accepts`), by
 /// `cast_ray_segment` for an ordinary ray and by the `f64` kernel for any other.
 fn brute_hits(map: &TileMap, ray: &Ray, filter: &RayFilter) -> Vec<BruteHit> {
     let wide = !ordinary(map, ray);
@@ -114,11 +117,6 @@ fn brute_hits(map: &TileMap, ray: &Ray, filter: &RayFilter) -> Vec<BruteHit> {
         f64::EPSILON
     } else {
         f64::from(f32::EPSILON)
-    };
-    let faces_ok = |normal: Vec2| match filter.faces {
-        Faces::Front => normal.dot(ray.delta) < 0.0,
-        Faces::Both => true,
-        Faces::Against(dir) => normal.dot(dir) < 0.0,
     };
     let mut hits = Vec::new();
     let mut consider = |key: Key, segment: &Segment| {
@@ -136,17 +134,14 @@ fn brute_hits(map: &TileMap, ray: &Ray, filter: &RayFilter) -> Vec<BruteHit> {
         for col in 0..map.width() {
             let cell = Cell::new(col, row);
             for (i, s) in map.active_segments(cell).enumerate() {
-                if s.flags.intersects(filter.mask) && faces_ok(s.normal) {
+                if filter.accepts(ray.delta, s.normal, s.flags, None) {
                     consider(Key::Tile(cell, i as u32), &s.segment);
                 }
             }
         }
     }
     for (i, t) in map.temporaries().iter().enumerate() {
-        if t.flags.intersects(filter.mask)
-            && filter.exclude_owner != Some(t.owner)
-            && faces_ok(t.normal)
-        {
+        if filter.accepts(ray.delta, t.normal, t.flags, Some(t.owner)) {
             consider(Key::Temporary(i), &t.segment);
         }
     }
@@ -215,18 +210,6 @@ fn check(map: &TileMap, ray: Ray, filter: &RayFilter) -> Result<(), TestCaseErro
         );
     }
     Ok(())
-}
-
-fn map_of(rows: &str, cell: f32, origin: Vec2) -> TileMap {
-    let lines: Vec<&str> = rows.lines().collect();
-    let (width, height) = (lines[0].len() as u32, lines.len() as u32);
-    let set = Arc::new(ascii::tile_set(cell).unwrap());
-    let tiles: Vec<_> = lines
-        .iter()
-        .flat_map(|l| l.chars())
-        .map(|c| ascii::tile_for_char(c).unwrap())
-        .collect();
-    TileMap::from_tiles(set, width, height, origin, &tiles).unwrap()
 }
 
 #[test]
@@ -322,28 +305,18 @@ fn ray_from_millions_of_cells_away_agrees_between_casts() {
     }
 }
 
-/// `chars` as the rows of a map `width` cells wide.
-fn rows_of(chars: &[char], width: u32) -> String {
-    let rows: Vec<String> = chars
-        .chunks(width as usize)
-        .map(|r| r.iter().collect())
-        .collect();
-    rows.join("\n")
-}
-
 /// Small random maps, on cell sizes and origins whose lattice points are exact.
 fn small_map() -> impl Strategy<Value = TileMap> {
     (1u32..=8, 1u32..=8, 0usize..4, 0usize..3, any::<bool>()).prop_flat_map(
         |(w, h, cell, origin, temporary)| {
             let cell = [1.0f32, 0.5, 32.0, 0.25][cell];
             let origin = [v(0.0, 0.0), v(-3.5, 12.25), v(1000.0, -64.0)][origin];
-            proptest::collection::vec(
-                prop_oneof![4 => Just('.'), 3 => Just('#'), 1 => Just('/'), 1 => Just('\\'),
-                    1 => Just('=')],
+            tile_chars(
+                &[(4, '.'), (3, '#'), (1, '/'), (1, '\\'), (1, '=')],
                 (w * h) as usize,
             )
             .prop_map(move |chars| {
-                let mut map = map_of(&rows_of(&chars, w), cell, origin);
+                let mut map = tile_map(w, &chars, cell, origin);
                 if temporary {
                     map.add_temporary(TemporarySegment {
                         segment: Segment::new(origin, origin + v(3.0, 2.0) * cell),
@@ -582,11 +555,8 @@ fn inexact_map() -> impl Strategy<Value = TileMap> {
     (2u32..=8, 2u32..=8, 0usize..3, 0usize..2).prop_flat_map(|(w, h, cell, origin)| {
         let cell = [1.0f32, 0.5, 0.25][cell];
         let origin = [v(0.1, 0.1), v(-7.3, 2.9)][origin];
-        proptest::collection::vec(
-            prop_oneof![3 => Just('.'), 2 => Just('#'), 2 => Just('/'), 2 => Just('\\')],
-            (w * h) as usize,
-        )
-        .prop_map(move |chars| map_of(&rows_of(&chars, w), cell, origin))
+        tile_chars(&[(3, '.'), (2, '#'), (2, '/'), (2, '\\')], (w * h) as usize)
+            .prop_map(move |chars| tile_map(w, &chars, cell, origin))
     })
 }
 
