@@ -15,22 +15,7 @@ use glam::Vec2;
 use tileslide::{
     Bodies, BodyDesc, BodyShape, Cell, Owner, Segment, SegmentFlags, TemporarySegment,
 };
-use tileslide_scenes::{CROWD_RADIUS, audit_crowd, dungeon256, scene_crowd};
-
-/// FNV-1a (64-bit) over the bits of every final position, x then y, body by body (the
-/// golden-hash test's checksum).
-fn checksum(positions: &[Vec2]) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for bits in positions
-        .iter()
-        .flat_map(|p| [p.x.to_bits(), p.y.to_bits()])
-    {
-        for byte in bits.to_le_bytes() {
-            h = (h ^ u64::from(byte)).wrapping_mul(0x0000_0100_0000_01b3);
-        }
-    }
-    h
-}
+use tileslide_scenes::{CROWD_RADIUS, audit_crowd, dungeon256, positions_hash, scene_crowd};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
@@ -137,6 +122,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let audit = audit_crowd(&grid, &positions, CROWD_RADIUS);
         println!("audit: {audit:?}");
     }
-    println!("checksum of the positions: {:016x}", checksum(&positions));
+    println!(
+        "checksum of the positions: {:016x}",
+        positions_hash(&positions)
+    );
     Ok(())
 }

@@ -9,35 +9,30 @@
 use std::time::Instant;
 
 use tileslide::{Ray, RayFilter, RayHit, SegmentSource};
-use tileslide_scenes::{Scene, scene_rays};
+use tileslide_scenes::{Fnv1a, Scene, scene_rays};
 
 /// FNV-1a (64-bit) over the bits of every hit, and over a marker for every miss.
 fn checksum(hits: impl Iterator<Item = Option<RayHit>>) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    let mut eat = |word: u32| {
-        for byte in word.to_le_bytes() {
-            h = (h ^ u64::from(byte)).wrapping_mul(0x0000_0100_0000_01b3);
-        }
-    };
+    let mut h = Fnv1a::new();
     for hit in hits {
         let Some(hit) = hit else {
-            eat(u32::MAX);
+            h.write_u32(u32::MAX);
             continue;
         };
         for f in [hit.t, hit.point.x, hit.point.y, hit.normal.x, hit.normal.y] {
-            eat(f.to_bits());
+            h.write_f32(f);
         }
-        eat(hit.flags.0);
+        h.write_u32(hit.flags.0);
         match hit.source {
             SegmentSource::Tile { segment, tile } => {
                 for word in [segment.cell.col, segment.cell.row, segment.index, tile.0] {
-                    eat(word);
+                    h.write_u32(word);
                 }
             }
-            SegmentSource::Temporary { index, .. } => eat(index as u32),
+            SegmentSource::Temporary { index, .. } => h.write_u32(index as u32),
         }
     }
-    h
+    h.finish()
 }
 
 /// Rays per `cast_rays` call: a frame's worth, so that the answers stay in cache.

@@ -2,6 +2,6 @@
 
 pub mod broad;
 pub mod crowd;
+pub mod parry_vectors;
 pub mod paths;
-pub mod peers;
 pub mod rays;

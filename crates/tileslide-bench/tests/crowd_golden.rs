@@ -6,23 +6,11 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use tileslide_bench::crowd::{CrowdContender, TileslideCrowd, run_crowd};
-use tileslide_scenes::{CROWD_RADIUS, dungeon256, scene_crowd};
+use tileslide_scenes::{CROWD_RADIUS, dungeon256, positions_hash, scene_crowd};
 
-/// FNV-1a 64 of the final positions' bits, x then y, body by body.
+/// [`positions_hash`] of the final positions: FNV-1a 64 of their bits, x then y, body by
+/// body.
 const GOLDEN: u64 = 0x8584_2b31_c9d3_e773;
-
-fn fnv(positions: &[glam::Vec2]) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for p in positions {
-        for bits in [p.x.to_bits(), p.y.to_bits()] {
-            for byte in bits.to_le_bytes() {
-                h ^= u64::from(byte);
-                h = h.wrapping_mul(0x0100_0000_01b3);
-            }
-        }
-    }
-    h
-}
 
 #[test]
 fn the_crowd_is_clean_and_bit_identical_to_the_golden_run() {
@@ -40,13 +28,13 @@ fn the_crowd_is_clean_and_bit_identical_to_the_golden_run() {
         "the crowd hardly moved: {}",
         result.mean_travel
     );
-    let hash = fnv(&crowd.positions());
+    let hash = positions_hash(&crowd.positions());
     // A second run from scratch gives the same bits.
     let mut again = TileslideCrowd::new(&grid, &bodies, CROWD_RADIUS).unwrap();
     for _ in 0..40 {
         again.step();
     }
-    assert_eq!(fnv(&again.positions()), hash);
+    assert_eq!(positions_hash(&again.positions()), hash);
     assert_eq!(
         hash, GOLDEN,
         "positions changed: golden hash is now {hash:#018x}"

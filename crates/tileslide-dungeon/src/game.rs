@@ -16,7 +16,7 @@ use crate::layout::Layout;
 use crate::level::Level;
 use crate::spawn::Ids;
 use crate::{combat, treasure};
-use tileslide_scenes::SplitMix64;
+use tileslide_scenes::{Fnv1a, SplitMix64};
 
 /// Pieces of treasure at the start.
 const TREASURE: u32 = 5;
@@ -215,10 +215,10 @@ impl Game {
     /// the summary: equal hashes mean (almost surely) equal games.
     #[must_use]
     pub fn state_hash(&self) -> u64 {
-        let mut hash = Fnv1a::default();
+        let mut hash = Fnv1a::new();
         for (_, body) in self.bodies.iter() {
-            hash.write(u64::from(body.position().x.to_bits()));
-            hash.write(u64::from(body.position().y.to_bits()));
+            hash.write_u64(u64::from(body.position().x.to_bits()));
+            hash.write_u64(u64::from(body.position().y.to_bits()));
         }
         let mut fighters: Vec<_> = self
             .world
@@ -228,9 +228,9 @@ impl Game {
             .collect();
         fighters.sort_unstable();
         for (id, hp, hero, carrying) in fighters {
-            hash.write(id);
-            hash.write(hp as u64);
-            hash.write(u64::from(hero) | u64::from(carrying) << 1);
+            hash.write_u64(id);
+            hash.write_u64(hp as u64);
+            hash.write_u64(u64::from(hero) | u64::from(carrying) << 1);
         }
         let s = self.summary;
         for v in [
@@ -242,9 +242,9 @@ impl Game {
             s.squares_dug.into(),
             self.keeper.gold().into(),
         ] {
-            hash.write(v);
+            hash.write_u64(v);
         }
-        hash.0
+        hash.finish()
     }
 
     /// The map as it is now.
@@ -335,23 +335,5 @@ fn chronicle(summary: &mut Summary, dug: &mut Vec<Cell>, event: &Event) {
             summary.treasure_stolen += u32::from(*carried);
         }
         Event::Damage { .. } => {}
-    }
-}
-
-/// 64-bit FNV-1a.
-struct Fnv1a(u64);
-
-impl Default for Fnv1a {
-    fn default() -> Self {
-        Self(0xcbf2_9ce4_8422_2325)
-    }
-}
-
-impl Fnv1a {
-    fn write(&mut self, value: u64) {
-        for byte in value.to_le_bytes() {
-            self.0 ^= u64::from(byte);
-            self.0 = self.0.wrapping_mul(0x0000_0100_0000_01b3);
-        }
     }
 }

@@ -1,9 +1,6 @@
 //! The solid/empty cell grid that every standard scene is built on.
 
-/// FNV-1a 64-bit offset basis.
-const FNV_OFFSET: u64 = 0xCBF2_9CE4_8422_2325;
-/// FNV-1a 64-bit prime.
-const FNV_PRIME: u64 = 0x0000_0100_0000_01B3;
+use crate::Fnv1a;
 
 /// A `width`×`height` grid of solid/empty cells, row-major (index `y*width + x`);
 /// cell `(x, y)` covers `[x, x+1] × [y, y+1]`.
@@ -78,9 +75,11 @@ impl SolidGrid {
     /// the golden value BENCHMARKS.md publishes for each map.
     #[must_use]
     pub fn fingerprint(&self) -> u64 {
-        self.solid.iter().fold(FNV_OFFSET, |hash, &s| {
-            (hash ^ u64::from(u8::from(s))).wrapping_mul(FNV_PRIME)
-        })
+        let mut hash = Fnv1a::new();
+        for &s in &self.solid {
+            hash.write_u8(u8::from(s));
+        }
+        hash.finish()
     }
 
     /// [`fingerprint`](Self::fingerprint) as 16 lowercase hex digits, the form
@@ -104,7 +103,7 @@ mod tests {
             height: 0,
             solid: vec![],
         };
-        assert_eq!(empty.fingerprint(), FNV_OFFSET);
+        assert_eq!(empty.fingerprint(), Fnv1a::OFFSET_BASIS);
         let one = SolidGrid {
             width: 1,
             height: 1,

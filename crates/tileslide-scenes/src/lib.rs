@@ -12,7 +12,9 @@
 //!   [`audit_crowd`] as the end-of-run check for overlaps and wall penetrations;
 //! - the "broad" scene, [`scene_broad`] (circles of [`BROAD_RADIUS`] bouncing around the
 //!   square `[1, 255]²` under [`update_broad`]), with [`broad_pairs_reference`] as the exact
-//!   set of overlapping [boxes](broad_box) every broad phase must report.
+//!   set of overlapping [boxes](broad_box) every broad phase must report;
+//! - the checks of determinism: [`Fnv1a`], the one hash behind the maps' fingerprints, the
+//!   crowd's golden [`positions_hash`] and the demos' state hashes.
 //!
 //! Conventions: cell `(x, y)` covers `[x, x+1] × [y, y+1]`, cells are stored
 //! row-major (`y * width + x`), and cells outside a grid are empty.
@@ -35,6 +37,7 @@ mod broad;
 mod crowd;
 mod dungeon;
 mod edges;
+mod fnv;
 mod grid;
 mod rays;
 mod reference_walk;
@@ -51,6 +54,7 @@ pub use broad::{
 pub use crowd::{CROWD_RADIUS, CrowdBody, crowd_candidates, scene_crowd};
 pub use dungeon::{dungeon256, open256};
 pub use edges::ExposedEdge;
+pub use fnv::{Fnv1a, positions_hash};
 pub use grid::SolidGrid;
 pub use rays::{SceneRay, scene_rays};
 pub use reference_walk::reference_hit_distance;

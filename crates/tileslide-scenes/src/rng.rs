@@ -54,6 +54,33 @@ impl SplitMix64 {
         // (hi * n) >> 32 < n, so it always fits back into a u64.
         u64::try_from((hi * u128::from(n)) >> 32).unwrap_or(0)
     }
+
+    /// A uniform `f32` from `lo` to `hi`: `lo + (hi − lo) · f32()` (below `hi` but for
+    /// rounding).
+    ///
+    /// ```
+    /// # use tileslide_scenes::SplitMix64;
+    /// let mut rng = SplitMix64::new(3);
+    /// assert!((-2.0..5.0).contains(&rng.range(-2.0, 5.0)));
+    /// ```
+    pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * self.f32()
+    }
+
+    /// One of `items`, drawn uniformly with [`below`](Self::below), or `None` when there is
+    /// none.
+    ///
+    /// ```
+    /// # use tileslide_scenes::SplitMix64;
+    /// let mut rng = SplitMix64::new(3);
+    /// assert!([1, 2, 3].contains(&rng.pick(&[1, 2, 3]).unwrap()));
+    /// assert_eq!(rng.pick::<u8>(&[]), None);
+    /// ```
+    pub fn pick<T: Copy>(&mut self, items: &[T]) -> Option<T> {
+        let n = u64::try_from(items.len()).ok()?;
+        let i = usize::try_from(self.below(n)).ok()?;
+        items.get(i).copied()
+    }
 }
 
 #[cfg(test)]
@@ -93,5 +120,20 @@ mod tests {
             }
         }
         assert_eq!(a.below(0), 0);
+    }
+
+    #[test]
+    fn range_and_pick_are_f32_and_below_scaled() {
+        let mut a = SplitMix64::new(11);
+        let mut b = SplitMix64::new(11);
+        let items = [10, 20, 30, 40, 50];
+        for _ in 0..1000 {
+            let r = a.range(-3.0, 5.0);
+            assert!((-3.0..5.0).contains(&r));
+            assert_eq!(r, -3.0 + 8.0 * b.f32());
+            let picked = a.pick(&items);
+            assert_eq!(picked, Some(items[b.below(5) as usize]));
+        }
+        assert_eq!(a.pick::<u8>(&[]), None);
     }
 }

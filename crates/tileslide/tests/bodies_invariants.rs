@@ -15,8 +15,9 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use std::sync::Arc;
+mod generators;
 
+use generators::{tile_chars, tile_map, wall_in};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
@@ -30,38 +31,16 @@ const SKIN: f32 = 1e-4;
 /// Characters of a random map's interior and their weights.
 fn map_strategy(ramps: bool) -> impl Strategy<Value = (u32, u32, Vec<char>)> {
     (6u32..14, 6u32..14).prop_flat_map(move |(w, h)| {
-        let interior = if ramps {
-            prop_oneof![
-                14 => Just('.'),
-                3 => Just('#'),
-                1 => Just('/'),
-                1 => Just('\\'),
-                1 => Just('='),
-            ]
-            .boxed()
+        let mix: &[(u32, char)] = if ramps {
+            &[(14, '.'), (3, '#'), (1, '/'), (1, '\\'), (1, '=')]
         } else {
-            prop_oneof![5 => Just('.'), 1 => Just('#')].boxed()
+            &[(5, '.'), (1, '#')]
         };
-        prop::collection::vec(interior, (w * h) as usize).prop_map(move |mut chars| {
-            for r in 0..h {
-                for c in 0..w {
-                    if r == 0 || c == 0 || r == h - 1 || c == w - 1 {
-                        chars[(r * w + c) as usize] = '#';
-                    }
-                }
-            }
+        tile_chars(mix, (w * h) as usize).prop_map(move |mut chars| {
+            wall_in(w, &mut chars);
             (w, h, chars)
         })
     })
-}
-
-fn build_map(w: u32, h: u32, chars: &[char]) -> TileMap {
-    let set = Arc::new(ascii::tile_set(1.0).unwrap());
-    let tiles: Vec<_> = chars
-        .iter()
-        .map(|&c| ascii::tile_for_char(c).unwrap())
-        .collect();
-    TileMap::from_tiles(set, w, h, Vec2::ZERO, &tiles).unwrap()
 }
 
 /// Every active segment of the map: (a, b, normal, flags).
@@ -517,12 +496,12 @@ proptest! {
     /// Crowds on maps with ramps and one-way platforms, moves up to a cell per step.
     #[test]
     fn no_overlap_no_penetration_no_motion_without_a_move(
-        (w, h, chars) in map_strategy(true),
+        (w, _, chars) in map_strategy(true),
         proposals in proposals(STEPS, 1.0),
         tangential in any::<bool>(),
         sap in any::<bool>(),
     ) {
-        let map = build_map(w, h, &chars);
+        let map = tile_map(w, &chars, 1.0, Vec2::ZERO);
         let config = ResolveConfig {
             slide: if tangential { SlideMode::Tangential } else { SlideMode::FullLength },
             broadphase: if sap { Broadphase::SweepAndPrune } else { Broadphase::UniformGrid },
@@ -535,8 +514,8 @@ proptest! {
 
     /// Dense crowds queueing through a bending corridor.
     #[test]
-    fn dense_crowds_in_a_corridor_never_overlap((w, h, chars, proposals) in corridor_strategy()) {
-        let map = build_map(w, h, &chars);
+    fn dense_crowds_in_a_corridor_never_overlap((w, _, chars, proposals) in corridor_strategy()) {
+        let map = tile_map(w, &chars, 1.0, Vec2::ZERO);
         run(&map, &proposals, STEPS, ResolveConfig::default(), |bodies, placed, step, before| {
             check_step(&map, bodies, placed, step, before)
         })?;
@@ -548,7 +527,7 @@ proptest! {
         (w, h, chars) in map_strategy(false),
         proposals in proposals(STEPS, 6.0),
     ) {
-        let map = build_map(w, h, &chars);
+        let map = tile_map(w, &chars, 1.0, Vec2::ZERO);
         let label = regions(w, h, &chars);
         let room = |p: Vec2| label[(p.y as u32 * w + p.x as u32) as usize];
         let (bodies, placed) = place(&map, &proposals);
@@ -565,10 +544,10 @@ proptest! {
     /// The same inputs give bit-identical positions, whichever broadphase finds the pairs.
     #[test]
     fn identical_inputs_give_identical_positions(
-        (w, h, chars) in map_strategy(true),
+        (w, _, chars) in map_strategy(true),
         proposals in proposals(STEPS, 1.0),
     ) {
-        let map = build_map(w, h, &chars);
+        let map = tile_map(w, &chars, 1.0, Vec2::ZERO);
         let ok = |_: &Bodies, _: &[(BodyHandle, Proposal)], _: usize, _: &[Vec2]| Ok(());
         let a = run(&map, &proposals, STEPS, ResolveConfig::default(), ok)?;
         let b = run(&map, &proposals, STEPS, ResolveConfig::default(), ok)?;
@@ -625,7 +604,7 @@ fn same_as_without_memory(
     events: &[Event],
     sap: bool,
 ) -> Result<(), TestCaseError> {
-    let mut map = build_map(w, h, chars);
+    let mut map = tile_map(w, chars, 1.0, Vec2::ZERO);
     let (mut bodies, placed) = place(&map, proposals);
     let mut config = ResolveConfig {
         broadphase: if sap {

@@ -556,11 +556,10 @@ fn noise() -> TileMap {
         .unwrap();
         set.insert(tileslide::TileId(k), shape).unwrap();
     }
-    let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+    let mut rng = tileslide_scenes::SplitMix64::new(0x9E37_79B9_7F4A_7C15);
     let tiles: Vec<_> = (0..96 * 96)
         .map(|_| {
-            seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
-            let k = (seed >> 33) % 18;
+            let k = rng.below(18);
             (k > 1).then(|| tileslide::TileId(k as u32 - 1))
         })
         .collect();

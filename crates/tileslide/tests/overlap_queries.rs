@@ -7,9 +7,11 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 mod drawn;
+mod generators;
 
 use std::sync::Arc;
 
+use generators::{rows, tile_chars, tile_map};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
@@ -93,23 +95,21 @@ fn world() -> impl Strategy<Value = World> {
         prop_oneof![Just(v(0.0, 0.0)), Just(v(-3.5, 12.25)), Just(v(64.0, -8.0))],
     )
         .prop_flat_map(|(w, h, cell, origin)| {
-            let chars = proptest::collection::vec(
-                prop_oneof![4 => Just('.'), 3 => Just('#'), 1 => Just('/'), 1 => Just('\\'), 1 => Just('=')],
+            let chars = tile_chars(
+                &[(4, '.'), (3, '#'), (1, '/'), (1, '\\'), (1, '=')],
                 (w * h) as usize,
             );
             let temps = proptest::collection::vec(
-                ((-2.0f32..18.0, -2.0f32..18.0), (-2.0f32..18.0, -2.0f32..18.0)),
+                (
+                    (-2.0f32..18.0, -2.0f32..18.0),
+                    (-2.0f32..18.0, -2.0f32..18.0),
+                ),
                 0..3,
             );
             (Just((w, h, cell, origin)), chars, temps)
         })
-        .prop_map(|((w, h, cell, origin), chars, temps)| {
-            let set = Arc::new(ascii::tile_set(cell).unwrap());
-            let tiles: Vec<_> = chars
-                .iter()
-                .map(|&c| ascii::tile_for_char(c).unwrap())
-                .collect();
-            let mut map = TileMap::from_tiles(set, w, h, origin, &tiles).unwrap();
+        .prop_map(|((w, _, cell, origin), chars, temps)| {
+            let mut map = tile_map(w, &chars, cell, origin);
             for (i, (a, b)) in temps.into_iter().enumerate() {
                 let (a, b) = (origin + v(a.0, a.1) * cell, origin + v(b.0, b.1) * cell);
                 if a != b {
@@ -123,12 +123,10 @@ fn world() -> impl Strategy<Value = World> {
                     .unwrap();
                 }
             }
-            let text = chars
-                .chunks(w as usize)
-                .map(|r| r.iter().collect::<String>())
-                .collect::<Vec<_>>()
-                .join("\n");
-            World { map, text }
+            World {
+                map,
+                text: rows(w, &chars),
+            }
         })
 }
 

@@ -18,8 +18,10 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+mod generators;
 mod path_support;
 
+use generators::{rows, tile_chars, tile_map, wall_in};
 use glam::DVec2;
 use proptest::prelude::*;
 use tileslide::io::ascii;
@@ -30,8 +32,9 @@ use tileslide::{
 
 use path_support::any_angle::{InflatedScene, room_and_blocks};
 use path_support::lattice_reference::{LatticeReference, QUANTISATION, Verdict};
-use path_support::split_mix::SplitMix64;
+use path_support::query_points::fitting_point;
 use path_support::walls::Walls;
+use tileslide_scenes::SplitMix64;
 
 /// The grid's margin on unit cells: a circle needs clearance `r + MARGIN`.
 const MARGIN: f64 = 1e-3;
@@ -61,58 +64,36 @@ fn both_faces() -> RayFilter {
 /// A random ASCII map, `width × height`, with a solid border ring unless `open_border`.
 #[derive(Clone, Debug)]
 struct RandomMap {
-    width: usize,
-    height: usize,
-    open_border: bool,
+    width: u32,
     chars: Vec<char>,
 }
 
 impl RandomMap {
     fn text(&self) -> String {
-        let mut text = String::new();
-        for row in 0..self.height {
-            for col in 0..self.width {
-                let ring = row == 0 || col == 0 || row == self.height - 1 || col == self.width - 1;
-                text.push(if ring && !self.open_border {
-                    '#'
-                } else {
-                    self.chars[row * self.width + col]
-                });
-            }
-            text.push('\n');
-        }
-        text
+        rows(self.width, &self.chars)
     }
 
     fn build(&self) -> TileMap {
-        ascii::parse(&self.text(), "random.txt", 1.0).unwrap()
+        tile_map(self.width, &self.chars, 1.0, Vec2::ZERO)
     }
 }
 
-/// Mostly empty cells, some solid squares and a few ramps (partial tiles with sloped faces).
-fn cell_char() -> impl Strategy<Value = char> {
-    prop_oneof![14 => Just('.'), 5 => Just('#'), 1 => Just('/'), 1 => Just('\\')]
-}
-
-fn random_map(width: usize, height: usize) -> impl Strategy<Value = RandomMap> {
+/// A random `width × height` map of mostly empty cells, some solid squares and a few ramps
+/// (partial tiles with sloped faces), walled in but for a quarter of the maps.
+fn random_map(width: u32, height: u32) -> impl Strategy<Value = RandomMap> {
     (
-        prop::collection::vec(cell_char(), width * height),
+        tile_chars(
+            &[(14, '.'), (5, '#'), (1, '/'), (1, '\\')],
+            (width * height) as usize,
+        ),
         prop::bool::weighted(0.25),
     )
-        .prop_map(move |(chars, open_border)| RandomMap {
-            width,
-            height,
-            open_border,
-            chars,
+        .prop_map(move |(mut chars, open_border)| {
+            if !open_border {
+                wall_in(width, &mut chars);
+            }
+            RandomMap { width, chars }
         })
-}
-
-/// A random point of `map` where a circle of radius `r` fits, if one turns up.
-fn fitting_point(nav: &NavGrid, map: &TileMap, rng: &mut SplitMix64, r: f32) -> Option<Vec2> {
-    let size = map.bounds().size();
-    (0..40)
-        .map(|_| map.origin() + v(rng.range(0.0, size.x), rng.range(0.0, size.y)))
-        .find(|&p| nav.fits(map, p, r).unwrap())
 }
 
 // ----------------------------------------------------------------------------------------
@@ -213,7 +194,7 @@ proptest! {
                 continue;
             }
             for _ in 0..PAIRS_PER_RADIUS {
-                let (a, b) = (rng.pick(&free), rng.pick(&free));
+                let (a, b) = (rng.pick(&free).unwrap(), rng.pick(&free).unwrap());
                 let (pa, pb) = (reference.positions[a], reference.positions[b]);
                 let found = nav.find_path(&map, pa, pb, r).unwrap().is_some();
                 let by_lattice = reference.flood(&[a], need, false)[b];
@@ -301,7 +282,7 @@ proptest! {
         let walls = Walls::of(&map);
         let mut rng = SplitMix64::new(seed);
         for _ in 0..20 {
-            let r = rng.pick(&[0.2f32, 0.35, 0.5, 0.7, 0.9]);
+            let r = rng.pick(&[0.2f32, 0.35, 0.5, 0.7, 0.9]).unwrap();
             let (Some(from), Some(to)) = (
                 fitting_point(&nav, &map, &mut rng, r),
                 fitting_point(&nav, &map, &mut rng, r),
@@ -409,8 +390,9 @@ fn lengths_against_any_angle(pairs: usize, seed: u64) -> Vec<LengthCheck> {
                 .map(|(i, j)| nav.node_position(i, j))
                 .filter(|&p| nav.fits(&map, p, r).unwrap())
                 .collect();
-            let random = std::iter::repeat_with(|| (rng.pick(&nodes), rng.pick(&nodes)))
-                .filter(|(a, b)| a.distance(*b) > 3.0);
+            let random =
+                std::iter::repeat_with(|| (rng.pick(&nodes).unwrap(), rng.pick(&nodes).unwrap()))
+                    .filter(|(a, b)| a.distance(*b) > 3.0);
             let queries = std::iter::once((nodes[0], nodes[nodes.len() - 1])).chain(random);
             let mut asked = 0;
             for (from, to) in queries {

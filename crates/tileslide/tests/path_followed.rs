@@ -6,15 +6,18 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+mod generators;
 mod path_support;
 
+use generators::{rows, tile_chars, wall_in};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
     Bodies, BodyDesc, BodyShape, Circle, FlowField, NavConfig, NavGrid, SegmentFlags, TileMap, Vec2,
 };
 
-use path_support::split_mix::SplitMix64;
+use path_support::query_points::fitting_point;
+use tileslide_scenes::SplitMix64;
 
 /// How far a body is moved per step along a run (cells).
 const STEP: f32 = 0.1;
@@ -30,46 +33,22 @@ fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)
 }
 
-/// Mostly empty cells, some solid squares, ramps and one-way platforms.
-fn cell_char() -> impl Strategy<Value = char> {
-    prop_oneof![
-        12 => Just('.'),
-        4 => Just('#'),
-        1 => Just('/'),
-        1 => Just('\\'),
-        4 => Just('='),
-    ]
-}
-
-/// A random `width × height` map, walled in unless `open`.
-fn random_map(width: usize, height: usize) -> impl Strategy<Value = String> {
+/// A random `width × height` map of mostly empty cells, some solid squares, ramps and
+/// one-way platforms, walled in but for a quarter of the maps.
+fn random_map(width: u32, height: u32) -> impl Strategy<Value = String> {
     (
-        prop::collection::vec(cell_char(), width * height),
+        tile_chars(
+            &[(12, '.'), (4, '#'), (1, '/'), (1, '\\'), (4, '=')],
+            (width * height) as usize,
+        ),
         prop::bool::weighted(0.25),
     )
-        .prop_map(move |(chars, open)| {
-            let mut text = String::new();
-            for row in 0..height {
-                for col in 0..width {
-                    let ring = row == 0 || col == 0 || row == height - 1 || col == width - 1;
-                    text.push(if ring && !open {
-                        '#'
-                    } else {
-                        chars[row * width + col]
-                    });
-                }
-                text.push('\n');
+        .prop_map(move |(mut chars, open)| {
+            if !open {
+                wall_in(width, &mut chars);
             }
-            text
+            rows(width, &chars)
         })
-}
-
-/// A random point of `map` where a circle of radius `r` fits, if one turns up.
-fn fitting_point(nav: &NavGrid, map: &TileMap, rng: &mut SplitMix64, r: f32) -> Option<Vec2> {
-    let size = map.bounds().size();
-    (0..40)
-        .map(|_| map.origin() + v(rng.range(0.0, size.x), rng.range(0.0, size.y)))
-        .find(|&p| nav.fits(map, p, r).unwrap())
 }
 
 /// Moves a body of radius `r` from the first point of `points` along each straight run in

@@ -11,10 +11,10 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod absurd_support;
+mod generators;
 mod path_support;
 
-use absurd_support::{map_of, small_map_at};
+use generators::{map_of, small_map_at};
 use glam::DVec2;
 use path_support::walls::point_segment_distance;
 use proptest::prelude::*;

@@ -8,11 +8,11 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod absurd_support;
+mod generators;
 
 use std::sync::Arc;
 
-use absurd_support::{map_of, rows_of, small_map_at};
+use generators::{small_map_at, tile_map};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
@@ -109,7 +109,7 @@ fn required(ray: &Ray, segment: &Segment, eps: f64) -> bool {
 }
 
 /// Every hit of a brute-force test of every active and temporary segment that the filter
-/// lets the ray hit (the filter rules of `cast_ray`'s documentation, restated), by
+/// lets the ray hit (`RayFilter::accepts`), by
 /// `cast_ray_segment` for an ordinary ray and by the `f64` kernel for any other.
 fn brute_hits(map: &TileMap, ray: &Ray, filter: &RayFilter) -> Vec<BruteHit> {
     let wide = !ordinary(map, ray);
@@ -117,11 +117,6 @@ fn brute_hits(map: &TileMap, ray: &Ray, filter: &RayFilter) -> Vec<BruteHit> {
         f64::EPSILON
     } else {
         f64::from(f32::EPSILON)
-    };
-    let faces_ok = |normal: Vec2| match filter.faces {
-        Faces::Front => normal.dot(ray.delta) < 0.0,
-        Faces::Both => true,
-        Faces::Against(dir) => normal.dot(dir) < 0.0,
     };
     let mut hits = Vec::new();
     let mut consider = |key: Key, segment: &Segment| {
@@ -139,17 +134,14 @@ fn brute_hits(map: &TileMap, ray: &Ray, filter: &RayFilter) -> Vec<BruteHit> {
         for col in 0..map.width() {
             let cell = Cell::new(col, row);
             for (i, s) in map.active_segments(cell).enumerate() {
-                if s.flags.intersects(filter.mask) && faces_ok(s.normal) {
+                if filter.accepts(ray.delta, s.normal, s.flags, None) {
                     consider(Key::Tile(cell, i as u32), &s.segment);
                 }
             }
         }
     }
     for (i, t) in map.temporaries().iter().enumerate() {
-        if t.flags.intersects(filter.mask)
-            && filter.exclude_owner != Some(t.owner)
-            && faces_ok(t.normal)
-        {
+        if filter.accepts(ray.delta, t.normal, t.flags, Some(t.owner)) {
             consider(Key::Temporary(i), &t.segment);
         }
     }
@@ -529,11 +521,8 @@ fn inexact_map() -> impl Strategy<Value = TileMap> {
     (2u32..=8, 2u32..=8, 0usize..3, 0usize..2).prop_flat_map(|(w, h, cell, origin)| {
         let cell = [1.0f32, 0.5, 0.25][cell];
         let origin = [v(0.1, 0.1), v(-7.3, 2.9)][origin];
-        proptest::collection::vec(
-            prop_oneof![3 => Just('.'), 2 => Just('#'), 2 => Just('/'), 2 => Just('\\')],
-            (w * h) as usize,
-        )
-        .prop_map(move |chars| map_of(&rows_of(&chars, w), cell, origin))
+        tile_chars(&[(3, '.'), (2, '#'), (2, '/'), (2, '\\')], (w * h) as usize)
+            .prop_map(move |chars| tile_map(w, &chars, cell, origin))
     })
 }
 

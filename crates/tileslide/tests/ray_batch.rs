@@ -9,13 +9,12 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use std::sync::Arc;
+mod generators;
 
+use generators::{ray_filter, tile_chars, tile_map};
 use proptest::prelude::*;
 use tileslide::io::ascii;
-use tileslide::{
-    Faces, Owner, Ray, RayFilter, RayHit, Segment, SegmentFlags, TemporarySegment, TileMap, Vec2,
-};
+use tileslide::{Owner, Ray, RayFilter, RayHit, Segment, SegmentFlags, TemporarySegment, Vec2};
 
 /// Every bit of an answer, so that `-0.0` and `0.0` (equal as floats) count as different.
 fn bits(hit: &Option<RayHit>) -> Option<(Vec<u32>, String)> {
@@ -25,16 +24,6 @@ fn bits(hit: &Option<RayHit>) -> Option<(Vec<u32>, String)> {
         words.push(h.flags.0);
         (words, format!("{:?}", h.source))
     })
-}
-
-fn map(width: u32, chars: &[char], cell: f32, origin: Vec2) -> TileMap {
-    let set = Arc::new(ascii::tile_set(cell).unwrap());
-    let tiles: Vec<_> = chars
-        .iter()
-        .map(|&c| ascii::tile_for_char(c).unwrap())
-        .collect();
-    let height = chars.len() as u32 / width;
-    TileMap::from_tiles(set, width, height, origin, &tiles).unwrap()
 }
 
 /// A ray in grid units: a start and an end, each either anywhere or snapped to the lattice
@@ -67,24 +56,6 @@ fn grid_ray(width: u32, height: u32) -> impl Strategy<Value = (Vec2, Vec2)> {
     })
 }
 
-fn filter() -> impl Strategy<Value = RayFilter> {
-    (0u8..5).prop_map(|kind| match kind {
-        0 => RayFilter {
-            faces: Faces::Both,
-            ..RayFilter::default()
-        },
-        1 => RayFilter {
-            faces: Faces::Against(Vec2::new(0.3, -1.0)),
-            ..RayFilter::default()
-        },
-        2 => RayFilter {
-            mask: SegmentFlags::ONE_WAY,
-            ..RayFilter::default()
-        },
-        _ => RayFilter::default(),
-    })
-}
-
 const CELLS: [f32; 3] = [1.0, 0.5, 32.0];
 const ORIGINS: [(f32, f32); 3] = [(0.0, 0.0), (-3.5, 12.25), (0.1, -7.3)];
 
@@ -95,20 +66,16 @@ proptest! {
     fn batch_answers_are_single_answers_bit_for_bit(
         (width, chars, rays) in (1u32..=20, 1u32..=20).prop_flat_map(|(w, h)| (
             Just(w),
-            proptest::collection::vec(
-                prop_oneof![6 => Just('.'), 6 => Just('#'), 1 => Just('/'), 1 => Just('\\'),
-                    1 => Just('=')],
-                (w * h) as usize,
-            ),
+            tile_chars(&[(6, '.'), (6, '#'), (1, '/'), (1, '\\'), (1, '=')], (w * h) as usize),
             proptest::collection::vec(grid_ray(w, h), 0..150),
         )),
         cell in 0usize..CELLS.len(),
         origin in 0usize..ORIGINS.len(),
-        filter in filter(),
+        filter in ray_filter(),
         temporary in any::<bool>(),
     ) {
         let (cell, origin) = (CELLS[cell], Vec2::from(ORIGINS[origin]));
-        let mut map = map(width, &chars, cell, origin);
+        let mut map = tile_map(width, &chars, cell, origin);
         if temporary {
             map.add_temporary(TemporarySegment {
                 segment: Segment::new(origin, origin + Vec2::new(3.0, 2.0) * cell),

@@ -17,13 +17,13 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use std::sync::Arc;
+mod generators;
 
+use generators::{ray_filter, rows, tile_chars, tile_map, varied_tile_chars};
 use proptest::prelude::*;
-use tileslide::io::ascii;
 use tileslide::{
-    Cell, Faces, Owner, Ray, RayFilter, RayHit, Segment, SegmentFlags, SegmentSource,
-    TemporarySegment, TileMap, Vec2, cast_ray_segment,
+    Cell, Owner, Ray, RayFilter, RayHit, Segment, SegmentFlags, SegmentSource, TemporarySegment,
+    TileMap, Vec2, cast_ray_segment,
 };
 
 fn v(x: f32, y: f32) -> Vec2 {
@@ -46,14 +46,7 @@ struct World {
 
 impl World {
     fn map(&self) -> TileMap {
-        let set = Arc::new(ascii::tile_set(self.cell).unwrap());
-        let tiles: Vec<_> = self
-            .chars
-            .iter()
-            .map(|&c| ascii::tile_for_char(c).unwrap())
-            .collect();
-        let mut map =
-            TileMap::from_tiles(set, self.width, self.height, self.origin, &tiles).unwrap();
+        let mut map = tile_map(self.width, &self.chars, self.cell, self.origin);
         for t in &self.temporaries {
             map.add_temporary(*t).unwrap();
         }
@@ -67,11 +60,7 @@ impl World {
 
     /// The map drawn as text, for failure messages.
     fn ascii(&self) -> String {
-        self.chars
-            .chunks(self.width as usize)
-            .map(|r| r.iter().collect::<String>())
-            .collect::<Vec<_>>()
-            .join("\n")
+        rows(self.width, &self.chars)
     }
 }
 
@@ -86,25 +75,6 @@ const ORIGINS: [(f32, f32); 6] = [
     (0.1, 0.1),
     (-7.3, 2.9),
 ];
-
-fn map_chars(len: usize) -> impl Strategy<Value = Vec<char>> {
-    // Density of each character varies per map: some maps mostly empty, some mostly full.
-    (0u32..=10, 0u32..=4, 0u32..=4, 0u32..=3).prop_flat_map(move |(solid, slash, back, one)| {
-        let weights = [
-            (6, '.'),
-            (solid, '#'),
-            (slash, '/'),
-            (back, '\\'),
-            (one, '='),
-        ];
-        let choices: Vec<(u32, Just<char>)> = weights
-            .into_iter()
-            .filter(|(w, _)| *w > 0)
-            .map(|(w, c)| (w, Just(c)))
-            .collect();
-        proptest::collection::vec(proptest::strategy::Union::new_weighted(choices), len)
-    })
-}
 
 fn temporary(width: u32, height: u32) -> impl Strategy<Value = (Vec2, Vec2, bool, bool, u64)> {
     let (w, h) = (width as f32, height as f32);
@@ -131,7 +101,7 @@ fn world() -> impl Strategy<Value = World> {
             (
                 Just(width),
                 Just(height),
-                map_chars((width * height) as usize),
+                varied_tile_chars((width * height) as usize),
                 Just(CELLS[cell]),
                 Just(ORIGINS[origin]),
                 proptest::collection::vec(temporary(width, height), 0..3),
@@ -250,26 +220,6 @@ fn grid_ray(width: u32, height: u32) -> impl Strategy<Value = GridRay> {
     ]
 }
 
-fn filter() -> impl Strategy<Value = RayFilter> {
-    let faces = prop_oneof![
-        3 => Just(Faces::Front),
-        2 => Just(Faces::Both),
-        1 => (-2i32..=2, -2i32..=2)
-            .prop_map(|(x, y)| Faces::Against(Vec2::new(x as f32, y as f32))),
-    ];
-    let mask = prop_oneof![
-        4 => Just(SegmentFlags::ALL),
-        1 => Just(SegmentFlags::SOLID),
-        1 => Just(SegmentFlags::ONE_WAY),
-    ];
-    let exclude = prop_oneof![Just(None), (0u64..3).prop_map(|o| Some(Owner(o)))];
-    (faces, mask, exclude).prop_map(|(faces, mask, exclude_owner)| RayFilter {
-        faces,
-        mask,
-        exclude_owner,
-    })
-}
-
 /// The number of cases: `PROPTEST_CASES` if set, else `default`.
 fn cases_or(default: u32) -> u32 {
     std::env::var("PROPTEST_CASES")
@@ -329,21 +279,6 @@ fn candidates(map: &TileMap) -> Vec<Candidate> {
     out
 }
 
-/// The filter rules of `cast_ray`'s documentation, restated.
-fn counts(c: &Candidate, ray: &Ray, filter: &RayFilter) -> bool {
-    if !c.flags.intersects(filter.mask) {
-        return false;
-    }
-    if c.owner.is_some() && c.owner == filter.exclude_owner {
-        return false;
-    }
-    match filter.faces {
-        Faces::Front => c.normal.dot(ray.delta) < 0.0,
-        Faces::Both => true,
-        Faces::Against(dir) => c.normal.dot(dir) < 0.0,
-    }
-}
-
 /// A hit of the brute force.
 #[derive(Clone, Copy, Debug)]
 struct BruteHit {
@@ -363,7 +298,7 @@ fn brute_hits(cands: &[Candidate], ray: &Ray, filter: &RayFilter) -> Vec<BruteHi
     }
     cands
         .iter()
-        .filter(|c| counts(c, ray, filter))
+        .filter(|c| filter.accepts(ray.delta, c.normal, c.flags, c.owner))
         .filter_map(|c| {
             cast_ray_segment(ray, &c.segment).map(|h| {
                 let (required, t_tol) = verdict(ray, &c.segment);
@@ -537,7 +472,7 @@ fn check(
 
 fn world_and_rays() -> impl Strategy<Value = (World, Vec<(GridRay, RayFilter)>)> {
     world().prop_flat_map(|w| {
-        let rays = proptest::collection::vec((grid_ray(w.width, w.height), filter()), 24);
+        let rays = proptest::collection::vec((grid_ray(w.width, w.height), ray_filter()), 24);
         (Just(w), rays)
     })
 }
@@ -568,17 +503,11 @@ proptest! {
 /// A small random ASCII map on unit cells at the origin.
 fn small_map() -> impl Strategy<Value = TileMap> {
     (2u32..=12, 2u32..=12).prop_flat_map(|(w, h)| {
-        proptest::collection::vec(
-            prop_oneof![4 => Just('.'), 2 => Just('#'), 1 => Just('/'), 1 => Just('\\'), 1 => Just('=')],
+        tile_chars(
+            &[(4, '.'), (2, '#'), (1, '/'), (1, '\\'), (1, '=')],
             (w * h) as usize,
         )
-        .prop_map(move |chars| {
-            let rows: Vec<String> = chars
-                .chunks(w as usize)
-                .map(|r| r.iter().collect())
-                .collect();
-            ascii::parse(&rows.join("\n"), "small.txt", 1.0).unwrap()
-        })
+        .prop_map(move |chars| tile_map(w, &chars, 1.0, Vec2::ZERO))
     })
 }
 

@@ -6,8 +6,11 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+mod generators;
+
 use std::sync::Arc;
 
+use generators::{rows, tile_chars};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
@@ -283,8 +286,8 @@ fn covers(c: char, dc: i64, dr: i64) -> bool {
 
 fn ascii_map() -> impl Strategy<Value = (u32, u32, Vec<char>)> {
     (1u32..=12, 1u32..=12).prop_flat_map(|(w, h)| {
-        let chars = proptest::collection::vec(
-            prop_oneof![3 => Just('.'), 3 => Just('#'), 1 => Just('/'), 1 => Just('\\'), 1 => Just('=')],
+        let chars = tile_chars(
+            &[(3, '.'), (3, '#'), (1, '/'), (1, '\\'), (1, '=')],
             (w * h) as usize,
         );
         (Just(w), Just(h), chars)
@@ -299,8 +302,7 @@ proptest! {
     /// (slopes) is always active.
     #[test]
     fn ascii_tile_edges_are_hidden_exactly_when_the_neighbour_covers_them((w, h, chars) in ascii_map()) {
-        let rows: Vec<String> = chars.chunks(w as usize).map(|r| r.iter().collect()).collect();
-        let m = map(&rows.join("\n"));
+        let m = map(&rows(w, &chars));
         let at = |c: i64, r: i64| -> char {
             if c < 0 || r < 0 || c >= w as i64 || r >= h as i64 {
                 '.'
@@ -327,7 +329,7 @@ proptest! {
                 let got: Vec<ActiveSegment> = segments(&m, col, row);
                 let mut got_sources: Vec<u32> = got.iter().map(|s| s.source).collect();
                 got_sources.sort();
-                prop_assert_eq!(&got_sources, &want, "cell ({}, {}) '{}' in\n{}", col, row, c, rows.join("\n"));
+                prop_assert_eq!(&got_sources, &want, "cell ({}, {}) '{}' in\n{}", col, row, c, rows(w, &chars));
                 // Active pieces of ASCII tiles are always whole tile segments.
                 let corner = m.cell_corner(Cell::new(col, row));
                 for s in got {
@@ -520,15 +522,15 @@ fn partly_hidden_piece_continues_into_the_lower_neighbours_top() {
 
 fn mixed_map() -> impl Strategy<Value = Vec<String>> {
     (1usize..=10, 1usize..=10).prop_flat_map(|(w, h)| {
-        proptest::collection::vec(
-            prop_oneof![
-                4 => Just('.'),
-                3 => Just('#'),
-                1 => Just('/'),
-                1 => Just('\\'),
-                1 => Just('='),
-                1 => Just('h'),
-                1 => Just('n'),
+        tile_chars(
+            &[
+                (4, '.'),
+                (3, '#'),
+                (1, '/'),
+                (1, '\\'),
+                (1, '='),
+                (1, 'h'),
+                (1, 'n'),
             ],
             w * h,
         )

@@ -6,7 +6,7 @@ use parry2d::partitioning::{Bvh, BvhBuildStrategy, BvhWorkspace};
 use tileslide_scenes::{BroadCircle, broad_box};
 
 use super::{BroadContender, normalized_pairs};
-use crate::peers::to_parry;
+use crate::parry_vectors::to_parry;
 
 /// The circles' boxes in a parry2d [`Bvh`] (parry's default binned SAH build, once, from the
 /// start positions). Every update:

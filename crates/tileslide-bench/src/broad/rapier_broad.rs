@@ -10,7 +10,7 @@ use tileslide::Aabb;
 use tileslide_scenes::{BROAD_RADIUS, BroadCircle, boxes_overlap, broad_boxes};
 
 use super::{BroadContender, normalized_pairs};
-use crate::peers::to_parry;
+use crate::parry_vectors::to_parry;
 
 /// The circles as standalone ball colliders (radius [`BROAD_RADIUS`], every
 /// [`ActiveCollisionTypes`] enabled: rapier treats a collider without a body as fixed, and by

@@ -9,7 +9,8 @@ use tileslide_scenes::{CrowdBody, SolidGrid};
 
 use super::CrowdContender;
 use super::neighbour_grid::NeighbourGrid;
-use crate::peers::{ParryPolyline, ParryVoxels, to_parry};
+use crate::parry_vectors::to_parry;
+use crate::rays::{ParryPolyline, ParryVoxels};
 
 /// Gap the slide keeps between a circle and whatever it hits (parry's `target_distance`): a
 /// contact stops the circle this far away, so that the next cast along the wall does not start

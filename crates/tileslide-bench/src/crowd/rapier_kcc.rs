@@ -9,7 +9,7 @@ use rapier2d::prelude::{
 use tileslide_scenes::{CrowdBody, SolidGrid};
 
 use super::CrowdContender;
-use crate::peers::to_parry;
+use crate::parry_vectors::to_parry;
 
 /// A crowd in a rapier2d [`PhysicsWorld`] (zero gravity, default integration parameters):
 /// each circle a position-based kinematic body with a ball collider, each solid cell that has an

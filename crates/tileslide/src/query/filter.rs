@@ -86,6 +86,45 @@ impl RayFilter {
         }
     }
 
+    /// Whether a ray moving by `delta` may hit a segment with this `normal` and `flags`,
+    /// owned by `owner` if it is a temporary segment (`None` for a tile's): the segment has
+    /// one of the [`mask`](Self::mask)'s flags, is not a temporary segment of the
+    /// [excluded owner](Self::exclude_owner), and its face counts under
+    /// [`faces`](Self::faces).
+    ///
+    /// This is the rule every ray query applies; the walks apply it without branches, and
+    /// their tests hold them to this definition.
+    ///
+    /// ```
+    /// # use tileslide::{Owner, RayFilter, SegmentFlags, Vec2};
+    /// let right = Vec2::new(1.0, 0.0);
+    /// let wall = Vec2::new(-1.0, 0.0); // a wall's face, seen from its left
+    /// let f = RayFilter::default();
+    /// assert!(f.accepts(right, wall, SegmentFlags::SOLID, None));
+    /// assert!(!f.accepts(-right, wall, SegmentFlags::SOLID, None)); // its back
+    /// assert!(RayFilter::both_sides().accepts(-right, wall, SegmentFlags::SOLID, None));
+    /// let door = Some(Owner(7));
+    /// assert!(!f.excluding(Owner(7)).accepts(right, wall, SegmentFlags::SOLID, door));
+    /// assert!(!f.with_mask(SegmentFlags::ONE_WAY).accepts(right, wall, SegmentFlags::SOLID, None));
+    /// ```
+    #[must_use]
+    #[inline]
+    pub fn accepts(
+        &self,
+        delta: Vec2,
+        normal: Vec2,
+        flags: SegmentFlags,
+        owner: Option<Owner>,
+    ) -> bool {
+        let face = match self.faces {
+            Faces::Front => normal.dot(delta) < 0.0,
+            Faces::Both => true,
+            Faces::Against(dir) => normal.dot(dir) < 0.0,
+        };
+        let excluded = owner.is_some() && owner == self.exclude_owner;
+        face && flags.intersects(self.mask) && !excluded
+    }
+
     /// The direction a face must oppose, for a ray moving by `delta`, or `None` for
     /// [`Faces::Both`].
     #[inline(always)]

@@ -461,15 +461,11 @@ impl TileMap {
         filter: &RayFilter,
         wide: bool,
     ) -> impl Iterator<Item = (usize, f32, Vec2)> {
-        let face_dir = filter.face_direction(delta);
         self.temporaries
             .iter()
             .enumerate()
             .filter_map(move |(index, tmp)| {
-                if filter.exclude_owner == Some(tmp.owner)
-                    || !tmp.flags.intersects(filter.mask)
-                    || face_dir.is_some_and(|f| tmp.normal.dot(f) >= 0.0)
-                {
+                if !filter.accepts(delta, tmp.normal, tmp.flags, Some(tmp.owner)) {
                     return None;
                 }
                 let e = tmp.segment.b - tmp.segment.a;

@@ -104,3 +104,117 @@ pub(crate) fn cell_segments<'a>(
     let start = start as usize;
     &hot[start..start + hot[start].count as usize]
 }
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+
+    use super::*;
+    use crate::tiles::Owner;
+
+    /// Finite components: small, zero of either sign, or any finite `f32`.
+    fn component() -> impl Strategy<Value = f32> {
+        prop_oneof![
+            4 => -4.0f32..4.0,
+            1 => Just(0.0f32),
+            1 => Just(-0.0f32),
+            1 => any::<f32>().prop_filter("finite", |x| x.is_finite()),
+        ]
+    }
+
+    fn vector() -> impl Strategy<Value = Vec2> {
+        (component(), component()).prop_map(|(x, y)| Vec2::new(x, y))
+    }
+
+    /// A unit normal, as stored segments have: axis-aligned or any direction.
+    fn normal() -> impl Strategy<Value = Vec2> {
+        prop_oneof![
+            Just(Vec2::X),
+            Just(Vec2::NEG_X),
+            Just(Vec2::Y),
+            Just(Vec2::NEG_Y),
+            (0.0f32..std::f32::consts::TAU).prop_map(Vec2::from_angle),
+        ]
+    }
+
+    fn faces() -> impl Strategy<Value = Faces> {
+        prop_oneof![
+            Just(Faces::Front),
+            Just(Faces::Both),
+            vector().prop_map(Faces::Against),
+        ]
+    }
+
+    fn flags() -> impl Strategy<Value = SegmentFlags> {
+        prop_oneof![
+            Just(SegmentFlags::SOLID),
+            Just(SegmentFlags::ONE_WAY),
+            Just(SegmentFlags::ALL),
+            Just(SegmentFlags::NONE),
+            any::<u32>().prop_map(SegmentFlags),
+        ]
+    }
+
+    fn segment(normal: Vec2, flags: SegmentFlags) -> HotSegment {
+        HotSegment {
+            a: Vec2::ZERO,
+            e: normal.perp(),
+            normal,
+            flags,
+            source: 0,
+            count: 1,
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2_000))]
+
+        /// The walks' branch-free filter (`dot(normal, face_dir) < face_limit` and a mask
+        /// test) lets through exactly the segments `RayFilter::accepts` accepts.
+        #[test]
+        fn the_branch_free_filter_is_ray_filter_accepts(
+            faces in faces(),
+            mask in flags(),
+            delta in vector(),
+            normal in normal(),
+            segment_flags in flags(),
+        ) {
+            let filter = RayFilter { faces, mask, exclude_owner: None };
+            let test = SegmentTest::new(Vec2::ZERO, delta, &filter);
+            prop_assert_eq!(
+                test.passes(&segment(normal, segment_flags)),
+                filter.accepts(delta, normal, segment_flags, None)
+            );
+        }
+
+        /// Where a cell of whole-edge solid faces is decided by the face the walk enters
+        /// through (`fast_walk` and the batch walk), the filter accepts a face exactly when
+        /// the ray enters through it: `dot(normal, delta) < 0` for the face's outward normal.
+        #[test]
+        fn faces_decide_a_cell_only_where_the_filter_accepts_exactly_the_faces_entered(
+            faces in faces(),
+            mask in flags(),
+            delta in vector(),
+            face in 0usize..4,
+        ) {
+            let filter = RayFilter { faces, mask, exclude_owner: None };
+            let normal = [Vec2::X, Vec2::NEG_X, Vec2::Y, Vec2::NEG_Y][face];
+            if SegmentTest::decides_by_faces(&filter) {
+                prop_assert_eq!(
+                    filter.accepts(delta, normal, SegmentFlags::SOLID, None),
+                    normal.dot(delta) < 0.0
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_temporary_segment_of_the_excluded_owner_is_refused_and_a_tiles_is_not() {
+        let filter = RayFilter::both_sides().excluding(Owner(3));
+        let (delta, normal) = (Vec2::X, Vec2::NEG_X);
+        assert!(!filter.accepts(delta, normal, SegmentFlags::SOLID, Some(Owner(3))));
+        assert!(filter.accepts(delta, normal, SegmentFlags::SOLID, Some(Owner(4))));
+        assert!(filter.accepts(delta, normal, SegmentFlags::SOLID, None));
+        assert!(RayFilter::default().accepts(delta, normal, SegmentFlags::SOLID, Some(Owner(3))));
+    }
+}

@@ -10,14 +10,33 @@
 //! Each engine casts every ray once untimed to record its answers (hits, mean hit fraction,
 //! disagreements with tileslide), then `passes` timed passes are run, interleaving the
 //! engines so that machine noise falls on all of them alike; throughput is the median pass.
+//!
+//! Every peer has a `NAME`, a `new` that builds its acceleration structure from the scene (not
+//! timed), and a `cast` that answers one [`SceneRay`] with the distance, in cells, to the first
+//! solid-cell boundary the ray meets within its length.
+
+mod parry_polyline;
+mod parry_voxels;
+#[cfg(test)]
+mod test_grids;
 
 use std::hint::black_box;
 use std::time::Instant;
 
+use parry2d::query::Ray as ParryRay;
 use tileslide::{Ray, RayFilter, RayHit, TileMap};
 use tileslide_scenes::{Scene, SceneRay, TileMapError, scene_rays};
 
-use crate::peers::{ParryPolyline, ParryVoxels};
+use crate::parry_vectors::to_parry;
+pub use parry_polyline::ParryPolyline;
+pub use parry_voxels::ParryVoxels;
+
+/// The parry2d ray of a scene ray: same origin, same (unit) direction, so parry's time of impact
+/// is a distance in cells and `ray.length` can be passed as the maximum time of impact unchanged.
+#[inline]
+pub fn parry_ray(ray: &SceneRay) -> ParryRay {
+    ParryRay::new(to_parry(ray.origin), to_parry(ray.dir))
+}
 
 /// Two answers disagree when their hit distances differ by more than this many cells (or
 /// one hits and the other does not).
