@@ -880,7 +880,7 @@ proptest! {
                 .iter()
                 .map(|&c| ascii::tile_for_char(c).unwrap())
                 .cycle()
-                .skip(rng.below(4))
+                .skip(rng.below(4) as usize)
                 .find(|&t| t != now)
                 .unwrap();
             map.set_tile(cell, tile).unwrap();

@@ -12,7 +12,7 @@ mod generators;
 
 use std::sync::Arc;
 
-use generators::{small_map_at, tile_map};
+use generators::{small_map_at, tile_chars, tile_map};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
