@@ -76,7 +76,7 @@ impl Default for Fnv1a {
 }
 
 /// FNV-1a over the bits of every position, x then y, in order: the crowd's golden hash
-/// (`tileslide-bench/tests/crowd_golden.rs`), which shows that two runs moved every body
+/// (`tileslide/tests/resolver_golden.rs`), which shows that two runs moved every body
 /// exactly alike.
 ///
 /// ```
