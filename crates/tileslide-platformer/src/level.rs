@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use thiserror::Error;
-use tileslide::io::{LoadError, LoadErrorKind, Location, ascii, replica};
+use tileslide::io::{LoadError, ascii, replica};
 use tileslide::{Aabb, TileMap, Vec2};
 
 use crate::replica_spawn;
@@ -107,7 +107,7 @@ impl Level {
     /// Reads an ASCII level with the demo's markers (see the bundled level's header).
     pub fn load_ascii(path: impl AsRef<Path>) -> Result<Self, LevelError> {
         let path = path.as_ref();
-        let text = std::fs::read_to_string(path).map_err(|e| unreadable(path, &e))?;
+        let text = std::fs::read_to_string(path).map_err(|e| unreadable(path, e))?;
         Self::parse_ascii(&text, path)
     }
 
@@ -193,7 +193,7 @@ impl Level {
         let level = level.as_ref();
         let set = replica::load_tile_set(tile_set)?;
         let map = replica::load_level(level, Arc::new(set))?;
-        let bytes = std::fs::read(level).map_err(|e| unreadable(level, &e))?;
+        let bytes = std::fs::read(level).map_err(|e| unreadable(level, e))?;
         let cell = replica_spawn::player_spawn(&bytes)
             .ok_or_else(|| LevelError::NoStart(level.to_owned()))?;
         let size = map.cell_size();
@@ -215,12 +215,8 @@ impl Level {
     }
 }
 
-fn unreadable(path: &Path, e: &std::io::Error) -> LevelError {
-    LevelError::Load(LoadError {
-        path: path.to_owned(),
-        location: Location::File,
-        kind: LoadErrorKind::Io(e.to_string()),
-    })
+fn unreadable(path: &Path, e: std::io::Error) -> LevelError {
+    LevelError::Load(LoadError::unreadable(path, e))
 }
 
 fn file_name(path: &Path) -> String {

@@ -57,7 +57,10 @@ fn every_tile_character_maps_to_its_tile_and_first_line_is_row_0() {
 fn unknown_character_is_an_error_at_its_line_and_column() {
     let e = parse_err("####\n#..#\n#.@#\n####");
     assert_eq!(e.location, line_col(3, 3));
-    assert_eq!(e.kind, LoadErrorKind::UnknownCharacter('@'));
+    assert!(
+        matches!(e.kind, LoadErrorKind::UnknownCharacter('@')),
+        "{e}"
+    );
     assert!(e.to_string().starts_with("maps/test.txt:3:3: "), "{e}");
 }
 
@@ -65,7 +68,10 @@ fn unknown_character_is_an_error_at_its_line_and_column() {
 fn unknown_character_line_counts_comment_lines() {
     let e = parse_err("; first\n; second\n#\nX");
     assert_eq!(e.location, line_col(4, 1));
-    assert_eq!(e.kind, LoadErrorKind::UnknownCharacter('X'));
+    assert!(
+        matches!(e.kind, LoadErrorKind::UnknownCharacter('X')),
+        "{e}"
+    );
 }
 
 #[test]
@@ -73,14 +79,20 @@ fn unknown_character_column_counts_characters_not_bytes() {
     // A multi-byte character is one column: 'é' is itself the unknown character at column 3.
     let e = parse_err("#.é#");
     assert_eq!(e.location, line_col(1, 3));
-    assert_eq!(e.kind, LoadErrorKind::UnknownCharacter('é'));
+    assert!(
+        matches!(e.kind, LoadErrorKind::UnknownCharacter('é')),
+        "{e}"
+    );
 }
 
 #[test]
 fn tab_is_an_error_not_whitespace() {
     let e = parse_err("#\t#");
     assert_eq!(e.location, line_col(1, 2));
-    assert_eq!(e.kind, LoadErrorKind::UnknownCharacter('\t'));
+    assert!(
+        matches!(e.kind, LoadErrorKind::UnknownCharacter('\t')),
+        "{e}"
+    );
     assert!(e.to_string().starts_with("maps/test.txt:1:2: "), "{e}");
 }
 
@@ -88,7 +100,10 @@ fn tab_is_an_error_not_whitespace() {
 fn semicolon_inside_a_row_is_an_error_not_a_comment() {
     let e = parse_err("#.; not a comment");
     assert_eq!(e.location, line_col(1, 3));
-    assert_eq!(e.kind, LoadErrorKind::UnknownCharacter(';'));
+    assert!(
+        matches!(e.kind, LoadErrorKind::UnknownCharacter(';')),
+        "{e}"
+    );
 }
 
 #[test]
@@ -108,7 +123,10 @@ fn crlf_line_endings_load_like_lf() {
 fn stray_carriage_return_inside_a_line_is_an_error() {
     let e = parse_err("#\r#\n");
     assert_eq!(e.location, line_col(1, 2));
-    assert_eq!(e.kind, LoadErrorKind::UnknownCharacter('\r'));
+    assert!(
+        matches!(e.kind, LoadErrorKind::UnknownCharacter('\r')),
+        "{e}"
+    );
 }
 
 #[test]
@@ -127,7 +145,7 @@ fn empty_map_is_an_error_naming_the_file() {
     for text in ["", "\n", "\n\n\r\n", "; only a comment", "; a\n; b\n\n"] {
         let e = parse_err(text);
         assert_eq!(e.location, Location::File, "{text:?}");
-        assert_eq!(e.kind, LoadErrorKind::NoRows, "{text:?}");
+        assert!(matches!(e.kind, LoadErrorKind::NoRows), "{text:?}");
         assert_eq!(e.to_string(), "maps/test.txt: the map has no rows");
     }
 }
@@ -251,7 +269,7 @@ fn non_utf8_file_is_an_error_at_the_first_bad_byte() {
         "{text}"
     );
     assert!(text.contains("UTF-8"), "{text}");
-    assert_eq!(e.kind, LoadErrorKind::NotText);
+    assert!(matches!(e.kind, LoadErrorKind::NotText), "{e}");
 }
 
 #[test]
@@ -267,8 +285,48 @@ fn missing_file_is_an_io_error_naming_it() {
     let path = "/nonexistent-tileslide-dir/map.txt";
     let e = ascii::load(path, 1.0).unwrap_err();
     assert_eq!(e.location, Location::File);
-    assert!(matches!(e.kind, LoadErrorKind::Io(_)), "{e}");
+    assert!(
+        matches!(
+            e.kind,
+            LoadErrorKind::Io {
+                referenced: None,
+                ..
+            }
+        ),
+        "{e}"
+    );
     assert!(e.to_string().starts_with(path), "{e}");
+}
+
+#[test]
+fn a_missing_file_keeps_the_not_found_kind_and_the_io_error_as_its_source() {
+    let e = ascii::load("/nonexistent-tileslide-dir/map.txt", 1.0).unwrap_err();
+    // A program can tell a missing file from a refused or unreadable one.
+    assert_eq!(e.io_error_kind(), Some(std::io::ErrorKind::NotFound));
+    let source = std::error::Error::source(&e).expect("the I/O error is the source");
+    let io = source
+        .downcast_ref::<std::io::Error>()
+        .expect("the source is the std::io::Error");
+    assert_eq!(io.kind(), std::io::ErrorKind::NotFound);
+    assert!(e.to_string().ends_with(&io.to_string()), "{e}");
+    // An error that is not about reading a file has no I/O kind.
+    assert_eq!(parse_err("@").io_error_kind(), None);
+}
+
+#[test]
+fn an_unknown_character_is_a_variant_with_its_character_line_and_column() {
+    let e = parse_err("####\n#..#\n#.?#\n");
+    let (LoadErrorKind::UnknownCharacter(c), Location::LineColumn { line, column }) =
+        (&e.kind, e.location)
+    else {
+        panic!("not an unknown character at a line and column: {e}");
+    };
+    assert_eq!((*c, line, column), ('?', 3, 3));
+    assert_eq!(
+        e.to_string(),
+        "maps/test.txt:3:3: unknown tile character '?' (expected one of `.`, space, `#`, `/`, \
+         `\\`, `=`)"
+    );
 }
 
 #[test]
@@ -280,7 +338,11 @@ fn tile_for_char_agrees_with_the_design_table() {
     assert_eq!(ascii::tile_for_char('\\'), Ok(D));
     assert_eq!(ascii::tile_for_char('='), Ok(P));
     for c in ['\t', ';', 'x', '0', '\u{feff}'] {
-        assert_eq!(ascii::tile_for_char(c), Err(()), "{c:?}");
+        assert_eq!(
+            ascii::tile_for_char(c),
+            Err(ascii::UnknownTileChar(c)),
+            "{c:?}"
+        );
     }
 }
 

@@ -10,7 +10,7 @@ use std::sync::Arc;
 
 use proptest::prelude::*;
 use replica_support::{data_dir, level_names};
-use tileslide::io::{Location, ascii, baked, replica};
+use tileslide::io::{BakedFault, LoadError, LoadErrorKind, Location, ascii, baked, replica};
 use tileslide::{Cell, Ray, RayFilter, TileMap, Vec2};
 
 const CAVE: &str = "\
@@ -205,6 +205,35 @@ fn header_errors_name_the_field_and_offset() {
 }
 
 #[test]
+fn a_corrupt_file_reports_the_checksums_and_the_offset_a_program_can_read() {
+    let good = baked::to_bytes(&ascii::parse(CAVE, "cave.txt", 1.0).unwrap());
+    let stored = u64::from_le_bytes(good[24..32].try_into().unwrap());
+    let mut flipped = good.clone();
+    let last = flipped.len() - 1;
+    flipped[last] ^= 0x40;
+    let e = baked::parse(&flipped, "bad.tsm").unwrap_err();
+    assert_eq!(e.location, Location::Byte(24));
+    let LoadErrorKind::ChecksumMismatch {
+        stored: read,
+        computed,
+    } = e.kind
+    else {
+        panic!("not a checksum mismatch: {e}");
+    };
+    assert_eq!(read, stored);
+    assert_ne!(computed, stored);
+    // Not a baked map at all: the magic bytes it holds instead.
+    let mut zip = good;
+    zip[..4].copy_from_slice(b"PK\x03\x04");
+    let e = baked::parse(&zip, "bad.tsm").unwrap_err();
+    assert_eq!(e.location, Location::Byte(0));
+    assert!(
+        matches!(&e.kind, LoadErrorKind::BadMagic { found, .. } if found.starts_with(b"PK")),
+        "{e}"
+    );
+}
+
+#[test]
 fn every_truncation_is_an_error_and_none_panics() {
     let good = baked::to_bytes(&ascii::parse(CAVE, "cave.txt", 1.0).unwrap());
     for len in 0..good.len() {
@@ -349,6 +378,11 @@ fn refused(payload: &[u8]) -> (String, u64) {
     error(&wrap(payload))
 }
 
+/// The error for a well-wrapped `payload`.
+fn refused_error(payload: &[u8]) -> LoadError {
+    baked::parse(&wrap(payload), "bad.tsm").unwrap_err()
+}
+
 /// The baked payload of `map`, and the payload offset of its first active segment.
 fn baked_payload(map: &TileMap) -> (Vec<u8>, usize) {
     let payload = baked::to_bytes(map)[HEADER..].to_vec();
@@ -377,12 +411,19 @@ fn a_segment_moved_out_of_its_cell_with_a_non_unit_normal_is_refused_despite_its
         let n = f32_at(&p, at);
         put_f32(&mut p, at, 2.0 * n);
     }
-    let (text, at) = refused(&p);
+    let e = refused_error(&p);
     assert!(
-        text.contains("active segment 0") && text.contains("not what its tile makes"),
-        "{text}"
+        matches!(
+            e.kind,
+            LoadErrorKind::BakedSegments {
+                segment: Some(0),
+                fault: BakedFault::NotWhatTheTilesMake,
+                ..
+            }
+        ),
+        "{e}"
     );
-    assert_eq!(at, (HEADER + first) as u64);
+    assert_eq!(e.location, Location::Byte((HEADER + first) as u64));
     // Before this was checked, the file loaded and answered rays differently from its
     // source; what the source answers is what a loaded map must answer.
     let ray = Ray::between(Vec2::new(9.5, 0.5), Vec2::new(11.5, 0.5));
@@ -533,12 +574,23 @@ fn a_cell_whose_segments_were_dropped_is_refused() {
             record += RECORD;
         }
     }
-    let (text, at) = refused(&p);
-    assert!(
-        text.contains(&format!("cell {cell} holds no active segments")),
-        "{text}"
+    let e = refused_error(&p);
+    let width = map.width();
+    let LoadErrorKind::BakedSegments {
+        cell: at_cell,
+        segment: None,
+        fault: BakedFault::WrongCount { stored: 0, made },
+    } = e.kind
+    else {
+        panic!("not a cell holding too few segments: {e}");
+    };
+    assert_eq!(at_cell, Cell::new(cell as u32 % width, cell as u32 / width));
+    assert_eq!(made, n as u64, "{e}");
+    assert!(e.to_string().contains("it holds 0 active segments"), "{e}");
+    assert_eq!(
+        e.location,
+        Location::Byte((HEADER + counts + 2 * cell) as u64)
     );
-    assert_eq!(at, (HEADER + counts + 2 * cell) as u64);
 }
 
 /// A 96 × 96 map of noise: each cell empty or one of 16 blocks of different heights (a

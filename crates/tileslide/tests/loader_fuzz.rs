@@ -405,9 +405,14 @@ fn random_text_never_panics_and_agrees_with_a_reference_reading() {
                 }
                 (Expected::Unknown(line, column, c), Err(e)) => {
                     prop_assert_eq!(e.location, Location::LineColumn { line, column });
-                    prop_assert_eq!(e.kind, LoadErrorKind::UnknownCharacter(c));
+                    prop_assert!(
+                        matches!(e.kind, LoadErrorKind::UnknownCharacter(found) if found == c),
+                        "{e}"
+                    );
                 }
-                (Expected::NoRows, Err(e)) => prop_assert_eq!(e.kind, LoadErrorKind::NoRows),
+                (Expected::NoRows, Err(e)) => {
+                    prop_assert!(matches!(e.kind, LoadErrorKind::NoRows), "{e}")
+                }
                 (expected, got) => {
                     prop_assert!(
                         false,
@@ -438,8 +443,8 @@ fn any_cell_size_never_panics_and_fails_only_as_a_parameter_error() {
             match ascii::parse("#/\n\\=", "cell.txt", cell) {
                 Ok(map) => prop_assert_eq!(map.cell_size(), Vec2::splat(cell)),
                 Err(e) => {
-                    prop_assert!(matches!(e.kind, LoadErrorKind::Parameter(_)), "{}", e);
-                    prop_assert!(e.to_string().contains("cell size"), "{}", e);
+                    prop_assert!(matches!(e.kind, LoadErrorKind::Parameter(_)), "{e}");
+                    prop_assert!(e.to_string().contains("cell size"), "{e}");
                 }
             }
             let _ = ascii::parse(&text, "cell.txt", cell);

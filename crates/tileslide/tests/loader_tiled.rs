@@ -12,7 +12,7 @@ use tileslide::io::tiled::{
     self, ELLIPSE_SEGMENTS, Flip, MAX_TILE_COUNT, ObjectShape, PropertyValue, TiledMap,
     TiledOptions,
 };
-use tileslide::io::{LoadError, LoadErrorKind, Location};
+use tileslide::io::{LoadError, LoadErrorKind, Location, NotTiled, Unsupported};
 use tileslide::{
     Cell, HitTypes, MAX_CELLS, Ray, RayFilter, SegmentFlags, TileId, TileMap, TileSegment, Vec2,
 };
@@ -310,6 +310,15 @@ fn layers_that_share_a_name_are_chosen_by_number() {
     );
     assert!(message("#5").contains("the map has 4 tile layers, so no \"#5\""));
     assert!(message("l#0").contains("no tile layer named \"l#0\""));
+    // A program offering the player another layer gets the request and every layer's name.
+    let Err(e) = with("lava") else {
+        panic!("lava loaded");
+    };
+    let LoadErrorKind::UnknownLayer { requested, layers } = &e.kind else {
+        panic!("not an unknown layer: {e}");
+    };
+    assert_eq!(requested, "lava");
+    assert_eq!(layers, &["l", "l", "a#1", "a"]);
 }
 
 /// A one-layer `.tmj` map of `cells` (a CSV of gids, one row) on a `grid`-pixel grid, with
@@ -384,7 +393,7 @@ fn a_collision_vertex_just_outside_its_tile_snaps_onto_the_edge() {
     assert_eq!(
         e.to_string(),
         format!(
-            "{}: layers[0] (\"l\"): cell (0, 0), gid 0x1: tile set \"big\", tile 0: collision \
+            "{}: layer \"l\": cell (0, 0), gid 0x1: tile set \"big\", tile 0: collision \
              object 3: it reaches (130.25, 0), 2.25 px outside the tile's 128×128 pixels; only \
              vertices within 2 px of the edge are moved onto it",
             fixture("inline.tmj").display()
@@ -445,7 +454,7 @@ fn tiles_of_another_size_than_the_grid_are_placed_from_their_cells_bottom_left()
     .unwrap_err();
     assert!(
         e.to_string().contains(
-            "layers[0] (\"l\"): cell (0, 0), gid 0x80000001: tile set \"big\", tile 0: collision \
+            "layer \"l\": cell (0, 0), gid 0x80000001: tile set \"big\", tile 0: collision \
              object 1: it reaches (0, 16), 16 px outside the 16×16 grid cell its 32×32 tile is \
              placed in (from the cell's bottom-left corner)"
         ),
@@ -870,9 +879,22 @@ fn a_missing_external_tile_set_is_named_with_its_path() {
     let missing = fixture("missing.tsx");
     assert_eq!(e.path, fixture("inline.tmx"));
     assert_eq!(e.location, line_col(2, 2));
+    // The map names it at its <tileset>; the error keeps the file and the I/O error's kind.
+    let LoadErrorKind::Io {
+        referenced: Some(file),
+        source,
+    } = &e.kind
+    else {
+        panic!("not an I/O error about another file: {e}");
+    };
+    assert_eq!(
+        (file, source.kind()),
+        (&missing, std::io::ErrorKind::NotFound)
+    );
+    assert_eq!(e.io_error_kind(), Some(std::io::ErrorKind::NotFound));
     assert!(
         e.to_string().contains(&format!(
-            "cannot read the external tile set {}",
+            "cannot read the external file {}",
             missing.display()
         )),
         "{e}"
@@ -882,12 +904,11 @@ fn a_missing_external_tile_set_is_named_with_its_path() {
         .replace("kit.tsj", "missing.tsj");
     let e = tmj_err(&tmj);
     assert!(
-        e.to_string().contains(&format!(
-            "tilesets[0]: cannot read the external tile set {}",
-            fixture("missing.tsj").display()
-        )),
+        matches!(&e.kind, LoadErrorKind::Io { referenced: Some(file), .. }
+            if *file == fixture("missing.tsj")),
         "{e}"
     );
+    assert_eq!(e.path, fixture("inline.tmj"));
     // A .tsx named by a .tmj: the same message.
     let e = tmj_err(&tmj.replace("missing.tsj", "missing.tsx"));
     assert!(e.to_string().contains("missing.tsx"), "{e}");
@@ -952,8 +973,18 @@ fn an_unknown_encoding_is_named_at_its_data_element() {
     let e = tmj_err(&tmj);
     assert!(
         e.to_string()
-            .contains("layers[0] (\"tiles\"): data: unknown tile data encoding"),
+            .contains("layers[0] (\"tiles\"): unknown tile data encoding"),
         "{e}"
+    );
+    let LoadErrorKind::Unsupported(Unsupported::Encoding {
+        layer, compression, ..
+    }) = &e.kind
+    else {
+        panic!("not an unsupported encoding: {e}");
+    };
+    assert_eq!(
+        (layer.as_str(), compression.as_deref()),
+        ("layers[0] (\"tiles\")", Some("lzma"))
     );
 }
 
@@ -1165,14 +1196,16 @@ fn files_that_are_not_tiled_maps_are_named() {
         "{e}"
     );
     let e = load_err(&scratch("latin1.tmx", b"<map name=\"caf\xe9\"/>"));
-    assert_eq!(
-        (e.kind, e.location),
-        (LoadErrorKind::NotText, Location::Byte(14))
-    );
+    assert!(matches!(e.kind, LoadErrorKind::NotText), "{e}");
+    assert_eq!(e.location, Location::Byte(14));
     let e = tmx_err("<tileset name=\"x\" tilewidth=\"16\" tileheight=\"16\" tilecount=\"1\"/>");
     assert!(e.to_string().contains("root element is <tileset>"), "{e}");
+    assert!(
+        matches!(&e.kind, LoadErrorKind::NotATiledMap(NotTiled::RootElement(root)) if root == "tileset"),
+        "{e}"
+    );
     let e = load_err(&fixture("nowhere.tmx"));
-    assert!(matches!(e.kind, LoadErrorKind::Io(_)), "{e}");
+    assert_eq!(e.io_error_kind(), Some(std::io::ErrorKind::NotFound), "{e}");
 }
 
 #[test]

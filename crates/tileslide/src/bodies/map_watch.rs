@@ -342,7 +342,7 @@ mod tests {
 
     fn dig(map: &mut TileMap, cell: Cell) {
         // (An edit that changes nothing is no edit: the cell must be a wall.)
-        let floor = ascii::tile_for_char('.').unwrap_or_else(|()| panic!("no tile for '.'"));
+        let floor = ascii::tile_for_char('.').unwrap_or_else(|e| panic!("{e}: no tile for '.'"));
         map.set_tile(cell, floor).unwrap_or_else(|e| panic!("{e}"));
     }
 
@@ -409,7 +409,7 @@ mod tests {
         // One more edit than the watch places one by one: a cell filled and dug in turn.
         for k in 0..=MAX_REGIONS {
             let tile = ascii::tile_for_char(if k % 2 == 0 { '#' } else { '.' });
-            let tile = tile.unwrap_or_else(|()| panic!("no tile"));
+            let tile = tile.unwrap_or_else(|e| panic!("{e}"));
             map.set_tile(Cell::new(3, 2), tile)
                 .unwrap_or_else(|e| panic!("{e}"));
         }

@@ -236,7 +236,7 @@ mod tests {
         let mut map = pillars();
         let mut near = NearWalls::default();
         let mut watch = MapWatch::default();
-        let solid = ascii::tile_for_char('#').unwrap_or_else(|()| panic!("no tile for '#'"));
+        let solid = ascii::tile_for_char('#').unwrap_or_else(|e| panic!("{e}: no tile for '#'"));
         near.begin(1, watch.update(&map), &watch);
         let reach = Circle::new(Vec2::new(3.5, 4.5), 0.4);
         let first = near.around(0, &reach, SegmentFlags::SOLID, 0.0, &map);

@@ -26,6 +26,7 @@ use std::path::Path;
 use std::sync::Arc;
 
 use glam::Vec2;
+use thiserror::Error;
 
 use super::error::{as_text, read_file};
 use super::{LoadError, LoadErrorKind, Location};
@@ -52,16 +53,28 @@ pub(crate) const TEST_ROOM: &str = "\
 #......#
 ########";
 
-/// The tile id for an ASCII character: `Ok(None)` for empty, `Err(())` for an unknown one.
-#[allow(clippy::result_unit_err)]
-pub fn tile_for_char(c: char) -> Result<Option<TileId>, ()> {
+/// A character that stands for no tile, as [`tile_for_char`] reports it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Error)]
+#[error("unknown tile character {0:?} (expected one of `.`, space, `#`, `/`, `\\`, `=`)")]
+pub struct UnknownTileChar(pub char);
+
+/// The tile id for an ASCII character: `Ok(None)` for empty, an error naming the character
+/// for one that stands for no tile.
+///
+/// ```
+/// # use tileslide::io::ascii::{self, UnknownTileChar};
+/// assert_eq!(ascii::tile_for_char('#'), Ok(Some(ascii::SOLID)));
+/// assert_eq!(ascii::tile_for_char('.'), Ok(None));
+/// assert_eq!(ascii::tile_for_char('@'), Err(UnknownTileChar('@')));
+/// ```
+pub fn tile_for_char(c: char) -> Result<Option<TileId>, UnknownTileChar> {
     match c {
         '.' | ' ' => Ok(None),
         '#' => Ok(Some(SOLID)),
         '/' => Ok(Some(RAMP_UP_RIGHT)),
         '\\' => Ok(Some(RAMP_DOWN_RIGHT)),
         '=' => Ok(Some(ONE_WAY)),
-        _ => Err(()),
+        _ => Err(UnknownTileChar(c)),
     }
 }
 
@@ -128,7 +141,7 @@ pub fn parse(text: &str, path: impl AsRef<Path>, cell: f32) -> Result<TileMap, L
         }
         let mut row = Vec::with_capacity(line.len());
         for (col, c) in line.chars().enumerate() {
-            let tile = tile_for_char(c).map_err(|()| {
+            let tile = tile_for_char(c).map_err(|UnknownTileChar(c)| {
                 err(
                     Location::LineColumn {
                         line: line_index as u32 + 1,
@@ -201,7 +214,10 @@ mod tests {
     fn unknown_character_is_named_with_line_and_column() {
         let e = parse("; comment\n#..#\n#.x#\n", "m.txt", 1.0).unwrap_err();
         assert_eq!(e.location, Location::LineColumn { line: 3, column: 3 });
-        assert_eq!(e.kind, LoadErrorKind::UnknownCharacter('x'));
+        assert!(
+            matches!(e.kind, LoadErrorKind::UnknownCharacter('x')),
+            "{e}"
+        );
         assert_eq!(
             e.to_string(),
             "m.txt:3:3: unknown tile character 'x' (expected one of `.`, space, `#`, `/`, `\\`, `=`)"
@@ -210,12 +226,8 @@ mod tests {
 
     #[test]
     fn empty_map_is_an_error() {
-        assert_eq!(
-            parse("; only a comment\n\n", "e.txt", 1.0)
-                .unwrap_err()
-                .kind,
-            LoadErrorKind::NoRows
-        );
+        let e = parse("; only a comment\n\n", "e.txt", 1.0).unwrap_err();
+        assert!(matches!(e.kind, LoadErrorKind::NoRows), "{e}");
     }
 
     #[test]

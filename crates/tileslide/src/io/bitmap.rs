@@ -80,7 +80,15 @@ pub fn parse_tile_set(
 ) -> Result<TileSet, LoadError> {
     let path = path.as_ref();
     let error = |kind| LoadError::new(path, Location::File, kind);
-    let invalid = |message: String| error(LoadErrorKind::Invalid(message));
+    let damaged = |message: &str, e: png::DecodingError| {
+        error(LoadErrorKind::Syntax {
+            format: "PNG",
+            truncated: matches!(&e, png::DecodingError::IoError(io)
+                if io.kind() == std::io::ErrorKind::UnexpectedEof),
+            message: format!("{message}: {e}"),
+            source: Some(Box::new(e)),
+        })
+    };
     let (tw, th) = (options.tile_width, options.tile_height);
     if tw == 0 || th == 0 {
         return Err(error(LoadErrorKind::Parameter(format!(
@@ -94,7 +102,7 @@ pub fn parse_tile_set(
     decoder.set_transformations(png::Transformations::normalize_to_color8());
     let mut reader = decoder
         .read_info()
-        .map_err(|e| invalid(format!("not a readable PNG image: {e}")))?;
+        .map_err(|e| damaged("not a readable PNG image", e))?;
     let (width, height) = (reader.info().width, reader.info().height);
     let tiles = u64::from(width / tw) * u64::from(height / th);
     if tiles > u64::from(options.max_tiles) {
@@ -112,19 +120,27 @@ pub fn parse_tile_set(
         .output_buffer_size()
         .filter(|&n| n <= MAX_DECODED_BYTES)
         .ok_or_else(|| {
-            invalid(format!(
-                "the image is larger than {MAX_DECODED_BYTES} bytes decoded"
-            ))
+            let bytes = reader.output_buffer_size().unwrap_or(usize::MAX);
+            error(LoadErrorKind::BadSize {
+                field: "decoded bytes",
+                value: i64::try_from(bytes).unwrap_or(i64::MAX),
+                reason: format!(
+                    "a {width} × {height} image is larger than {MAX_DECODED_BYTES} bytes decoded"
+                ),
+            })
         })?;
     let mut pixels = vec![0u8; size];
     let frame = reader
         .next_frame(&mut pixels)
-        .map_err(|e| invalid(format!("the PNG image data is damaged: {e}")))?;
+        .map_err(|e| damaged("the PNG image data is damaged", e))?;
     let (width, height) = (frame.width, frame.height);
     if width % tw != 0 || height % th != 0 {
-        return Err(invalid(format!(
-            "a {width} × {height} image does not divide into {tw} × {th} tiles"
-        )));
+        return Err(error(LoadErrorKind::SheetSize {
+            width,
+            height,
+            tile_width: tw,
+            tile_height: th,
+        }));
     }
     let solid = solidity(
         &pixels,

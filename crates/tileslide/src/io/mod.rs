@@ -10,5 +10,8 @@ mod error;
 pub mod replica;
 #[cfg(feature = "tiled")]
 pub mod tiled;
+mod tiled_faults;
 
-pub use error::{LoadError, LoadErrorKind, Location};
+pub use baked::BakedFault;
+pub use error::{LoadError, LoadErrorKind, Location, ParserError};
+pub use tiled_faults::{NotTiled, TilePlacement, Unsupported};

@@ -19,6 +19,7 @@ use std::sync::Arc;
 
 use glam::Vec2;
 
+use super::BakedFault;
 use crate::tiles::face_kind::{canonical_faces, kind_of};
 use crate::tiles::store::{CAP_A, CAP_B, HotSegment};
 use crate::tiles::{MapError, SegmentFlags, TileId, TileMap, TileSet};
@@ -101,9 +102,10 @@ struct Local {
 
 /// Why a cell's stored segments are not what its tiles make.
 pub(super) struct Mismatch {
-    /// The segment at fault, by its index in the cell (its count, when one is missing).
-    pub index: usize,
-    pub reason: String,
+    /// The segment at fault, by its index in the cell; `None` when the cell holds too many
+    /// or too few.
+    pub index: Option<usize>,
+    pub fault: BakedFault,
 }
 
 /// Culled patterns, each worked out once.
@@ -186,16 +188,14 @@ impl Expected {
         // few roundings of the cell's corner far from the origin.
         let tolerance = size.max_element() * 1e-4 + 4.0 * f32::EPSILON * base.abs().max_element();
         expected.clear();
-        let mismatch = |index: usize, reason: String| Ok(Err(Mismatch { index, reason }));
+        let mismatch = |index, fault| Ok(Err(Mismatch { index, fault }));
         if locals.len() != stored.len() {
-            let index = locals.len().min(stored.len());
             return mismatch(
-                index,
-                format!(
-                    "its cell's tiles make {} active segments there, the file holds {}",
-                    locals.len(),
-                    stored.len()
-                ),
+                None,
+                BakedFault::WrongCount {
+                    stored: stored.len() as u64,
+                    made: locals.len() as u64,
+                },
             );
         }
         for (k, (local, s)) in locals.iter().zip(stored).enumerate() {
@@ -206,7 +206,7 @@ impl Expected {
                 None => {
                     let near = |p: Vec2, q: Vec2| (p - q).abs().max_element() <= tolerance;
                     if !(near(s.a, base + l.a) && near(s.e, l.e)) {
-                        return mismatch(k, "it is not the piece its tile makes there".into());
+                        return mismatch(Some(k), BakedFault::NotThePiece);
                     }
                     (s.a, s.e)
                 }
@@ -220,10 +220,8 @@ impl Expected {
         });
         Ok(match found {
             Some(k) => Err(Mismatch {
-                index: k,
-                reason: "its end points, normal, flags or source are not what its tile makes \
-                         there"
-                    .into(),
+                index: Some(k),
+                fault: BakedFault::NotWhatTheTilesMake,
             }),
             None => Ok(kind),
         })
@@ -271,15 +269,15 @@ pub(super) fn check_link(
     end: usize,
     other: &HotSegment,
     cell_size: Vec2,
-) -> Option<&'static str> {
+) -> Option<BakedFault> {
     let tol = cell_size.max_element() * JOIN_TOLERANCE;
     let point = if end == 0 { segment.a } else { segment.b() };
     let touches = other.a.distance_squared(point) <= tol * tol
         || other.b().distance_squared(point) <= tol * tol;
     if !touches {
-        Some("a link names a segment that does not touch its end")
+        Some(BakedFault::LinkNotTouching)
     } else if segment.normal.dot(other.normal) < -0.999 {
-        Some("a link joins two faces back to back")
+        Some(BakedFault::LinkBackToBack)
     } else {
         None
     }

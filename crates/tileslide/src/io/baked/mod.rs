@@ -50,6 +50,9 @@ use std::sync::Arc;
 use glam::Vec2;
 
 mod expected;
+mod fault;
+
+pub use fault::BakedFault;
 
 use expected::{Expected, check_link, expected_caps, pattern_of};
 
@@ -143,11 +146,11 @@ pub fn parse(data: &[u8], path: impl AsRef<Path>) -> Result<TileMap, LoadError> 
         // The bytes as text (`b"PK\x03\x04..."`), not as a signed number.
         return Err(r.error_at(
             0,
-            LoadErrorKind::Invalid(format!(
-                "`magic` is b\"{}\", expected b\"{}\": not a tileslide baked map file",
-                magic.escape_ascii(),
-                MAGIC.escape_ascii()
-            )),
+            LoadErrorKind::BadMagic {
+                expected: &MAGIC,
+                found: magic.to_vec(),
+                format: "tileslide baked map",
+            },
         ));
     }
     let version = r.u32("version")?;
@@ -190,9 +193,10 @@ pub fn parse(data: &[u8], path: impl AsRef<Path>) -> Result<TileMap, LoadError> 
         // At the checksum field, both values in hex.
         return Err(r.error_at(
             24,
-            LoadErrorKind::Invalid(format!(
-                "`checksum` is {checksum:#010x}, but the payload's CRC-32 is {found:#010x}: the file is corrupt"
-            )),
+            LoadErrorKind::ChecksumMismatch {
+                stored: checksum,
+                computed: found,
+            },
         ));
     }
     let tile_size = Vec2::new(r.f32("tile_width")?, r.f32("tile_height")?);
@@ -357,13 +361,48 @@ impl ActiveRecord {
     }
 }
 
-/// The error for active segment `k` (by rank, at `segments_at`): kept out of the load loop.
+/// The error for active segment `k` (by rank, at `segments_at`) of cell `cell` of a map
+/// `width` cells wide: kept out of the load loop.
 #[cold]
-fn bad_segment(r: &ByteReader<'_>, segments_at: u64, k: usize, reason: &str) -> LoadError {
+fn bad_segment(
+    r: &ByteReader<'_>,
+    segments_at: u64,
+    k: usize,
+    (cell, width): (usize, u32),
+    fault: BakedFault,
+) -> LoadError {
     r.error_at(
         segments_at + (k * ACTIVE_LEN) as u64,
-        LoadErrorKind::Invalid(format!("active segment {k}: {reason}")),
+        LoadErrorKind::BakedSegments {
+            cell: cell_at(cell, width),
+            segment: Some(k as u64),
+            fault,
+        },
     )
+}
+
+/// The error for cell `cell` of a map `width` cells wide, at `offset`.
+#[cold]
+fn bad_cell(
+    r: &ByteReader<'_>,
+    offset: u64,
+    (cell, width): (usize, u32),
+    fault: BakedFault,
+) -> LoadError {
+    r.error_at(
+        offset,
+        LoadErrorKind::BakedSegments {
+            cell: cell_at(cell, width),
+            segment: None,
+            fault,
+        },
+    )
+}
+
+/// Cell number `index` (row by row) of a map `width` cells wide.
+fn cell_at(index: usize, width: u32) -> Cell {
+    let width = width.max(1) as usize;
+    Cell::new((index % width) as u32, (index / width) as u32)
 }
 
 /// A baked map's grid: its size, cells and tiles (raw ids, row by row).
@@ -432,18 +471,21 @@ fn read_store(
         let next = (cell + zero_bytes(&counts_raw[2 * cell..]) / 2).min(cells);
         if kinds[cell..next].iter().fold(0, |any, &k| any | k) != 0 {
             let bad = (cell..next).find(|&c| kinds[c] != 0).unwrap_or(cell);
-            return Err(bad_kind(r, kinds_at, bad, kinds[bad]));
+            return Err(bad_kind(r, kinds_at, (bad, width), kinds[bad]));
         }
         for c in (cell..next).filter(|&c| grid.tiles[c] != EMPTY) {
             let made = expected
                 .count(pattern(c))
                 .map_err(|e| r.error_at(counts_at, e.into()))?;
             if made != 0 {
-                return Err(r.error_at(
+                return Err(bad_cell(
+                    r,
                     counts_at + 2 * c as u64,
-                    LoadErrorKind::Invalid(format!(
-                        "cell {c} holds no active segments, but its tiles make {made} there"
-                    )),
+                    (c, width),
+                    BakedFault::WrongCount {
+                        stored: 0,
+                        made: made as u64,
+                    },
                 ));
             }
         }
@@ -480,13 +522,20 @@ fn read_store(
                     r,
                     segments_at,
                     rank,
-                    "a coordinate is not finite, or it has zero length",
+                    (cell, width),
+                    BakedFault::NotFinite,
                 ));
             }
             let mut ends = [Link::NONE; 2];
             for (end, raw) in ends.iter_mut().zip(segment.links) {
                 let link = Link::from_raw(raw).ok_or_else(|| {
-                    bad_segment(r, segments_at, rank, "a link names no neighbour")
+                    bad_segment(
+                        r,
+                        segments_at,
+                        rank,
+                        (cell, width),
+                        BakedFault::LinkToNoNeighbour,
+                    )
                 })?;
                 if let Some((dc, dr, index)) = link.target() {
                     let (c, rr) = (col + dc, row + dr);
@@ -496,7 +545,8 @@ fn read_store(
                             r,
                             segments_at,
                             rank,
-                            "a link names a segment that is not there",
+                            (cell, width),
+                            BakedFault::LinkToMissingSegment,
                         ));
                     }
                 }
@@ -513,12 +563,15 @@ fn read_store(
         let kind = expected
             .check_cell(pattern(cell), base, &hot[block..])
             .map_err(|e| r.error_at(counts_at + 2 * cell as u64, e.into()))?
-            .map_err(|m| {
-                let at = rank - count + m.index.min(count.saturating_sub(1));
-                bad_segment(r, segments_at, at, &format!("in cell {cell}, {}", m.reason))
+            .map_err(|m| match m.index {
+                Some(index) => {
+                    let at = rank - count + index.min(count.saturating_sub(1));
+                    bad_segment(r, segments_at, at, (cell, width), m.fault)
+                }
+                None => bad_cell(r, counts_at + 2 * cell as u64, (cell, width), m.fault),
             })?;
         if kind != kinds[cell] {
-            return Err(bad_kind(r, kinds_at, cell, kinds[cell]));
+            return Err(bad_kind(r, kinds_at, (cell, width), kinds[cell]));
         }
         // Padding up to the block's capacity (never read; overwritten on reuse).
         let capacity = block + block_capacity(count);
@@ -566,17 +619,19 @@ fn compare_culled(
                 r,
                 segments_at,
                 rank + k,
-                &format!("in cell {cell}, it is not what its tiles make there"),
+                (cell, grid.width),
+                BakedFault::NotWhatTheTilesMake,
             ));
         }
         if made.len() != stored.len() {
-            return Err(r.error_at(
+            return Err(bad_cell(
+                r,
                 segments_at,
-                LoadErrorKind::Invalid(format!(
-                    "cell {cell} holds {} active segments, but its tiles make {} there",
-                    stored.len(),
-                    made.len()
-                )),
+                (cell, grid.width),
+                BakedFault::WrongCount {
+                    stored: stored.len() as u64,
+                    made: made.len() as u64,
+                },
             ));
         }
         rank += stored.len();
@@ -604,12 +659,12 @@ fn check_joins(
                     let target = (cell as i64 + dr * width as i64 + dc) as usize;
                     let other = &store.cell(target)[index as usize];
                     let fault = if target == cell && index as usize == i {
-                        Some("a link names its own segment")
+                        Some(BakedFault::LinkToItself)
                     } else {
                         check_link(segment, end, other, grid.cell_size)
                     };
-                    if let Some(reason) = fault {
-                        return Err(bad_segment(r, segments_at, rank, reason));
+                    if let Some(fault) = fault {
+                        return Err(bad_segment(r, segments_at, rank, (cell, grid.width), fault));
                     }
                     others[end] = Some(other);
                 }
@@ -619,7 +674,8 @@ fn check_joins(
                     r,
                     segments_at,
                     rank,
-                    "its caps are not what its links give",
+                    (cell, grid.width),
+                    BakedFault::WrongCaps,
                 ));
             }
             rank += 1;
@@ -644,11 +700,11 @@ fn zero_bytes(bytes: &[u8]) -> usize {
 
 /// The error for a cell whose kind is not the one its segments make.
 #[cold]
-fn bad_kind(r: &ByteReader<'_>, kinds_at: u64, cell: usize, kind: u8) -> LoadError {
-    r.error_at(
+fn bad_kind(r: &ByteReader<'_>, kinds_at: u64, (cell, width): (usize, u32), kind: u8) -> LoadError {
+    bad_cell(
+        r,
         kinds_at + cell as u64,
-        LoadErrorKind::Invalid(format!(
-            "cell {cell} kind {kind} does not match its segments"
-        )),
+        (cell, width),
+        BakedFault::WrongKind(kind),
     )
 }

@@ -11,8 +11,8 @@ use super::document::{Document, LayerCells, TileLayerDoc, TileSetDoc};
 use super::placement::Placement;
 use super::properties::Lookup;
 use super::shapes::{self, TileShapeError};
-use super::{Flip, SPREAD_FREE_CELLS, TileInfo, TiledMap, TiledOptions, invalid};
-use crate::io::{LoadError, LoadErrorKind, Location};
+use super::{Flip, SPREAD_FREE_CELLS, TileInfo, TiledMap, TiledOptions};
+use crate::io::{LoadError, LoadErrorKind, Location, TilePlacement};
 use crate::tiles::{MAX_CELLS, TileId, TileMap, TileSet, TileShape};
 
 /// Builds the map; `path` is the map file, named by errors about its layers.
@@ -23,8 +23,7 @@ pub(super) fn build(
 ) -> Result<TiledMap, LoadError> {
     let index = collision_layer(&doc, options, path)?;
     let layer = &doc.tile_layers[index];
-    let layer_error =
-        |message: String| invalid(path, layer.location, format!("{}: {message}", layer.label));
+    let layer_error = |kind: LoadErrorKind| LoadError::new(path, layer.location, kind);
     let grid = Grid::of(layer, doc.tile_size, path, options)?;
     let tile_size = Vec2::new(doc.tile_size.0 as f32, doc.tile_size.1 as f32);
 
@@ -45,53 +44,56 @@ pub(super) fn build(
     }
 
     let mut set =
-        TileSet::new(tile_size).map_err(|e| invalid(path, Location::File, e.to_string()))?;
+        TileSet::new(tile_size).map_err(|e| LoadError::new(path, Location::File, e.into()))?;
     let mut infos = BTreeMap::new();
     for (gid, (x, y)) in placed {
-        let at = |m: String| layer_error(format!("cell ({x}, {y}), gid {gid:#x}: {m}"));
+        let at = Box::new(TilePlacement {
+            layer: layer.name.clone(),
+            x,
+            y,
+            gid,
+        });
         let number = gid & Flip::GID_MASK;
         let flip = Flip::from_gid(gid);
-        let tile_set = doc
-            .tile_sets
-            .iter()
-            .rev()
-            .find(|s| s.first_gid <= number)
-            .ok_or_else(|| at("no tile set holds this gid (it is below every first gid)".into()))?;
+        let Some(tile_set) = doc.tile_sets.iter().rev().find(|s| s.first_gid <= number) else {
+            return Err(layer_error(LoadErrorKind::GidBelowTileSets { at }));
+        };
         let local = number - tile_set.first_gid;
         if local >= tile_set.tile_count && !tile_set.tiles.contains_key(&local) {
-            return Err(at(format!(
-                "tile set {:?} has {} tiles, so it has no tile {local}",
-                tile_set.name, tile_set.tile_count
-            )));
+            return Err(layer_error(LoadErrorKind::TileNotInSet {
+                at,
+                tile_set: tile_set.name.clone(),
+                tile_count: tile_set.tile_count,
+                tile: local,
+            }));
         }
+        let bad_tile =
+            |placed: Option<Box<TilePlacement>>, reason: String| LoadErrorKind::BadTile {
+                placed,
+                tile_set: tile_set.name.clone(),
+                tile: local,
+                reason,
+            };
         let placement = Placement {
             tile: Vec2::new(tile_set.tile_size.0 as f32, tile_set.tile_size.1 as f32),
             cell: tile_size,
             flip,
         };
+        // A tile that cannot go where it is placed is the layer's error, naming the cell; a
+        // tile wrong wherever it goes is its tile set's.
+        let definition_error =
+            |reason: String| LoadError::new(&tile_set.file, Location::File, bad_tile(None, reason));
         let shape = tile_shape(tile_set, local, &placement).map_err(|e| match e {
-            // The tile cannot go where it is placed: name the layer and cell.
-            ShapeFailure::Placement(m) => {
-                at(format!("tile set {:?}, tile {local}: {m}", tile_set.name))
-            }
-            ShapeFailure::Definition(e) => e,
+            ShapeFailure::Placement(m) => layer_error(bad_tile(Some(at.clone()), m)),
+            ShapeFailure::Definition(m) => definition_error(m),
         })?;
-        set.insert(TileId(gid), shape).map_err(|e| {
-            invalid(
-                &tile_set.file,
-                Location::File,
-                format!("tile set {:?}, tile {local}: {e}", tile_set.name),
-            )
-        })?;
+        set.insert(TileId(gid), shape)
+            .map_err(|e| definition_error(e.to_string()))?;
         let tile = tile_set.tiles.get(&local);
         let hit_types = match tile {
-            Some(t) => Lookup::of(&t.properties).hit_types().map_err(|m| {
-                invalid(
-                    &tile_set.file,
-                    Location::File,
-                    format!("tile set {:?}, tile {local}: {m}", tile_set.name),
-                )
-            })?,
+            Some(t) => Lookup::of(&t.properties)
+                .hit_types()
+                .map_err(|e| definition_error(e.to_string()))?,
             None => crate::HitTypes::NONE,
         };
         infos.insert(
@@ -114,12 +116,9 @@ pub(super) fn build(
     let mut object_layers = doc.object_layers;
     for layer in &mut object_layers {
         for object in &mut layer.objects {
-            object.hit_types = Lookup::of(&object.properties).hit_types().map_err(|m| {
-                invalid(
-                    path,
-                    Location::File,
-                    format!("object layer {:?}, object {}: {m}", layer.name, object.id),
-                )
+            object.hit_types = Lookup::of(&object.properties).hit_types().map_err(|e| {
+                let owner = format!("object layer {:?}, object {}", layer.name, object.id);
+                LoadError::new(path, Location::File, e.of(&owner))
             })?;
         }
     }
@@ -137,10 +136,10 @@ pub(super) fn build(
 /// Why a placed tile has no shape.
 enum ShapeFailure {
     /// Its collision cannot be placed in its cell (it reaches a neighbour, or the flip is
-    /// not defined for the tile): a message for the layer's error.
+    /// not defined for the tile): an error of the layer, naming the cell.
     Placement(String),
-    /// The tile's own definition is wrong: an error naming its tile set's file.
-    Definition(LoadError),
+    /// The tile's own definition is wrong: an error of its tile set's file.
+    Definition(String),
 }
 
 /// The shape of tile `local` of `set` as `placement` puts it in its cell. A tile without
@@ -150,13 +149,7 @@ fn tile_shape(
     local: u32,
     placement: &Placement,
 ) -> Result<TileShape, ShapeFailure> {
-    let error = |m: String| {
-        ShapeFailure::Definition(invalid(
-            &set.file,
-            Location::File,
-            format!("tile set {:?}, tile {local}: {m}", set.name),
-        ))
-    };
+    let error = ShapeFailure::Definition;
     let Some(tile) = set.tiles.get(&local) else {
         return Ok(TileShape::empty());
     };
@@ -184,79 +177,46 @@ fn collision_layer(
     path: &Path,
 ) -> Result<usize, LoadError> {
     if let Some(choice) = &options.layer {
-        return chosen_layer(&doc.tile_layers, choice)
-            .map_err(|m| invalid(path, Location::File, m));
+        return chosen_layer(&doc.tile_layers, choice).ok_or_else(|| {
+            let kind = LoadErrorKind::UnknownLayer {
+                requested: choice.clone(),
+                layers: doc.tile_layers.iter().map(|l| l.name.clone()).collect(),
+            };
+            LoadError::new(path, Location::File, kind)
+        });
     }
     for (i, layer) in doc.tile_layers.iter().enumerate() {
         let collision = Lookup::of(&layer.properties)
             .bool("collision")
-            .map_err(|m| invalid(path, layer.location, format!("{}: {m}", layer.label)))?;
+            .map_err(|e| LoadError::new(path, layer.location, e.of(&layer.label)))?;
         if collision == Some(true) {
             return Ok(i);
         }
     }
     if doc.tile_layers.is_empty() {
-        return Err(invalid(path, Location::File, "the map has no tile layer"));
+        return Err(LoadError::new(
+            path,
+            Location::File,
+            LoadErrorKind::NoTileLayer,
+        ));
     }
     Ok(0)
 }
 
 /// The tile layer `choice` names: the first layer named `choice`; else, for `NAME#N`, the
 /// N-th (from 1) tile layer named `NAME`, and for `#N` the N-th tile layer of the file. Tiled
-/// lets layers share a name, and this is how to choose the second.
-fn chosen_layer(layers: &[TileLayerDoc], choice: &str) -> Result<usize, String> {
+/// lets layers share a name, and this is how to choose the second. `None` when there is no
+/// such layer ([`LoadErrorKind::UnknownLayer`] says why).
+fn chosen_layer(layers: &[TileLayerDoc], choice: &str) -> Option<usize> {
     if let Some(i) = layers.iter().position(|l| l.name == choice) {
-        return Ok(i);
+        return Some(i);
     }
-    // Every layer as a choice that picks it: "walls", then "walls#2" for a second "walls".
-    let choices = || {
-        let mut seen = BTreeMap::<&str, usize>::new();
-        let names: Vec<String> = layers
-            .iter()
-            .map(|l| {
-                let n = seen.entry(&l.name).or_default();
-                *n += 1;
-                if *n == 1 {
-                    format!("{:?}", l.name)
-                } else {
-                    format!("{:?}", format!("{}#{n}", l.name))
-                }
-            })
-            .collect();
-        names.join(", ")
-    };
-    let numbered = choice
+    let (name, n) = choice
         .rsplit_once('#')
-        .and_then(|(name, n)| Some((name, n.parse::<usize>().ok().filter(|&n| n >= 1)?)));
-    let Some((name, n)) = numbered else {
-        return Err(format!(
-            "the map has no tile layer named {choice:?} (its tile layers: {})",
-            choices()
-        ));
-    };
-    let candidates: Vec<usize> = (0..layers.len())
+        .and_then(|(name, n)| Some((name, n.parse::<usize>().ok().filter(|&n| n >= 1)?)))?;
+    (0..layers.len())
         .filter(|&i| name.is_empty() || layers[i].name == name)
-        .collect();
-    if let Some(&i) = candidates.get(n - 1) {
-        return Ok(i);
-    }
-    Err(if name.is_empty() {
-        format!(
-            "the map has {} tile layers, so no {choice:?}",
-            candidates.len()
-        )
-    } else if candidates.is_empty() {
-        format!(
-            "the map has no tile layer named {name:?} (its tile layers: {})",
-            choices()
-        )
-    } else {
-        format!(
-            "the map has {} tile layers named {name:?}, so no {choice:?} (its tile layers: {})",
-            candidates.len(),
-            choices()
-        )
-    })
+        .nth(n - 1)
 }
 
 /// The collision layer's grid: its size and where its cell (0, 0) is.
@@ -304,13 +264,9 @@ impl Grid {
                     );
                 }
                 if chunks.is_empty() {
-                    return Err(invalid(
-                        path,
-                        layer.location,
-                        format!(
-                            "{}: the infinite layer has no chunks, so no cells",
-                            layer.label
-                        ),
+                    return Err(bad_size(
+                        0,
+                        "the infinite layer has no chunks, so no cells".into(),
                     ));
                 }
                 (min, max)

@@ -68,7 +68,7 @@ pub use properties::{Properties, PropertyValue};
 pub use shapes::ELLIPSE_SEGMENTS;
 
 use super::error::{as_text, read_file};
-use super::{LoadError, LoadErrorKind, Location};
+use super::{LoadError, Location, NotTiled};
 use crate::HitTypes;
 use crate::tiles::{TileId, TileMap};
 
@@ -223,10 +223,10 @@ pub fn load(path: impl AsRef<Path>, options: &TiledOptions) -> Result<TiledMap, 
         Some("tmx") => parse_tmx,
         Some("tmj" | "json") => parse_tmj,
         _ => {
-            return Err(invalid(
+            return Err(LoadError::new(
                 path,
                 Location::File,
-                "not a Tiled map: expected a .tmx, .tmj or .json file",
+                NotTiled::Extension(extension).into(),
             ));
         }
     };
@@ -301,9 +301,4 @@ fn line_column(text: &str, offset: usize) -> Location {
         line: before.matches('\n').count() as u32 + 1,
         column: before[line_start..].chars().count() as u32 + 1,
     }
-}
-
-/// An error in `path` at `location`: malformed or unsupported content, with a message.
-fn invalid(path: &Path, location: Location, message: impl Into<String>) -> LoadError {
-    LoadError::new(path, location, LoadErrorKind::Invalid(message.into()))
 }

@@ -6,6 +6,7 @@ use std::collections::BTreeMap;
 use glam::Vec2;
 
 use crate::HitTypes;
+use crate::io::LoadErrorKind;
 use crate::tiles::SegmentFlags;
 
 /// Custom properties by name, in name order.
@@ -118,6 +119,39 @@ const HIT_TYPE_NAMES: [(&str, HitTypes); 7] = [
     ("ANY", HitTypes::ANY),
 ];
 
+/// A property whose value is wrong: its name and why.
+#[derive(Debug, PartialEq)]
+pub(super) struct PropertyFault {
+    pub property: String,
+    pub reason: String,
+}
+
+impl PropertyFault {
+    pub fn new(property: &str, reason: String) -> Self {
+        Self {
+            property: property.to_owned(),
+            reason,
+        }
+    }
+}
+
+impl PropertyFault {
+    /// The load error for this property of `owner` (`layer "walls"`, `object 3`).
+    pub fn of(self, owner: &str) -> LoadErrorKind {
+        LoadErrorKind::BadProperty {
+            owner: owner.to_owned(),
+            property: self.property,
+            reason: self.reason,
+        }
+    }
+}
+
+impl std::fmt::Display for PropertyFault {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "property `{}`: {}", self.property, self.reason)
+    }
+}
+
 /// The properties of a thing, with another's as the fallback (a collision object's, then its
 /// tile's): a name set on the first wins.
 #[derive(Clone, Copy)]
@@ -149,31 +183,31 @@ impl<'a> Lookup<'a> {
     }
 
     /// A `bool` property, `None` when unset; any other type is an error naming it.
-    pub fn bool(&self, name: &str) -> Result<Option<bool>, String> {
+    pub fn bool(&self, name: &str) -> Result<Option<bool>, PropertyFault> {
         match self.get(name) {
             None => Ok(None),
             Some(PropertyValue::Bool(b)) => Ok(Some(*b)),
-            Some(other) => Err(format!(
-                "property `{name}` must be a bool, not a {}",
-                other.type_name()
+            Some(other) => Err(PropertyFault::new(
+                name,
+                format!("must be a bool, not a {}", other.type_name()),
             )),
         }
     }
 
     /// A `string` property, `None` when unset.
-    pub fn string(&self, name: &str) -> Result<Option<&'a str>, String> {
+    pub fn string(&self, name: &str) -> Result<Option<&'a str>, PropertyFault> {
         match self.get(name) {
             None => Ok(None),
             Some(PropertyValue::String(s)) => Ok(Some(s)),
-            Some(other) => Err(format!(
-                "property `{name}` must be a string, not a {}",
-                other.type_name()
+            Some(other) => Err(PropertyFault::new(
+                name,
+                format!("must be a string, not a {}", other.type_name()),
             )),
         }
     }
 
     /// The user bits: `flagN = true` sets [`SegmentFlags::user`]`(N)` for N in 0..=23.
-    pub fn user_flags(&self) -> Result<SegmentFlags, String> {
+    pub fn user_flags(&self) -> Result<SegmentFlags, PropertyFault> {
         let mut flags = SegmentFlags::NONE;
         let mut seen: Vec<&str> = Vec::new();
         for (name, _) in self.names() {
@@ -192,7 +226,7 @@ impl<'a> Lookup<'a> {
                 .ok()
                 .and_then(SegmentFlags::user)
                 .ok_or_else(|| {
-                    format!("property `{name}`: the user bits are `flag0` to `flag23`")
+                    PropertyFault::new(name, "the user bits are `flag0` to `flag23`".into())
                 })?;
             if self.bool(name)? == Some(true) {
                 flags |= bit;
@@ -203,21 +237,22 @@ impl<'a> Lookup<'a> {
 
     /// The side one-way segments face: `one_way_side` = `up` (the default), `down`, `left`
     /// or `right`, as a unit vector in y-down pixels.
-    pub fn one_way_side(&self) -> Result<Vec2, String> {
+    pub fn one_way_side(&self) -> Result<Vec2, PropertyFault> {
         match self.string("one_way_side")? {
             None | Some("up") => Ok(Vec2::NEG_Y),
             Some("down") => Ok(Vec2::Y),
             Some("left") => Ok(Vec2::NEG_X),
             Some("right") => Ok(Vec2::X),
-            Some(other) => Err(format!(
-                "property `one_way_side` = {other:?}: expected up, down, left or right"
+            Some(other) => Err(PropertyFault::new(
+                "one_way_side",
+                format!("{other:?} is not up, down, left or right"),
             )),
         }
     }
 
     /// The `hit_types` property: a comma-separated list of HIT, DEATH, COLLECT, POSSESS,
     /// DEPRESS, LAUNCH and ANY (any case); [`HitTypes::NONE`] when unset.
-    pub fn hit_types(&self) -> Result<HitTypes, String> {
+    pub fn hit_types(&self) -> Result<HitTypes, PropertyFault> {
         let Some(text) = self.string("hit_types")? else {
             return Ok(HitTypes::NONE);
         };
@@ -227,9 +262,12 @@ impl<'a> Lookup<'a> {
                 .iter()
                 .find(|(known, _)| known.eq_ignore_ascii_case(name))
                 .ok_or_else(|| {
-                    format!(
-                        "property `hit_types`: unknown hit type {name:?} (expected HIT, DEATH, \
-                         COLLECT, POSSESS, DEPRESS, LAUNCH or ANY)"
+                    PropertyFault::new(
+                        "hit_types",
+                        format!(
+                            "unknown hit type {name:?} (expected HIT, DEATH, COLLECT, POSSESS, \
+                             DEPRESS, LAUNCH or ANY)"
+                        ),
                     )
                 })?;
             types |= found.1;
@@ -280,12 +318,19 @@ mod tests {
         });
         assert_eq!(flags, want, "the object's flag5 = false hides its tile's");
         let bad = props(&[("flag24", PropertyValue::Bool(true))]);
-        assert!(Lookup::of(&bad).user_flags().unwrap_err().contains("flag0"));
+        assert!(
+            Lookup::of(&bad)
+                .user_flags()
+                .unwrap_err()
+                .reason
+                .contains("flag0")
+        );
         let typed = props(&[("flag2", PropertyValue::Int(1))]);
         assert!(
             Lookup::of(&typed)
                 .user_flags()
                 .unwrap_err()
+                .reason
                 .contains("bool")
         );
     }
@@ -303,7 +348,13 @@ mod tests {
         let p = props(&[("hit_types", PropertyValue::String("ANY".to_string()))]);
         assert_eq!(Lookup::of(&p).hit_types().unwrap(), HitTypes::ANY);
         let p = props(&[("hit_types", PropertyValue::String("HIT,BURN".to_string()))]);
-        assert!(Lookup::of(&p).hit_types().unwrap_err().contains("\"BURN\""));
+        assert!(
+            Lookup::of(&p)
+                .hit_types()
+                .unwrap_err()
+                .to_string()
+                .contains("\"BURN\"")
+        );
         assert_eq!(
             Lookup::of(&Properties::new()).hit_types().unwrap(),
             HitTypes::NONE

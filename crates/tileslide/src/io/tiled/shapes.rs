@@ -21,7 +21,7 @@ use glam::Vec2;
 use super::document::TileDoc;
 use super::objects::{MapObject, ObjectShape};
 use super::placement::Placement;
-use super::properties::Lookup;
+use super::properties::{Lookup, PropertyFault};
 use crate::tiles::{SegmentFlags, TileSegment, TileShape};
 
 /// Segments of the polygon that stands for an ellipse: its corners lie on the ellipse at
@@ -53,9 +53,9 @@ pub(super) fn tile_segments(
     // The tile's own properties are checked even when it has no collision objects.
     let own = Lookup::of(&tile.properties);
     let definition = TileShapeError::Definition;
-    own.bool("one_way").map_err(definition)?;
-    own.one_way_side().map_err(definition)?;
-    own.user_flags().map_err(definition)?;
+    own.bool("one_way").map_err(|e| definition(e.to_string()))?;
+    own.one_way_side().map_err(|e| definition(e.to_string()))?;
+    own.user_flags().map_err(|e| definition(e.to_string()))?;
     let mut out = Vec::new();
     for object in &tile.collision {
         let lookup = Lookup {
@@ -130,9 +130,10 @@ fn object_segments(
     let Some(outline) = outline(object).map_err(definition)? else {
         return Ok(());
     };
-    let one_way = lookup.bool("one_way").map_err(definition)?.unwrap_or(false);
-    let side = lookup.one_way_side().map_err(definition)?;
-    let user = lookup.user_flags().map_err(definition)?;
+    let property = |e: PropertyFault| definition(e.to_string());
+    let one_way = lookup.bool("one_way").map_err(property)?.unwrap_or(false);
+    let side = lookup.one_way_side().map_err(property)?;
+    let user = lookup.user_flags().map_err(property)?;
     let (sin, cos) = sin_cos(object.rotation).map_err(definition)?;
     let place = |p: Vec2| object.position + Vec2::new(cos * p.x - sin * p.y, sin * p.x + cos * p.y);
     let (closed, points) = match outline {

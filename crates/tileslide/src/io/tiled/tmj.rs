@@ -12,13 +12,29 @@ use serde::de;
 
 use super::document::{Chunk, Document, LayerCells, TileDoc, TileLayerDoc, TileSetDoc};
 use super::objects::ObjectLayer;
-use super::tile_data::{self, Encoding, count_message};
+use super::tile_data::{self, Encoding, count_error};
 use super::tmj_schema::{JsonData, JsonKind, JsonLayer, JsonMap, JsonTileSet, object, properties};
-use super::{Flip, invalid, line_column, tmx};
-use crate::io::{LoadError, LoadErrorKind, Location};
+use super::{Flip, line_column, tmx};
+use crate::io::{LoadError, LoadErrorKind, Location, NotTiled, Unsupported};
+
+/// The error `kind` in `path`, a JSON file whose errors (past its syntax) name the field.
+fn fail(path: &Path, kind: impl Into<LoadErrorKind>) -> LoadError {
+    LoadError::new(path, Location::File, kind.into())
+}
+
+/// The error for `owner` without `field`.
+fn missing(path: &Path, owner: &str, field: &str) -> LoadError {
+    fail(
+        path,
+        LoadErrorKind::Missing {
+            owner: owner.to_owned(),
+            field: field.to_owned(),
+        },
+    )
+}
 
 /// A JSON syntax or shape error at serde_json's line and column (converted to characters).
-fn json_error(text: &str, path: &Path, e: &serde_json::Error) -> LoadError {
+fn json_error(text: &str, path: &Path, e: serde_json::Error) -> LoadError {
     let (line, byte_column) = (e.line(), e.column());
     let column = text
         .lines()
@@ -46,34 +62,40 @@ fn json_error(text: &str, path: &Path, e: &serde_json::Error) -> LoadError {
     // serde_json appends " at line L column C": the location already says it.
     let message = e.to_string();
     let message = message.split(" at line ").next().unwrap_or(&message);
-    let cause = if e.is_eof() {
+    let message = if e.is_eof() {
         format!("truncated JSON: {message}")
     } else {
         format!("malformed JSON: {message}")
     };
-    invalid(path, location, cause)
+    let kind = LoadErrorKind::Syntax {
+        format: "JSON",
+        truncated: e.is_eof(),
+        message,
+        source: Some(Box::new(e)),
+    };
+    LoadError::new(path, location, kind)
 }
 
 /// Parses a `.tmj` map's text; `path` names it and locates its external tile sets.
 pub(super) fn parse(text: &str, path: &Path, max_cells: u64) -> Result<Document, LoadError> {
-    let error = |message: String| invalid(path, Location::File, message);
     let json: JsonMap = match serde_json::from_str(text) {
         Ok(json) => json,
         // Valid JSON that fails as a map is most likely some other JSON: say so rather
         // than name the first field it lacks.
-        Err(e) => return Err(not_a_map(text).map_or_else(|| json_error(text, path, &e), error)),
+        Err(e) => {
+            return Err(match not_a_map(text) {
+                Some(why) => fail(path, why),
+                None => json_error(text, path, e),
+            });
+        }
     };
     if let Some(why) = kind_mismatch(json.kind.as_deref(), json.orientation.is_some()) {
-        return Err(error(why));
+        return Err(fail(path, why));
     }
     match json.orientation.as_deref() {
         Some("orthogonal") => {}
-        Some(other) => {
-            return Err(error(format!(
-                "`orientation` {other:?} is not supported: tileslide loads orthogonal maps only"
-            )));
-        }
-        None => return Err(error("the map has no `orientation`".into())),
+        Some(other) => return Err(fail(path, Unsupported::Orientation(other.into()))),
+        None => return Err(missing(path, "the map", "orientation")),
     }
     for (field, value) in [
         ("tilewidth", json.tilewidth),
@@ -103,34 +125,30 @@ pub(super) fn parse(text: &str, path: &Path, max_cells: u64) -> Result<Document,
         tile_sets,
         tile_layers: walk.tile_layers,
         object_layers: walk.object_layers,
-        properties: properties(&json.properties).map_err(error)?,
+        properties: properties(&json.properties).map_err(|e| fail(path, e.of("the map")))?,
     })
 }
 
 /// Why valid JSON `text` is not a Tiled map, or `None` if it may be one (or is not valid
 /// JSON, which the map parser names at its line and column).
-fn not_a_map(text: &str) -> Option<String> {
+fn not_a_map(text: &str) -> Option<NotTiled> {
     match serde_json::from_str::<JsonKind>(text) {
         Ok(probe) => kind_mismatch(probe.kind.as_deref(), probe.orientation.is_some()),
         Err(_) => serde_json::from_str::<de::IgnoredAny>(text)
             .ok()
-            .map(|_| "not a Tiled JSON map: the file is JSON but not an object".to_string()),
+            .map(|_| NotTiled::NotAnObject),
     }
 }
 
 /// Why a JSON object whose `type` is `kind` is not a Tiled map: Tiled writes `"type": "map"`
 /// (since 1.2; older maps have no `type` but have an `orientation`).
-fn kind_mismatch(kind: Option<&str>, has_orientation: bool) -> Option<String> {
+fn kind_mismatch(kind: Option<&str>, has_orientation: bool) -> Option<NotTiled> {
     match kind {
         Some("map") => None,
-        Some("tileset") => Some("a Tiled tile set (\"type\": \"tileset\"), not a map".into()),
-        Some(other) => Some(format!(
-            "not a Tiled JSON map: its `type` is {other:?}, not \"map\""
-        )),
+        Some("tileset") => Some(NotTiled::TileSet),
+        Some(other) => Some(NotTiled::JsonType(other.into())),
         None if has_orientation => None,
-        None => Some(
-            "not a Tiled JSON map: it has neither `\"type\": \"map\"` nor an `orientation`".into(),
-        ),
+        None => Some(NotTiled::UntypedJson),
     }
 }
 
@@ -154,12 +172,11 @@ fn check_grid(
     height: Option<u32>,
     max_cells: u64,
 ) -> Result<(u32, u32), LoadError> {
-    let (Some(width), Some(height)) = (width, height) else {
-        return Err(invalid(
-            path,
-            Location::File,
-            format!("{what}: `width` and `height` are required"),
-        ));
+    let Some(width) = width else {
+        return Err(missing(path, what, "width"));
+    };
+    let Some(height) = height else {
+        return Err(missing(path, what, "height"));
     };
     for (field, value) in [("width", width), ("height", height)] {
         if value == 0 {
@@ -188,19 +205,17 @@ fn check_grid(
 
 /// A map's tile set entry: embedded, or loaded from its `.tsj`/`.tsx` file.
 fn tile_set(set: &JsonTileSet, map_path: &Path, field: &str) -> Result<TileSetDoc, LoadError> {
-    let first_gid = set
-        .firstgid
-        .filter(|g| (1..=Flip::GID_MASK).contains(g))
-        .ok_or_else(|| {
-            invalid(
-                map_path,
-                Location::File,
-                format!(
-                    "{field}.firstgid is missing or not from 1 to {}",
-                    Flip::GID_MASK
-                ),
-            )
-        })?;
+    let Some(first_gid) = set.firstgid else {
+        return Err(missing(map_path, field, "firstgid"));
+    };
+    if !(1..=Flip::GID_MASK).contains(&first_gid) {
+        return Err(bad_size(
+            map_path,
+            "firstgid",
+            first_gid.into(),
+            format!("{field}: must be from 1 to {}", Flip::GID_MASK),
+        ));
+    }
     let Some(source) = &set.source else {
         return tile_set_doc(set, first_gid, map_path, field);
     };
@@ -212,15 +227,12 @@ fn tile_set(set: &JsonTileSet, map_path: &Path, field: &str) -> Result<TileSetDo
     if extension.as_deref() == Some("tsx") {
         return tmx::load_tile_set(&file, map_path, Location::File, first_gid);
     }
-    let bytes = std::fs::read(&file).map_err(|e| {
-        invalid(
-            map_path,
-            Location::File,
-            format!(
-                "{field}: cannot read the external tile set {}: {e}",
-                file.display()
-            ),
-        )
+    let bytes = std::fs::read(&file).map_err(|source| {
+        let kind = LoadErrorKind::Io {
+            referenced: Some(file.clone()),
+            source,
+        };
+        fail(map_path, kind)
     })?;
     let text = std::str::from_utf8(&bytes).map_err(|e| {
         LoadError::new(
@@ -230,7 +242,7 @@ fn tile_set(set: &JsonTileSet, map_path: &Path, field: &str) -> Result<TileSetDo
         )
     })?;
     let external: JsonTileSet =
-        serde_json::from_str(text).map_err(|e| json_error(text, &file, &e))?;
+        serde_json::from_str(text).map_err(|e| json_error(text, &file, e))?;
     tile_set_doc(&external, first_gid, &file, "tile set")
 }
 
@@ -240,32 +252,38 @@ fn tile_set_doc(
     file: &Path,
     field: &str,
 ) -> Result<TileSetDoc, LoadError> {
-    let error = |m: String| invalid(file, Location::File, format!("{field}: {m}"));
-    let (Some(width), Some(height), Some(count)) = (set.tilewidth, set.tileheight, set.tilecount)
+    let owner = format!("{field} {:?}", set.name);
+    let [Some(width), Some(height), Some(count)] = [set.tilewidth, set.tileheight, set.tilecount]
     else {
-        return Err(error(
-            "`tilewidth`, `tileheight` and `tilecount` are required".into(),
-        ));
+        let absent = [
+            ("tilewidth", set.tilewidth),
+            ("tileheight", set.tileheight),
+            ("tilecount", set.tilecount),
+        ]
+        .into_iter()
+        .find_map(|(name, v)| v.is_none().then_some(name))
+        .unwrap_or("tilecount");
+        return Err(missing(file, &owner, absent));
     };
-    if width == 0 || height == 0 {
-        return Err(error(format!(
-            "tile size {width}×{height} must be at least 1×1"
-        )));
+    for (name, value) in [("tilewidth", width), ("tileheight", height)] {
+        if value == 0 {
+            return Err(bad_size(
+                file,
+                name,
+                0,
+                format!("{owner}: must be at least 1"),
+            ));
+        }
     }
     let mut tiles = BTreeMap::new();
     for (i, tile) in set.tiles.iter().enumerate() {
-        let field = format!("tiles[{i}] (tile {})", tile.id);
+        let field = format!("{owner}, tiles[{i}] (tile {})", tile.id);
         let collision = match &tile.objectgroup {
             Some(group) => group
                 .objects
                 .iter()
-                .enumerate()
-                .map(|(j, o)| {
-                    object(o, Vec2::ZERO)
-                        .map_err(|m| format!("{field}.objectgroup.objects[{j}]: {m}"))
-                })
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(error)?,
+                .map(|o| object(o, Vec2::ZERO).map_err(|kind| fail(file, kind)))
+                .collect::<Result<Vec<_>, _>>()?,
             None => Vec::new(),
         };
         let doc = TileDoc {
@@ -274,7 +292,7 @@ fn tile_set_doc(
                 .clone()
                 .or_else(|| tile.kind.clone())
                 .unwrap_or_default(),
-            properties: properties(&tile.properties).map_err(|m| error(format!("{field}: {m}")))?,
+            properties: properties(&tile.properties).map_err(|e| fail(file, e.of(&field)))?,
             collision,
         };
         tiles.insert(tile.id, doc);
@@ -303,14 +321,14 @@ impl LayerWalk<'_> {
         for (i, layer) in layers.iter().enumerate() {
             let field = format!("{field}[{i}]");
             let label = format!("{field} ({:?})", layer.name);
-            let error = |m: String| invalid(self.path, Location::File, format!("{label}: {m}"));
+            let property = |e: super::properties::PropertyFault| fail(self.path, e.of(&label));
             let offset = offset + Vec2::new(layer.offsetx, layer.offsety);
             match layer.kind.as_str() {
                 "tilelayer" => {
                     let cells = self.cells(layer, &label)?;
                     self.tile_layers.push(TileLayerDoc {
                         name: layer.name.clone(),
-                        properties: properties(&layer.properties).map_err(error)?,
+                        properties: properties(&layer.properties).map_err(property)?,
                         offset,
                         cells,
                         location: Location::File,
@@ -321,14 +339,12 @@ impl LayerWalk<'_> {
                     let objects = layer
                         .objects
                         .iter()
-                        .enumerate()
-                        .map(|(j, o)| object(o, offset).map_err(|m| format!("objects[{j}]: {m}")))
-                        .collect::<Result<Vec<_>, _>>()
-                        .map_err(error)?;
+                        .map(|o| object(o, offset).map_err(|kind| fail(self.path, kind)))
+                        .collect::<Result<Vec<_>, _>>()?;
                     self.object_layers.push(ObjectLayer {
                         name: layer.name.clone(),
                         class: layer.class.clone(),
-                        properties: properties(&layer.properties).map_err(error)?,
+                        properties: properties(&layer.properties).map_err(property)?,
                         objects,
                     });
                 }
@@ -340,7 +356,6 @@ impl LayerWalk<'_> {
     }
 
     fn cells(&self, layer: &JsonLayer, label: &str) -> Result<LayerCells, LoadError> {
-        let error = |m: String| invalid(self.path, Location::File, format!("{label}: {m}"));
         let compression = layer.compression.as_deref().filter(|c| !c.is_empty());
         if !self.infinite {
             let (width, height) =
@@ -348,9 +363,15 @@ impl LayerWalk<'_> {
             let data = layer
                 .data
                 .as_ref()
-                .ok_or_else(|| error("a tile layer needs `data`".into()))?;
-            let gids = gids(data, layer.encoding.as_deref(), compression, width, height)
-                .map_err(|m| error(format!("data: {m}")))?;
+                .ok_or_else(|| missing(self.path, label, "data"))?;
+            let gids = gids(
+                data,
+                layer.encoding.as_deref(),
+                compression,
+                (width, height),
+                label,
+            )
+            .map_err(|kind| fail(self.path, kind))?;
             return Ok(LayerCells::Finite {
                 width,
                 height,
@@ -394,10 +415,10 @@ impl LayerWalk<'_> {
                 &chunk.data,
                 layer.encoding.as_deref(),
                 compression,
-                width,
-                height,
+                (width, height),
+                &what,
             )
-            .map_err(|m| invalid(self.path, Location::File, format!("{what}.data: {m}")))?;
+            .map_err(|kind| fail(self.path, kind))?;
             out.push(Chunk {
                 x: chunk.x,
                 y: chunk.y,
@@ -410,35 +431,50 @@ impl LayerWalk<'_> {
     }
 }
 
-/// The gids of `data` for a `width × height` grid (already within the limits).
+/// The gids of `owner`'s `data` for a `width × height` grid (already within the limits).
 fn gids(
     data: &JsonData,
     encoding: Option<&str>,
     compression: Option<&str>,
-    width: u32,
-    height: u32,
-) -> Result<Vec<u32>, String> {
+    (width, height): (u32, u32),
+    owner: &str,
+) -> Result<Vec<u32>, LoadErrorKind> {
     let cells = width as usize * height as usize;
+    let bad_value = |field, found, expected| LoadErrorKind::BadValue {
+        owner: owner.to_owned(),
+        field,
+        found,
+        expected,
+    };
     match data {
         JsonData::Gids(gids) => {
             if !matches!(encoding, None | Some("csv")) || compression.is_some() {
-                return Err(format!(
-                    "an array of gids with encoding {:?} and compression {:?}: expected a base64 string",
-                    encoding.unwrap_or("csv"),
-                    compression.unwrap_or("none")
+                return Err(bad_value(
+                    "data",
+                    format!(
+                        "an array of gids with encoding {:?} and compression {:?}",
+                        encoding.unwrap_or("csv"),
+                        compression.unwrap_or("none")
+                    ),
+                    "a base64 string",
                 ));
             }
             if gids.len() != cells {
-                return Err(count_message(gids.len(), false, cells));
+                return Err(count_error(owner, gids.len(), false, cells));
             }
             Ok(gids.clone())
         }
         JsonData::Text(text) => {
-            let encoding = Encoding::from_attributes(Some(encoding.unwrap_or("csv")), compression)?;
+            let encoding =
+                Encoding::from_attributes(Some(encoding.unwrap_or("csv")), compression, owner)?;
             if encoding == Encoding::Csv {
-                return Err("a string of data needs `encoding` = \"base64\"".into());
+                return Err(bad_value(
+                    "encoding",
+                    "\"csv\" for a string of data".into(),
+                    "\"base64\"",
+                ));
             }
-            tile_data::decode(text, encoding, cells).map_err(|e| e.message)
+            tile_data::decode(text, encoding, cells, owner).map_err(|e| e.kind)
         }
     }
 }

@@ -8,8 +8,9 @@ use serde::Deserialize;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
 
 use super::objects::{MapObject, ObjectShape};
-use super::properties::{Properties, PropertyValue, parse_color};
+use super::properties::{Properties, PropertyFault, PropertyValue, parse_color};
 use crate::HitTypes;
+use crate::io::{LoadErrorKind, Unsupported};
 
 #[derive(Deserialize)]
 pub(super) struct JsonMap {
@@ -198,13 +199,15 @@ pub(super) struct JsonProperty {
     pub value: serde_json::Value,
 }
 
-pub(super) fn object(o: &JsonObject, offset: Vec2) -> Result<MapObject, String> {
+/// The object `o`, moved by its layer's `offset`; an error for an object made from a
+/// template (which only `.tmx` maps resolve) or with a property of the wrong type.
+pub(super) fn object(o: &JsonObject, offset: Vec2) -> Result<MapObject, LoadErrorKind> {
     if let Some(template) = &o.template {
-        return Err(format!(
-            "object {} uses the template {template:?}: templates are supported in .tmx maps only \
-             (detach it in Tiled, or save the map as .tmx)",
-            o.id
-        ));
+        return Err(Unsupported::TemplateInTmj {
+            object: o.id,
+            template: template.clone(),
+        }
+        .into());
     }
     let points = |list: &[JsonPoint]| list.iter().map(|p| Vec2::new(p.x, p.y)).collect();
     let size = Vec2::new(o.width, o.height);
@@ -237,16 +240,17 @@ pub(super) fn object(o: &JsonObject, offset: Vec2) -> Result<MapObject, String> 
         visible: o.visible,
         shape,
         gid: o.gid,
-        properties: properties(&o.properties).map_err(|m| format!("object {}: {m}", o.id))?,
+        properties: properties(&o.properties)
+            .map_err(|fault| fault.of(&format!("object {}", o.id)))?,
         hit_types: HitTypes::NONE,
     })
 }
 
-pub(super) fn properties(list: &[JsonProperty]) -> Result<Properties, String> {
+pub(super) fn properties(list: &[JsonProperty]) -> Result<Properties, PropertyFault> {
     list.iter()
         .map(|p| {
             let value = property(p.kind.as_deref(), &p.propertytype, &p.value)
-                .map_err(|m| format!("property `{}`: {m}", p.name))?;
+                .map_err(|reason| PropertyFault::new(&p.name, reason))?;
             Ok((p.name.clone(), value))
         })
         .collect()

@@ -6,14 +6,14 @@ use std::path::{Path, PathBuf};
 
 use glam::Vec2;
 
+use super::Flip;
 use super::document::{Document, TileDoc, TileLayerDoc, TileSetDoc};
 use super::objects::{MapObject, ObjectLayer, ObjectShape};
 use super::properties::{Properties, PropertyValue};
 use super::tmx_scan::{self, ScannedLayer};
-use super::{Flip, invalid};
 use crate::HitTypes;
 use crate::io::error::as_text;
-use crate::io::{LoadError, Location};
+use crate::io::{LoadError, LoadErrorKind, Location};
 
 /// Serves the map's text from memory and every other file from disk, each checked by the
 /// first pass before the `tiled` crate sees it. The first problem is kept for the caller:
@@ -46,16 +46,16 @@ impl GuardedReader {
     }
 
     fn read_external(&self, path: &Path) -> Result<Vec<u8>, LoadError> {
-        let bytes = std::fs::read(path).map_err(|e| {
-            let (location, what) = match self.references.iter().find(|(p, _)| p == path) {
-                Some((_, location)) => (*location, "the external tile set"),
-                None => (Location::File, "a file the map refers to,"),
+        let bytes = std::fs::read(path).map_err(|source| {
+            let location = match self.references.iter().find(|(p, _)| p == path) {
+                Some((_, location)) => *location,
+                None => Location::File,
             };
-            invalid(
-                &self.referrer,
-                location,
-                format!("cannot read {what} {}: {e}", path.display()),
-            )
+            let kind = LoadErrorKind::Io {
+                referenced: Some(path.to_path_buf()),
+                source,
+            };
+            LoadError::new(&self.referrer, location, kind)
         })?;
         let text = as_text(&bytes, path)?;
         tmx_scan::scan_external(text, path)?;
@@ -79,9 +79,21 @@ impl ::tiled::ResourceReader for GuardedReader {
     }
 }
 
+/// An error the `tiled` crate reported and the first pass did not foresee (`e`), or a
+/// disagreement between the two readings (`message`).
+fn crate_error(path: &Path, message: String, e: Option<::tiled::Error>) -> LoadError {
+    let kind = LoadErrorKind::Syntax {
+        format: "Tiled",
+        truncated: false,
+        message,
+        source: e.map(|e| Box::new(e) as _),
+    };
+    LoadError::new(path, Location::File, kind)
+}
+
 /// An error the `tiled` crate reported and the first pass did not foresee.
-fn crate_error(path: &Path, e: &::tiled::Error) -> LoadError {
-    invalid(path, Location::File, format!("invalid Tiled file: {e}"))
+fn refused(path: &Path, e: ::tiled::Error) -> LoadError {
+    crate_error(path, format!("invalid Tiled file: {e}"), Some(e))
 }
 
 /// Parses a `.tmx` map's text; `path` names it and locates its external files.
@@ -101,17 +113,14 @@ pub(super) fn parse(text: &str, path: &Path, max_cells: u64) -> Result<Document,
     let map = match loaded {
         Ok(map) => map,
         Err(e) => {
-            return Err(reader
-                .failure
-                .take()
-                .unwrap_or_else(|| crate_error(path, &e)));
+            return Err(reader.failure.take().unwrap_or_else(|| refused(path, e)));
         }
     };
     if map.tilesets().len() != scan.tile_sets.len() {
-        return Err(invalid(
+        return Err(crate_error(
             path,
-            Location::File,
-            "the tiled crate and the first pass disagree on the tile sets",
+            "the tiled crate and the first pass disagree on the tile sets".into(),
+            None,
         ));
     }
     let first_gids: Vec<u32> = scan.tile_sets.iter().map(|t| t.first_gid).collect();
@@ -154,10 +163,7 @@ pub(super) fn load_tile_set(
     let (_, mut reader) = loader.into_inner();
     match loaded {
         Ok(set) => Ok(tile_set_doc(&set, first_gid)),
-        Err(e) => Err(reader
-            .failure
-            .take()
-            .unwrap_or_else(|| crate_error(path, &e))),
+        Err(e) => Err(reader.failure.take().unwrap_or_else(|| refused(path, e))),
     }
 }
 
@@ -215,13 +221,13 @@ impl LayerWalk<'_> {
                 ::tiled::LayerType::Tiles(_) => {
                     let scanned = self.scanned.next().filter(|s| s.name == layer.name);
                     let Some(scanned) = scanned else {
-                        return Err(invalid(
+                        return Err(crate_error(
                             self.path,
-                            Location::File,
                             format!(
                                 "the tiled crate and the first pass disagree on layer {:?}",
                                 layer.name
                             ),
+                            None,
                         ));
                     };
                     self.tile_layers.push(TileLayerDoc {

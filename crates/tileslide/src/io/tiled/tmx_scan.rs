@@ -15,7 +15,7 @@ use super::document::{Chunk, LayerCells};
 use super::tile_data::{self, DataError, Encoding};
 use super::xml_walker::{Element, Item, Walker};
 use super::{MAX_TILE_COUNT, line_column};
-use crate::io::{LoadError, Location};
+use crate::io::{LoadError, Location, NotTiled, Unsupported};
 
 /// What the first pass learned about a map.
 #[derive(Debug)]
@@ -160,10 +160,7 @@ pub(super) fn scan_map(text: &str, path: &Path, max_cells: u64) -> Result<Scanne
                 match (parent.as_deref(), element.name.as_str()) {
                     (None, "map") => header = Some(map_header(&w, &element)?),
                     (None, other) => {
-                        return Err(w.error(
-                            element.offset,
-                            format!("not a Tiled map: the root element is <{other}>, not <map>"),
-                        ));
+                        return Err(w.fail(element.offset, NotTiled::RootElement(other.into())));
                     }
                     (Some("map"), "tileset") => tile_sets.push(tile_set_ref(&w, &element)?),
                     (Some("map" | "group"), "layer") => {
@@ -185,11 +182,13 @@ pub(super) fn scan_map(text: &str, path: &Path, max_cells: u64) -> Result<Scanne
                         });
                     }
                     (Some("layer"), "data") => {
+                        let name = layer.as_ref().map_or("", |l| &l.name);
                         let encoding = Encoding::from_attributes(
                             w.attribute(&element, "encoding"),
                             w.attribute(&element, "compression"),
+                            &format!("layer {name:?}"),
                         )
-                        .map_err(|m| w.error(element.offset, m))?;
+                        .map_err(|u| w.fail(element.offset, u))?;
                         if let Some(layer) = layer.as_mut() {
                             layer.encoding = Some(encoding);
                             if layer.size.is_some() {
@@ -237,7 +236,7 @@ pub(super) fn scan_map(text: &str, path: &Path, max_cells: u64) -> Result<Scanne
         }
     }
     let Some((tile_size, _)) = header else {
-        return Err(w.error(0, "not a Tiled map: no <map> element"));
+        return Err(w.fail(0, NotTiled::NoMapElement));
     };
     Ok(ScannedMap {
         tile_size,
@@ -251,18 +250,13 @@ fn map_header(w: &Walker<'_>, element: &Element) -> Result<((u32, u32), bool), L
     match w.attribute(element, "orientation") {
         Some("orthogonal") => {}
         Some(other) => {
-            return Err(w.error(
-                element.offset,
-                format!(
-                    "orientation {other:?} is not supported: tileslide loads orthogonal maps only"
-                ),
-            ));
+            return Err(w.fail(element.offset, Unsupported::Orientation(other.into())));
         }
-        None => return Err(w.error(element.offset, "<map> has no `orientation` attribute")),
+        None => return Err(w.missing(element, "orientation")),
     }
     // The tiled crate needs `version`; without it, it fails with no position.
     if w.attribute(element, "version").is_none() {
-        return Err(w.error(element.offset, "<map> has no `version` attribute"));
+        return Err(w.missing(element, "version"));
     }
     let infinite = w.attribute(element, "infinite") == Some("1");
     if !infinite {
@@ -296,13 +290,7 @@ fn tile_set_ref(w: &Walker<'_>, element: &Element) -> Result<TileSetRef, LoadErr
                 .and_then(|e| e.to_str())
                 .map(str::to_ascii_lowercase);
             if matches!(extension.as_deref(), Some("tsj" | "json")) {
-                return Err(w.error(
-                    element.offset,
-                    format!(
-                        "external tile set {file:?} is JSON: a .tmx map's tile sets must be \
-                         .tsx files (save the tile set as .tsx, or the map as .tmj)"
-                    ),
-                ));
+                return Err(w.fail(element.offset, Unsupported::JsonTileSetInTmx(file.clone())));
             }
         }
         None => w.check_tile_set(element)?,
@@ -380,8 +368,9 @@ impl PendingData {
             (None, None) => return Ok(()),
         };
         let cells = width as usize * height as usize;
-        let gids = tile_data::decode(&self.text, self.encoding, cells)
-            .map_err(|e| self.error(w, &layer.name, e))?;
+        let owner = format!("layer {:?}", layer.name);
+        let gids = tile_data::decode(&self.text, self.encoding, cells, &owner)
+            .map_err(|e| self.error(w, e))?;
         match self.chunk {
             Some((x, y, width, height)) => layer.chunks.push(Chunk {
                 x,
@@ -395,12 +384,12 @@ impl PendingData {
         Ok(())
     }
 
-    fn error(&self, w: &Walker<'_>, layer: &str, e: DataError) -> LoadError {
+    fn error(&self, w: &Walker<'_>, e: DataError) -> LoadError {
         let offset = match (e.offset, self.text_offset) {
             (Some(at), Some(start)) if self.verbatim => start + at,
             _ => self.element_offset,
         };
-        w.error(offset, format!("layer {layer:?}: {}", e.message))
+        w.fail(offset, e.kind)
     }
 }
 
@@ -413,9 +402,12 @@ impl PendingLayer {
                 gids,
             },
             (Some(_), None) => {
-                return Err(w.error(
+                return Err(w.fail(
                     self.offset,
-                    format!("layer {:?} has no <data> element", self.name),
+                    crate::io::LoadErrorKind::Missing {
+                        owner: format!("layer {:?}", self.name),
+                        field: "<data>".into(),
+                    },
                 ));
             }
             (None, _) => LayerCells::Chunks(self.chunks),

@@ -6,7 +6,7 @@ use std::path::Path;
 use quick_xml::Reader;
 use quick_xml::events::{BytesStart, Event};
 
-use super::{invalid, line_column};
+use super::line_column;
 use crate::io::{LoadError, LoadErrorKind, Location};
 use crate::tiles::MAX_CELLS;
 
@@ -55,8 +55,28 @@ impl<'a> Walker<'a> {
         }
     }
 
-    pub fn error(&self, offset: usize, message: impl Into<String>) -> LoadError {
-        invalid(self.path, line_column(self.text, offset), message)
+    /// The error `kind` at byte `offset` of the text.
+    pub fn fail(&self, offset: usize, kind: impl Into<LoadErrorKind>) -> LoadError {
+        LoadError::new(self.path, line_column(self.text, offset), kind.into())
+    }
+
+    /// XML that quick-xml (`source`, when it gave an error) refuses, at byte `offset`.
+    fn syntax(
+        &self,
+        offset: usize,
+        truncated: bool,
+        message: String,
+        source: Option<quick_xml::Error>,
+    ) -> LoadError {
+        self.fail(
+            offset,
+            LoadErrorKind::Syntax {
+                format: "XML",
+                truncated,
+                message,
+                source: source.map(|e| Box::new(e) as _),
+            },
+        )
     }
 
     pub fn size_error(
@@ -86,7 +106,7 @@ impl<'a> Walker<'a> {
     pub fn next(&mut self) -> Result<Item, LoadError> {
         loop {
             let offset = self.reader.buffer_position();
-            let event = self.reader.read_event().map_err(|e| match e {
+            let event = self.reader.read_event().map_err(|e| match &e {
                 // A file cut inside a tag or comment: say so, at the end of the file.
                 quick_xml::Error::UnexpectedEof(what) => {
                     let what = match what.as_str() {
@@ -95,19 +115,16 @@ impl<'a> Walker<'a> {
                         "CData" => "a CDATA section".to_string(),
                         other => format!("`{other}`"),
                     };
-                    let Location::LineColumn { line, column } = line_column(self.text, offset)
-                    else {
-                        return self.error(self.text.len(), "truncated XML");
-                    };
-                    self.error(
-                        self.text.len(),
-                        format!(
+                    let message = match line_column(self.text, offset) {
+                        Location::LineColumn { line, column } => format!(
                             "the file ends inside {what} (started at {line}:{column}): truncated XML"
                         ),
-                    )
+                        _ => "truncated XML".to_string(),
+                    };
+                    self.syntax(self.text.len(), true, message, Some(e))
                 }
                 // Named at the start of the markup that is wrong.
-                e => self.error(offset, format!("malformed XML: {e}")),
+                _ => self.syntax(offset, false, format!("malformed XML: {e}"), Some(e)),
             })?;
             match event {
                 Event::Start(start) => {
@@ -122,9 +139,10 @@ impl<'a> Walker<'a> {
                 }
                 Event::Text(text) => {
                     let raw = text.len();
-                    let unescaped = text
-                        .unescape()
-                        .map_err(|e| self.error(offset, format!("malformed XML text: {e}")))?;
+                    let unescaped = text.unescape().map_err(|e| {
+                        let message = format!("malformed XML text: {e}");
+                        self.syntax(offset, false, message, Some(e))
+                    })?;
                     return Ok(Item::Text {
                         verbatim: unescaped.len() == raw,
                         text: unescaped.into_owned(),
@@ -141,17 +159,14 @@ impl<'a> Walker<'a> {
                 Event::Eof => {
                     return match self.open.last() {
                         Some((name, at)) => {
-                            let Location::LineColumn { line, column } = line_column(self.text, *at)
-                            else {
-                                return Err(self.error(self.text.len(), "the file ends early"));
-                            };
-                            Err(self.error(
-                                self.text.len(),
-                                format!(
+                            let message = match line_column(self.text, *at) {
+                                Location::LineColumn { line, column } => format!(
                                     "the file ends inside <{name}> (opened at {line}:{column}): \
                                      truncated XML"
                                 ),
-                            ))
+                                _ => "the file ends early".to_string(),
+                            };
+                            Err(self.syntax(self.text.len(), true, message, None))
                         }
                         None => Ok(Item::End),
                     };
@@ -165,13 +180,13 @@ impl<'a> Walker<'a> {
         let name = String::from_utf8_lossy(start.local_name().as_ref()).into_owned();
         let mut attributes = Vec::new();
         for attribute in start.attributes() {
-            let attribute = attribute
-                .map_err(|e| self.error(offset, format!("malformed XML attribute: {e}")))?;
+            let malformed = |e: quick_xml::Error| {
+                let message = format!("malformed XML attribute: {e}");
+                self.syntax(offset, false, message, Some(e))
+            };
+            let attribute = attribute.map_err(|e| malformed(e.into()))?;
             let key = String::from_utf8_lossy(attribute.key.local_name().as_ref()).into_owned();
-            let value = attribute
-                .unescape_value()
-                .map_err(|e| self.error(offset, format!("malformed XML attribute: {e}")))?
-                .into_owned();
+            let value = attribute.unescape_value().map_err(malformed)?.into_owned();
             attributes.push((key, value));
         }
         Ok(Element {
@@ -193,18 +208,20 @@ impl<'a> Walker<'a> {
     pub fn number<T: std::str::FromStr>(
         &self,
         element: &Element,
-        name: &str,
-        what: &str,
+        name: &'static str,
+        what: &'static str,
     ) -> Result<Option<T>, LoadError> {
         self.attribute(element, name)
             .map(|v| {
                 v.trim().parse::<T>().map_err(|_| {
-                    self.error(
+                    self.fail(
                         element.offset,
-                        format!(
-                            "<{}> attribute `{name}` = {v:?} is not {what}",
-                            element.name
-                        ),
+                        LoadErrorKind::BadValue {
+                            owner: format!("<{}>", element.name),
+                            field: name,
+                            found: format!("{v:?}"),
+                            expected: what,
+                        },
                     )
                 })
             })
@@ -214,14 +231,21 @@ impl<'a> Walker<'a> {
     pub fn required<T: std::str::FromStr>(
         &self,
         element: &Element,
-        name: &str,
-        what: &str,
+        name: &'static str,
+        what: &'static str,
     ) -> Result<T, LoadError> {
-        self.number(element, name, what)?.ok_or_else(|| {
-            self.error(
-                element.offset,
-                format!("<{}> has no `{name}` attribute", element.name),
-            )
-        })
+        self.number(element, name, what)?
+            .ok_or_else(|| self.missing(element, name))
+    }
+
+    /// The error for `element` without the attribute `name`.
+    pub fn missing(&self, element: &Element, name: &str) -> LoadError {
+        self.fail(
+            element.offset,
+            LoadErrorKind::Missing {
+                owner: format!("<{}>", element.name),
+                field: name.to_owned(),
+            },
+        )
     }
 }
