@@ -327,6 +327,18 @@ fn a_corrupt_baked_file_names_the_checksum_field_in_hex() {
     );
 }
 
+#[test]
+fn a_map_that_cannot_be_read_says_why_once() {
+    // The loader keeps the operating system's error as the cause; the message quotes it, and
+    // the command line does not repeat it.
+    let o = tileslide(&["info", "no-such-map.txt"]);
+    assert_refused(&o, "no-such-map.txt: cannot read the file: ");
+    let err = stderr(&o);
+    let os = err.trim_end().rsplit(": ").next().unwrap();
+    assert!(os.contains("os error"), "{err}");
+    assert_eq!(err.matches(os).count(), 1, "{err}");
+}
+
 #[cfg(not(feature = "peers"))]
 #[test]
 fn bench_without_the_peers_says_how_to_build_them() {

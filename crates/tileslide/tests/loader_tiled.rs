@@ -838,6 +838,18 @@ fn truncated_xml_names_the_end_and_the_open_element() {
             .contains("the file ends inside <layer> (opened at 8:2): truncated XML"),
         "{e}"
     );
+    // A program can tell a file cut short (still being written, say) from a broken one.
+    assert!(
+        matches!(
+            e.kind,
+            LoadErrorKind::Syntax {
+                format: "XML",
+                truncated: true,
+                ..
+            }
+        ),
+        "{e}"
+    );
     assert!(
         e.to_string()
             .starts_with(&format!("{}:", fixture("inline.tmx").display()))
@@ -852,6 +864,19 @@ fn malformed_xml_is_named_at_its_line_and_column() {
         "{e}"
     );
     assert!(e.to_string().contains("malformed XML"), "{e}");
+    // quick-xml's own error is the source.
+    assert!(
+        matches!(
+            e.kind,
+            LoadErrorKind::Syntax {
+                format: "XML",
+                truncated: false,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert!(std::error::Error::source(&e).is_some(), "{e}");
 }
 
 #[test]
@@ -864,6 +889,8 @@ fn truncated_and_malformed_json_name_line_and_column() {
     let e = tmj_err("{\n  \"orientation\": \"orthogonal\",\n  \"tilewidth\": 16 16\n}");
     assert_eq!(e.location, line_col(3, 19));
     assert!(e.to_string().contains("malformed JSON"), "{e}");
+    let source = std::error::Error::source(&e).expect("serde_json's error is the source");
+    assert!(source.is::<serde_json::Error>(), "{source}");
     // A value of the wrong type is named with the field and position.
     let e = tmj_err("{\"orientation\": \"orthogonal\", \"tilewidth\": \"16\", \"tileheight\": 16}");
     assert!(
@@ -1095,10 +1122,14 @@ fn other_orientations_are_refused() {
     let tmj = std::fs::read_to_string(fixture("flips.tmj"))
         .unwrap()
         .replace("orthogonal", "isometric");
+    let e = tmj_err(&tmj);
     assert!(
-        tmj_err(&tmj)
-            .to_string()
-            .contains("\"isometric\" is not supported")
+        e.to_string().contains("\"isometric\" is not supported"),
+        "{e}"
+    );
+    assert!(
+        matches!(&e.kind, LoadErrorKind::Unsupported(Unsupported::Orientation(o)) if o == "isometric"),
+        "{e}"
     );
 }
 
@@ -1110,6 +1141,17 @@ fn gids_outside_every_tile_set_are_named() {
             .contains("cell (1, 0), gid 0x63: tile set \"kit\" has 8 tiles, so it has no tile 98"),
         "{e}"
     );
+    let LoadErrorKind::TileNotInSet {
+        at,
+        tile_set,
+        tile_count,
+        tile,
+    } = &e.kind
+    else {
+        panic!("not a tile outside its tile set: {e}");
+    };
+    assert_eq!((at.layer.as_str(), at.x, at.y, at.gid), ("l", 1, 0, 0x63));
+    assert_eq!((tile_set.as_str(), *tile_count, *tile), ("kit", 8, 98));
     let text =
         two_cells(r#"<data encoding="csv">1,1</data>"#).replace("firstgid=\"1\"", "firstgid=\"5\"");
     let e = tmx_err(&text);
@@ -1174,6 +1216,18 @@ fn bad_properties_and_shapes_are_named_with_their_tile() {
         e.to_string().contains("layer \"l\": cell (0, 0), gid 0x2: tile set \"kit\", tile 1: collision object 1: it reaches (16, 20), 4 px outside the tile's 16×16 pixels"),
         "{e}"
     );
+    // The tile and where it is placed, as a program reads them.
+    let LoadErrorKind::BadTile {
+        placed: Some(at),
+        tile_set,
+        tile,
+        ..
+    } = &e.kind
+    else {
+        panic!("not a tile that cannot go where it is placed: {e}");
+    };
+    assert_eq!((at.layer.as_str(), at.x, at.y, at.gid), ("l", 0, 0, 2));
+    assert_eq!((tile_set.as_str(), *tile), ("kit", 1));
     // A bad hit type on an object.
     let tmj = std::fs::read_to_string(example("cave.tmj"))
         .unwrap()
@@ -1183,6 +1237,10 @@ fn bad_properties_and_shapes_are_named_with_their_tile() {
         e.to_string().contains(
             "object layer \"regions\", object 6: property `hit_types`: unknown hit type \"BURN\""
         ),
+        "{e}"
+    );
+    assert!(
+        matches!(&e.kind, LoadErrorKind::BadProperty { property, .. } if property == "hit_types"),
         "{e}"
     );
 }
@@ -1219,12 +1277,28 @@ fn json_that_is_not_a_tiled_map_says_what_it_is() {
             fixture("inline.tmj").display()
         )
     );
+    assert!(matches!(
+        tmj_err(&tsj).kind,
+        LoadErrorKind::NotATiledMap(NotTiled::TileSet)
+    ));
     let e = tmj_err(r#"{"map": "cave.txt", "bodies": []}"#);
     assert!(e.to_string().contains("not a Tiled JSON map"), "{e}");
+    assert!(
+        matches!(e.kind, LoadErrorKind::NotATiledMap(NotTiled::UntypedJson)),
+        "{e}"
+    );
     let e = tmj_err("[1, 2]");
     assert!(e.to_string().contains("JSON but not an object"), "{e}");
+    assert!(
+        matches!(e.kind, LoadErrorKind::NotATiledMap(NotTiled::NotAnObject)),
+        "{e}"
+    );
     let e = tmj_err(r#"{"type": "world", "maps": []}"#);
     assert!(e.to_string().contains("its `type` is \"world\""), "{e}");
+    assert!(
+        matches!(&e.kind, LoadErrorKind::NotATiledMap(NotTiled::JsonType(t)) if t == "world"),
+        "{e}"
+    );
     // A map saved before Tiled 1.2 has no `type`: its `orientation` tells it is a map.
     let old = std::fs::read_to_string(fixture("flips.tmj"))
         .unwrap()

@@ -275,6 +275,27 @@ mod tests {
         assert!(err(&png, 5, 8).contains("does not divide into 5 × 8"));
         assert!(err(&png, 0, 8).contains("at least one pixel"));
         assert!(err(b"GIF89a", 8, 8).contains("not a readable PNG"));
+        // The causes as a program reads them: the sizes, and the png crate's own error.
+        let e = parse_tile_set(&png, "sheet.png", &BitmapOptions::new(5, 8)).unwrap_err();
+        assert!(
+            matches!(
+                e.kind,
+                LoadErrorKind::SheetSize {
+                    width: 16,
+                    height: 8,
+                    tile_width: 5,
+                    tile_height: 8
+                }
+            ),
+            "{e}"
+        );
+        let e = parse_tile_set(b"GIF89a", "sheet.png", &BitmapOptions::new(8, 8)).unwrap_err();
+        assert!(
+            matches!(e.kind, LoadErrorKind::Syntax { format: "PNG", .. }),
+            "{e}"
+        );
+        let source = std::error::Error::source(&e).unwrap();
+        assert!(source.is::<png::DecodingError>(), "{source}");
         // Every truncation: an error naming the file, never a panic; or, cut only after
         // the last pixel (the PNG reader does not insist on the end marker), the same set.
         let full = parse_tile_set(&png, "sheet.png", &BitmapOptions::new(8, 8)).unwrap();

@@ -9,6 +9,7 @@ use crate::tiles::{Cell, MapError, TileSetError};
 
 /// Where in a file a load error is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Location {
     /// The whole file (it could not be read, or a fact about all of it).
     File,

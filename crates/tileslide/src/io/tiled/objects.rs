@@ -60,6 +60,7 @@ pub struct MapObject {
 /// The shape of a [`MapObject`]. Points of polygons and polylines are relative to the
 /// object's position (before its rotation).
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum ObjectShape {
     /// A rectangle of the object's size (also the shape of tile objects).
     Rectangle,

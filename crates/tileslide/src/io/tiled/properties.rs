@@ -14,6 +14,7 @@ pub type Properties = BTreeMap<String, PropertyValue>;
 
 /// The value of a custom property, typed as in Tiled.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum PropertyValue {
     /// `bool`.
     Bool(bool),
