@@ -77,7 +77,7 @@ pub use glam::Vec2;
 pub use path::{
     FlowField, MAX_NAV_NODES, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, Path,
 };
-pub use query::{CircleHit, Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
+pub use query::{CastError, CircleHit, Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{
     ActiveSegment, Cell, JOURNAL_EDITS, JournalError, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError,
     MapRevision, Owner, SegmentFlags, SegmentRef, ShapeError, TemporaryError, TemporarySegment,

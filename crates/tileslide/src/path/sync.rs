@@ -2,6 +2,8 @@
 //! the moves near each cell edited since the grid last caught up, and [`NavChange`] says
 //! what that changed, for the paths a game keeps.
 
+use std::sync::PoisonError;
+
 use glam::Vec2;
 
 use super::clearance::{ChangedMove, Clearance};
@@ -118,7 +120,7 @@ impl NavGrid {
             Err(JournalError::OtherMap) => return Err(NavError::OtherMap),
             Err(JournalError::Overrun { .. }) => {
                 self.table = Clearance::build(map, self.max_radius, self.table.mask);
-                self.classes.clear();
+                self.memory_mut().classes.clear();
                 change.rebuilt = true;
                 change.region = Some(map.bounds());
             }
@@ -126,7 +128,8 @@ impl NavGrid {
             Ok(cells) => {
                 for cell in cells {
                     let moves = self.table.update_cell(map, cell);
-                    for class in &mut self.classes {
+                    let memory = self.memory.get_mut().unwrap_or_else(PoisonError::into_inner);
+                    for class in &mut memory.classes {
                         class.apply(&self.table, &moves);
                     }
                     change.push_edit(&self.table.lattice, moves);

@@ -3,6 +3,7 @@
 
 mod circle_cast;
 mod circle_wide;
+mod error;
 mod fast_walk;
 mod filter;
 mod hit;
@@ -13,6 +14,7 @@ mod segment_test;
 mod traversal;
 
 pub use circle_cast::CircleHit;
+pub use error::CastError;
 pub(crate) use circle_cast::{Capsule, Wall};
 pub use filter::{Faces, RayFilter};
 pub use hit::{RayHit, SegmentSource};
