@@ -7,8 +7,8 @@
 
 use glam::Vec2;
 
-use super::{CastError, Faces, RayFilter, SegmentSource};
-use crate::MAX_COORD;
+use super::{CastError, Faces, QueryFilter, SegmentSource};
+use crate::limits::MAX_COORD;
 use crate::geometry::{Aabb, Segment, SweepHit, circle_segment, in_range, sweep_circle_segment};
 use crate::tiles::store::{CAP_A, CAP_B, HotSegment};
 use crate::tiles::{Owner, SegmentFlags, SegmentRef, TileId, TileMap};
@@ -153,19 +153,19 @@ impl TileMap {
     /// [`CastError::InvalidRadius`] for a radius that is zero, negative, NaN or infinite.
     ///
     /// ```
-    /// # use tileslide::{io::ascii, RayFilter, Vec2};
+    /// # use tileslide::{io::ascii, QueryFilter, Vec2};
     /// let map = ascii::parse("\
     /// #####
     /// #...#
     /// #...#
     /// #####", "doc.txt", 1.0)?;
     /// // A circle of radius 0.25 moving right from (1.5, 1.5) touches the wall at x = 4.
-    /// let hit = map.cast_circle(Vec2::new(1.5, 1.5), 0.25, Vec2::new(10.0, 0.0), &RayFilter::default())?.unwrap();
+    /// let hit = map.cast_circle(Vec2::new(1.5, 1.5), 0.25, Vec2::new(10.0, 0.0), &QueryFilter::default())?.unwrap();
     /// assert_eq!(hit.center, Vec2::new(3.75, 1.5));
     /// assert_eq!(hit.normal, Vec2::new(-1.0, 0.0));
     /// assert_eq!(hit.point, Vec2::new(4.0, 1.5));
     /// // A negative radius is a mistake, not a miss.
-    /// assert!(map.cast_circle(Vec2::new(1.5, 1.5), -0.25, Vec2::X, &RayFilter::default()).is_err());
+    /// assert!(map.cast_circle(Vec2::new(1.5, 1.5), -0.25, Vec2::X, &QueryFilter::default()).is_err());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn cast_circle(
@@ -173,7 +173,7 @@ impl TileMap {
         center: Vec2,
         radius: f32,
         motion: Vec2,
-        filter: &RayFilter,
+        filter: &QueryFilter,
     ) -> Result<Option<CircleHit>, CastError> {
         if !(radius > 0.0 && radius.is_finite()) {
             return Err(CastError::InvalidRadius(radius));
@@ -188,7 +188,7 @@ impl TileMap {
         center: Vec2,
         radius: f32,
         motion: Vec2,
-        filter: &RayFilter,
+        filter: &QueryFilter,
     ) -> Option<CircleHit> {
         let ordinary = radius <= MAX_COORD
             && in_range(center)
@@ -249,7 +249,7 @@ impl TileMap {
     pub(super) fn first_wall_in(
         &self,
         region: &Aabb,
-        filter: &RayFilter,
+        filter: &QueryFilter,
         sweep: impl Fn(&Capsule) -> Option<SweepHit>,
     ) -> Option<(SweepHit, Wall)> {
         // Visited in place, not collected: a cast allocates nothing.
@@ -273,17 +273,17 @@ impl TileMap {
     /// Appends the temporary segments, then the active segments of the cells (row by row)
     /// that share a point with `region`, that `filter` lets block a moving circle (flag mask,
     /// excluded owner, and for [`Faces::Against`] the direction).
-    pub(crate) fn walls_in(&self, region: &Aabb, filter: &RayFilter, out: &mut Vec<Wall>) {
+    pub(crate) fn walls_in(&self, region: &Aabb, filter: &QueryFilter, out: &mut Vec<Wall>) {
         self.for_each_wall_in(region, filter, |wall| out.push(wall));
     }
 
     /// Calls `f` with each wall [`walls_in`](Self::walls_in) appends, in the same order.
     #[inline]
-    fn for_each_wall_in(&self, region: &Aabb, filter: &RayFilter, mut f: impl FnMut(Wall)) {
+    fn for_each_wall_in(&self, region: &Aabb, filter: &QueryFilter, mut f: impl FnMut(Wall)) {
         // The sweep itself tells a segment's front from its back (`first_wall_in` sweeps
         // the back too for `Faces::Both`), so here `Faces::Front` keeps every face and the
         // filter's one rule decides the rest.
-        let walls = RayFilter {
+        let walls = QueryFilter {
             faces: match filter.faces {
                 Faces::Front => Faces::Both,
                 faces => faces,
@@ -390,7 +390,7 @@ mod tests {
     }
 
     /// The cast of a valid radius.
-    fn cast(m: &TileMap, c: Vec2, r: f32, motion: Vec2, filter: &RayFilter) -> Option<CircleHit> {
+    fn cast(m: &TileMap, c: Vec2, r: f32, motion: Vec2, filter: &QueryFilter) -> Option<CircleHit> {
         m.cast_circle(c, r, motion, filter).unwrap()
     }
 
@@ -399,7 +399,7 @@ mod tests {
         let m = map(TEST_ROOM);
         // Resting on the floor (y = 4, y down) at exactly its radius, moving along it over
         // five seams.
-        let hit = cast(&m, v(1.5, 3.75), 0.25, v(6.0, 0.0), &RayFilter::default());
+        let hit = cast(&m, v(1.5, 3.75), 0.25, v(6.0, 0.0), &QueryFilter::default());
         // Only the far wall stops it, not a seam.
         let hit = hit.unwrap();
         assert_eq!(hit.point.x, 7.0);
@@ -414,14 +414,14 @@ mod tests {
 ..##..
 ......");
         // Moving diagonally past the block's top-left corner (2, 2): touches the rounded end.
-        let hit = cast(&m, v(0.5, 0.5), 0.25, v(3.0, 3.0), &RayFilter::default())
+        let hit = cast(&m, v(0.5, 0.5), 0.25, v(3.0, 3.0), &QueryFilter::default())
             .unwrap();
         assert!((hit.point - v(2.0, 2.0)).length() < 1e-5, "{hit:?}");
         assert!(hit.normal.x < 0.0 && hit.normal.y < 0.0);
         // The seam between the block's two tiles on its top face has no cap: a circle
         // moving along the top at its radius is not stopped there.
         assert!(
-            cast(&m, v(2.25, 1.75), 0.25, v(1.5, 0.0), &RayFilter::default())
+            cast(&m, v(2.25, 1.75), 0.25, v(1.5, 0.0), &QueryFilter::default())
                 .is_none()
         );
     }
@@ -433,17 +433,17 @@ mod tests {
 .....#....
 ..........");
         // 1000 cells in one move, straight through the one-cell wall.
-        let hit = cast(&m, v(0.5, 1.5), 0.4, v(1000.0, 0.0), &RayFilter::default())
+        let hit = cast(&m, v(0.5, 1.5), 0.4, v(1000.0, 0.0), &QueryFilter::default())
             .unwrap();
         assert!((hit.center.x - 4.6).abs() < 1e-3, "{hit:?}");
         // A circle whose centre is inside the solid cell moves out freely.
         assert!(
-            cast(&m, v(5.5, 1.5), 0.4, v(3.0, 0.0), &RayFilter::default())
+            cast(&m, v(5.5, 1.5), 0.4, v(3.0, 0.0), &QueryFilter::default())
                 .is_none()
         );
         // Unless both faces count.
         assert!(
-            cast(&m, v(5.5, 1.5), 0.4, v(3.0, 0.0), &RayFilter::both_sides())
+            cast(&m, v(5.5, 1.5), 0.4, v(3.0, 0.0), &QueryFilter::both_sides())
                 .is_some()
         );
     }
@@ -454,10 +454,10 @@ mod tests {
 ....
 .==.
 ....");
-        let down = cast(&m, v(1.5, 0.2), 0.1, v(0.0, 2.0), &RayFilter::default());
+        let down = cast(&m, v(1.5, 0.2), 0.1, v(0.0, 2.0), &QueryFilter::default());
         assert!((down.unwrap().center.y - 0.9).abs() < 1e-5);
         assert!(
-            cast(&m, v(1.5, 2.5), 0.1, v(0.0, -2.0), &RayFilter::default())
+            cast(&m, v(1.5, 2.5), 0.1, v(0.0, -2.0), &QueryFilter::default())
                 .is_none()
         );
     }
@@ -465,7 +465,7 @@ mod tests {
     #[test]
     fn flag_masks_and_bad_input() {
         let m = map(TEST_ROOM);
-        let none = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
+        let none = QueryFilter::default().with_mask(SegmentFlags::ONE_WAY);
         assert!(
             cast(&m, v(2.0, 2.0), 0.25, v(9.0, 0.0), &none)
                 .is_none()
@@ -476,11 +476,11 @@ mod tests {
             (v(2.0, 2.0), v(f32::INFINITY, 0.0)),
             (v(2.0, f32::NEG_INFINITY), v(9.0, 0.0)),
         ] {
-            assert_eq!(cast(&m, c, 0.25, mv, &RayFilter::default()), None);
+            assert_eq!(cast(&m, c, 0.25, mv, &QueryFilter::default()), None);
         }
         // A radius is a size: one that describes no circle is refused, naming it.
         for r in [0.0, -0.0, -1.0, f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
-            let err = m.cast_circle(v(2.0, 2.0), r, v(9.0, 0.0), &RayFilter::default());
+            let err = m.cast_circle(v(2.0, 2.0), r, v(9.0, 0.0), &QueryFilter::default());
             assert!(
                 matches!(err, Err(CastError::InvalidRadius(got)) if got.to_bits() == r.to_bits()),
                 "{r}: {err:?}"

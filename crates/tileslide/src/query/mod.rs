@@ -16,6 +16,6 @@ mod traversal;
 pub use circle_cast::CircleHit;
 pub use error::CastError;
 pub(crate) use circle_cast::{Capsule, Wall};
-pub use filter::{Faces, RayFilter};
+pub use filter::{Faces, QueryFilter};
 pub use hit::{RayHit, SegmentSource};
 pub use overlap::SegmentOverlap;
