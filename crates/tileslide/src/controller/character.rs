@@ -113,6 +113,13 @@ pub struct MoveOptions {
 /// Every part of a move is an exact sweep (see [`sweep_circle_segment`] and
 /// [`sweep_box_segment`]), so no speed passes through a wall.
 ///
+/// The character has no velocity of its own: gravity, jumps, coyote time and variable
+/// jump height are the game's rules, kept in the game's velocity.
+/// [`move_and_slide`](Self::move_and_slide) moves by that velocity × dt and takes out of it
+/// what the surfaces touched stopped (landing zeroes the fall, a ceiling the rise, a wall
+/// the speed into it), the part every game would otherwise write
+/// ([`clip_velocity`](Self::clip_velocity) alone, for a displacement made otherwise).
+///
 /// ```
 /// use tileslide::{Character, CharacterShape, ControllerConfig, MoveOptions, Vec2, io::ascii};
 /// let map = ascii::parse("\

@@ -10,6 +10,7 @@ mod character;
 mod contact;
 mod platform;
 mod shape;
+mod velocity;
 
 pub use character::{Character, ControllerConfig, MoveOptions};
 pub use contact::{Contact, Contacts};
@@ -23,8 +24,8 @@ pub enum ControllerError {
     /// A position, direction or displacement was not finite (or `up` was zero).
     #[error("character {what} must be finite (and `up` non-zero), got {value}")]
     NonFinite {
-        /// Which value: `"position"`, `"up"`, `"displacement"` or `"displacement length"`
-        /// (finite components whose length overflows).
+        /// Which value: `"position"`, `"up"`, `"displacement"`, `"displacement length"`
+        /// (finite components whose length overflows) or `"velocity"`.
         what: &'static str,
         /// The value given.
         value: Vec2,
@@ -52,6 +53,12 @@ pub enum ControllerError {
         what: &'static str,
         /// The value given (a radius in both lanes).
         value: Vec2,
+    },
+    /// The time step of [`Character::move_and_slide`] was negative or not finite.
+    #[error("time step dt must be finite and not negative, got {dt}")]
+    BadTimeStep {
+        /// The value given.
+        dt: f32,
     },
     /// A [`ControllerConfig`] field was out of range.
     #[error(
