@@ -50,9 +50,10 @@ impl Character {
         let mut v = velocity;
         for _ in 0..CLIP_PASSES {
             let mut clipped = false;
-            if contacts.ground.is_some() && v.dot(up) < -tolerance {
-                v -= up * v.dot(up);
-                clipped = true;
+            let fall = v.dot(up);
+            if contacts.ground.is_some() && fall < 0.0 {
+                v -= up * fall;
+                clipped |= fall < -tolerance;
             }
             for contact in [contacts.ceiling, contacts.left, contacts.right]
                 .iter()
