@@ -13,7 +13,7 @@ use std::error::Error;
 use std::path::{Path, PathBuf};
 
 use tileslide::io::ascii;
-use tileslide::{Circle, Ray, RayFilter, TileMap, Vec2};
+use tileslide::{Circle, Ray, QueryFilter, TileMap, Vec2};
 use tileslide_render::{Animation, Canvas, Picture, RenderOptions, Rgba};
 
 /// y down: `#` walls, `/` and `\` slanted walls.
@@ -84,7 +84,7 @@ fn in_view(eye: Vec2, look: Vec2, target: Vec2) -> bool {
 fn sees(map: &TileMap, eye: Vec2, look: Vec2, target: Vec2) -> bool {
     in_view(eye, look, target)
         && map
-            .cast_ray(Ray::between(eye, target), &RayFilter::both_sides())
+            .cast_ray(Ray::between(eye, target), &QueryFilter::both_sides())
             .is_none()
 }
 
@@ -127,7 +127,7 @@ fn play(
             if in_view(guard.eye, dir, thief) {
                 // The guard's ray to the thief: clear, or stopped where the wall is.
                 let ray = Ray::between(guard.eye, thief);
-                picture.ray(ray, map.cast_ray(ray, &RayFilter::both_sides()).as_ref());
+                picture.ray(ray, map.cast_ray(ray, &QueryFilter::both_sides()).as_ref());
                 hidden |= !seen;
                 run.hidden_by_walls += u32::from(!seen);
             }

@@ -101,7 +101,7 @@ fn play(mut animation: Option<&mut Animation<'_>>) -> Result<(Run, Picture), Box
             team: 1,
             facing,
             swing: (k < SWING_FRAMES).then_some(swing),
-            ..HitObject::new(0, KNIGHT, SIZE)
+            ..HitObject::new(Owner(0), KNIGHT, SIZE)
         };
         let swinging = blade(k)?;
         let sword: &[Volume] = if k < SWING_FRAMES { &swinging } else { &[] };
