@@ -5,10 +5,10 @@
 use hecs::{Entity, World};
 use tileslide::{Bodies, Vec2};
 
-use crate::DT;
 use crate::components::{Body, CreatureBrain, Goal, HeroBrain, Id, Kind, Team};
 use crate::explore::centre_of;
 use crate::level::Level;
+use crate::step::DT;
 
 /// How far heroes notice enemies.
 const HERO_SIGHT: f32 = 3.5;

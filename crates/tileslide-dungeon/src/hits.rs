@@ -7,8 +7,8 @@
 use hecs::Entity;
 use tileslide::{HitObject, HitTypes, HitWorld, TeamRule, Vec2, Volume};
 
-use crate::GameError;
 use crate::components::{Kind, Team};
+use crate::error::GameError;
 use crate::events::Event;
 
 /// How far ahead of the fighter's edge the middle of its swing is (cells).

@@ -3,7 +3,7 @@
 
 use tileslide::{Bodies, FlowField, NavChange, NavConfig, NavGrid, TileMap, Vec2};
 
-use crate::GameError;
+use crate::error::GameError;
 use crate::explore::Explored;
 use crate::layout::{Ground, Layout};
 
