@@ -1,7 +1,7 @@
 //! An enemy: a box that patrols back and forth, turning at walls, edges and its range.
 
 use tileslide::{
-    Character, CharacterShape, ControllerConfig, ControllerError, MoveOptions, Ray, RayFilter,
+    Character, CharacterShape, ControllerConfig, ControllerError, MoveOptions, Ray, QueryFilter,
     TileMap, Vec2,
 };
 
@@ -93,7 +93,7 @@ impl Enemy {
         let edge = map
             .cast_ray(
                 Ray::between(ahead, ahead - up * 1.5 * s),
-                &RayFilter::default(),
+                &QueryFilter::default(),
             )
             .is_none();
         let out = (self.body.position.x - self.home) * self.dir > ENEMY_RANGE * s;
