@@ -8,7 +8,7 @@
 
 use std::time::Instant;
 
-use tileslide::{Ray, RayFilter, RayHit, SegmentSource};
+use tileslide::{QueryFilter, Ray, RayHit, SegmentSource};
 use tileslide_scenes::{Fnv1a, Scene, scene_rays};
 
 /// FNV-1a (64-bit) over the bits of every hit, and over a marker for every miss.
@@ -55,7 +55,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             delta: r.dir * r.length,
         })
         .collect();
-    let filter = RayFilter::default();
+    let filter = QueryFilter::default();
     let mut best = f64::MAX;
     let mut hits = Vec::with_capacity(rays.len());
     for _ in 0..passes {

@@ -4,7 +4,7 @@
 //! ray cast meets). Then damage and death.
 
 use hecs::{Entity, World};
-use tileslide::{Bodies, Ray, RayFilter};
+use tileslide::{Bodies, QueryFilter, Ray};
 
 use crate::GameError;
 use crate::brains::{IMP_RANGE, Sightings};
@@ -151,7 +151,7 @@ pub fn strike(
         let mut to = from + ball.velocity * DT;
         let wall = level
             .map
-            .cast_ray(Ray::between(from, to), &RayFilter::default());
+            .cast_ray(Ray::between(from, to), &QueryFilter::default());
         if let Some(hit) = &wall {
             to = hit.point;
         }

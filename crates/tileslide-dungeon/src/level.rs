@@ -80,7 +80,7 @@ impl Level {
         self.map
             .cast_ray(
                 tileslide::Ray::between(a, b),
-                &tileslide::RayFilter::default(),
+                &tileslide::QueryFilter::default(),
             )
             .is_none()
     }

@@ -4,7 +4,7 @@
 use thiserror::Error;
 use tileslide::{
     Character, CharacterShape, Contacts, ControllerConfig, ControllerError, HitEvent, HitWorld,
-    MapError, MoveOptions, Owner, Ray, RayFilter, Segment, SegmentFlags, SegmentSource,
+    MapError, MoveOptions, Owner, QueryFilter, Ray, Segment, SegmentFlags, SegmentSource,
     TemporarySegment, Vec2, VolumeError,
 };
 
@@ -362,7 +362,7 @@ impl Game {
         let edge = map
             .cast_ray(
                 Ray::between(ahead, ahead - up * 1.5 * s),
-                &RayFilter::default(),
+                &QueryFilter::default(),
             )
             .is_none();
         let out = (enemy.body.position.x - enemy.home) * enemy.dir > ENEMY_RANGE * s;

@@ -1,7 +1,7 @@
 //! The script that plays: it reads the world through ray casts and decides, each step,
 //! whether to run, wait, jump or drop.
 
-use tileslide::{Ray, RayFilter, SegmentFlags, SegmentSource, Vec2};
+use tileslide::{QueryFilter, Ray, SegmentFlags, SegmentSource, Vec2};
 
 use crate::game::{Game, JUMP_SPEED, PLATFORM_OWNER, RUN_SPEED};
 use crate::hits::ENEMY_HALF;
@@ -58,16 +58,16 @@ pub fn next_input(game: &Game) -> Input {
         return jump;
     }
     let edge = feet + Vec2::new(player.half().x + 0.2 * s, 0.0);
-    if ground_below(game, edge, &RayFilter::default()).is_none() {
+    if ground_below(game, edge, &QueryFilter::default()).is_none() {
         let far = edge + Vec2::X * 2.5 * s;
-        let fixed = RayFilter::default().excluding(PLATFORM_OWNER);
+        let fixed = QueryFilter::default().excluding(PLATFORM_OWNER);
         if ground_below(game, far, &fixed).is_some() || game.level.platform.is_none() {
             return jump;
         }
         return Input::default();
     }
     // (A coin over solid ground within reach, on a hill, is walked to.)
-    let solid = RayFilter::default().with_mask(SegmentFlags::SOLID);
+    let solid = QueryFilter::default().with_mask(SegmentFlags::SOLID);
     let coin_above = game.coins.iter().any(|c| {
         let dx = c.center.x - feet.x;
         let height = (c.center - feet).dot(up);
@@ -97,7 +97,7 @@ pub fn next_input(game: &Game) -> Input {
 
 /// The ground within two and a half cells below `p` (from over half a cell above it, so
 /// that a ramp rising ahead is found too).
-fn ground_below(game: &Game, p: Vec2, filter: &RayFilter) -> Option<tileslide::RayHit> {
+fn ground_below(game: &Game, p: Vec2, filter: &QueryFilter) -> Option<tileslide::RayHit> {
     let s = game.level.scale;
     let up = game.level.up;
     let from = p + up * 0.6 * s;

@@ -74,7 +74,7 @@ enum Overlay {
 ///
 /// ```
 /// use tileslide::io::ascii;
-/// use tileslide::{Circle, Ray, RayFilter, Vec2};
+/// use tileslide::{Circle, Ray, QueryFilter, Vec2};
 /// use tileslide_render::{Canvas, Picture, RenderOptions};
 ///
 /// let map = ascii::parse("\
@@ -85,7 +85,7 @@ enum Overlay {
 /// let canvas = Canvas::new(&map, &RenderOptions::default())?; // 16 pixels per cell
 ///
 /// let ray = Ray::between(Vec2::new(1.5, 1.5), Vec2::new(1.5, 3.5));
-/// let hit = map.cast_ray(ray, &RayFilter::default());
+/// let hit = map.cast_ray(ray, &QueryFilter::default());
 /// let mut picture = Picture::new();
 /// picture
 ///     .body(Circle::new(Vec2::new(4.0, 1.5), 0.4))

@@ -3,7 +3,7 @@
 
 use tileslide::io::ascii;
 use tileslide::{
-    Aabb, Cell, Circle, Owner, Ray, RayFilter, Segment, SegmentFlags, TemporarySegment, TileMap,
+    Aabb, Cell, Circle, Owner, QueryFilter, Ray, Segment, SegmentFlags, TemporarySegment, TileMap,
     Vec2, VolumeShape,
 };
 use tileslide_render::{
@@ -167,7 +167,7 @@ fn a_body_is_filled_with_its_colour() {
 fn a_ray_hit_is_marked_with_a_dot() {
     let (map, canvas) = room_at(32.0);
     let ray = Ray::between(Vec2::new(4.5, 1.5), Vec2::new(4.5, 6.0));
-    let hit = map.cast_ray(ray, &RayFilter::default()).unwrap();
+    let hit = map.cast_ray(ray, &QueryFilter::default()).unwrap();
     let mut picture = Picture::new();
     picture.ray(ray, Some(&hit));
     let image = canvas.render(&picture);

@@ -29,7 +29,7 @@
 //! ## Quick start
 //!
 //! ```
-//! use tileslide::{io::ascii, Ray, RayFilter, Vec2};
+//! use tileslide::{io::ascii, Ray, QueryFilter, Vec2};
 //!
 //! // '#' solid, '/' and '\' ramps, '=' one-way platform; row 0 is the top line.
 //! let map = ascii::parse("\
@@ -41,13 +41,13 @@
 //!
 //! // Straight down from above the ramp: the nearest hit is on its slope.
 //! let down = Ray::between(Vec2::new(4.75, 1.5), Vec2::new(4.75, 4.5));
-//! let hit = map.cast_ray(down, &RayFilter::default()).unwrap();
+//! let hit = map.cast_ray(down, &QueryFilter::default()).unwrap();
 //! assert!((hit.point.y - 3.25).abs() < 1e-6);
 //! assert_eq!(hit.cell().map(|c| (c.col, c.row)), Some((4, 3)));
 //!
 //! // Upward through the one-way platform: its back face does not block.
 //! let up = Ray::between(Vec2::new(2.5, 2.5), Vec2::new(2.5, 1.5));
-//! assert!(map.cast_ray(up, &RayFilter::default()).is_none());
+//! assert!(map.cast_ray(up, &QueryFilter::default()).is_none());
 //! # Ok::<(), tileslide::io::LoadError>(())
 //! ```
 
@@ -77,7 +77,7 @@ pub use glam::Vec2;
 pub use path::{
     FlowField, MAX_NAV_NODES, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, Path,
 };
-pub use query::{CircleHit, Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
+pub use query::{CircleHit, Faces, QueryFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{
     ActiveSegment, Cell, JOURNAL_EDITS, JournalError, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError,
     MapRevision, Owner, SegmentFlags, SegmentRef, ShapeError, TemporaryError, TemporarySegment,

@@ -27,7 +27,7 @@ use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
     Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, JOURNAL_EDITS, NavConfig,
-    NavError, NavGrid, Path, RayFilter, SegmentFlags, TileMap, Vec2,
+    NavError, NavGrid, Path, QueryFilter, SegmentFlags, TileMap, Vec2,
 };
 
 use path_support::any_angle::{InflatedScene, room_and_blocks};
@@ -50,10 +50,10 @@ fn map(text: &str) -> TileMap {
     ascii::parse(text, "path.txt", 1.0).unwrap()
 }
 
-fn both_faces() -> RayFilter {
-    RayFilter {
+fn both_faces() -> QueryFilter {
+    QueryFilter {
         faces: Faces::Both,
-        ..RayFilter::default()
+        ..QueryFilter::default()
     }
 }
 
@@ -783,7 +783,7 @@ fn assert_same_moves(nav: &NavGrid, fresh: &NavGrid, map: &TileMap, context: &st
 /// from both sides, one-way platforms from the front).
 fn assert_still_clear(path: &Path, map: &TileMap, context: &str) {
     let solid = both_faces().with_mask(SegmentFlags::SOLID);
-    let one_way = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
+    let one_way = QueryFilter::default().with_mask(SegmentFlags::ONE_WAY);
     let r = path.radius();
     for run in path.points().windows(2) {
         let (a, motion) = (run[0], run[1] - run[0]);

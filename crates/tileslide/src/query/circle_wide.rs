@@ -9,7 +9,7 @@
 
 use glam::{DVec2, Vec2};
 
-use super::RayFilter;
+use super::QueryFilter;
 use super::circle_cast::{Capsule, CircleHit};
 use crate::geometry::{Aabb, Segment, SweepHit, circle_segment};
 use crate::tiles::TileMap;
@@ -117,7 +117,7 @@ impl TileMap {
         center: Vec2,
         radius: f32,
         motion: Vec2,
-        filter: &RayFilter,
+        filter: &QueryFilter,
     ) -> Option<CircleHit> {
         let r = f64::from(radius);
         let (lo, hi) = self.walls_box();

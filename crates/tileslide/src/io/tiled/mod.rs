@@ -30,14 +30,14 @@
 //!
 //! ```
 //! use tileslide::io::tiled::{self, TiledOptions};
-//! use tileslide::{Ray, RayFilter, Vec2};
+//! use tileslide::{Ray, QueryFilter, Vec2};
 //!
 //! let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/maps/cave.tmx");
 //! let cave = tiled::load(path, &TiledOptions::default())?;
 //! assert_eq!(cave.collision_layer, "walls");
 //! // Straight down from the top of the cave: the floor's top is at y = 224 pixels.
 //! let down = Ray::between(Vec2::new(40.0, 20.0), Vec2::new(40.0, 300.0));
-//! let hit = cave.map.cast_ray(down, &RayFilter::default()).unwrap();
+//! let hit = cave.map.cast_ray(down, &QueryFilter::default()).unwrap();
 //! assert_eq!((hit.point.y, hit.normal), (224.0, Vec2::new(0.0, -1.0)));
 //! // The object layers come along: the player's spawn point.
 //! let spawn = cave.object_layer("spawns").and_then(|l| l.object("player")).unwrap();
