@@ -52,7 +52,7 @@
 //! ```
 
 mod bodies;
-mod broadphase;
+pub mod broadphase;
 mod controller;
 mod geometry;
 pub mod io;
@@ -65,7 +65,6 @@ pub use bodies::{
     Bodies, Body, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, ResolveConfig,
     ResolveReport, SlideMode,
 };
-pub use broadphase::{Broadphase, PairFinder};
 pub use controller::{
     Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
 };

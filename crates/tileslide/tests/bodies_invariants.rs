@@ -21,8 +21,9 @@ use generators::{tile_chars, tile_map, wall_in};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Bodies, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Broadphase, Cell, Circle,
-    Owner, ResolveConfig, Segment, SegmentFlags, SlideMode, TemporarySegment, TileMap, Vec2,
+    Bodies, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Cell, Circle, Owner,
+    ResolveConfig, Segment, SegmentFlags, SlideMode, TemporarySegment, TileMap, Vec2,
+    broadphase::PairMethod,
 };
 
 /// Largest overlap allowed after a step, in cells (the skin).
@@ -504,7 +505,7 @@ proptest! {
         let map = tile_map(w, &chars, 1.0, Vec2::ZERO);
         let config = ResolveConfig {
             slide: if tangential { SlideMode::Tangential } else { SlideMode::FullLength },
-            broadphase: if sap { Broadphase::SweepAndPrune } else { Broadphase::UniformGrid },
+            broadphase: if sap { PairMethod::SweepAndPrune } else { PairMethod::UniformGrid },
             ..ResolveConfig::default()
         };
         run(&map, &proposals, STEPS, config, |bodies, placed, step, before| {
@@ -551,7 +552,7 @@ proptest! {
         let ok = |_: &Bodies, _: &[(BodyHandle, Proposal)], _: usize, _: &[Vec2]| Ok(());
         let a = run(&map, &proposals, STEPS, ResolveConfig::default(), ok)?;
         let b = run(&map, &proposals, STEPS, ResolveConfig::default(), ok)?;
-        let sap = ResolveConfig { broadphase: Broadphase::SweepAndPrune, ..ResolveConfig::default() };
+        let sap = ResolveConfig { broadphase: PairMethod::SweepAndPrune, ..ResolveConfig::default() };
         let c = run(&map, &proposals, STEPS, sap, ok)?;
         let bits = |v: &[Vec2]| v.iter().map(|p| (p.x.to_bits(), p.y.to_bits())).collect::<Vec<_>>();
         prop_assert_eq!(bits(&a), bits(&b));
@@ -608,9 +609,9 @@ fn same_as_without_memory(
     let (mut bodies, placed) = place(&map, proposals);
     let mut config = ResolveConfig {
         broadphase: if sap {
-            Broadphase::SweepAndPrune
+            PairMethod::SweepAndPrune
         } else {
-            Broadphase::UniformGrid
+            PairMethod::UniformGrid
         },
         ..ResolveConfig::default()
     };

@@ -7,8 +7,8 @@
 
 use proptest::prelude::*;
 use tileslide::{
-    Broadphase, Facing, HitEvent, HitObject, HitTypes, HitWorld, ObjectId, TeamRule, Vec2, Volume,
-    VolumeShape,
+    Facing, HitEvent, HitObject, HitTypes, HitWorld, ObjectId, TeamRule, Vec2, Volume, VolumeShape,
+    broadphase::PairMethod,
 };
 
 fn circle(x: f32, y: f32, r: f32, hit: HitTypes) -> Volume {
@@ -339,7 +339,7 @@ fn volumes_and_objects_beyond_max_coord_are_refused_by_register_too() {
     // across the whole range included); at 3e38 (where a box's centre overflowed and the
     // pair was missed) register refuses the object, naming the value, and the world is
     // unchanged.
-    for broadphase in [Broadphase::SweepAndPrune, Broadphase::UniformGrid] {
+    for broadphase in [PairMethod::SweepAndPrune, PairMethod::UniformGrid] {
         let mut world = HitWorld::with_broadphase(broadphase);
         world.begin_frame();
         let x = MAX_COORD - 1.0;
@@ -493,7 +493,7 @@ proptest! {
     #[test]
     fn both_broadphases_find_exactly_the_all_pairs_hits(objects in objects()) {
         let expected = reference(&objects);
-        for kind in [Broadphase::SweepAndPrune, Broadphase::UniformGrid] {
+        for kind in [PairMethod::SweepAndPrune, PairMethod::UniformGrid] {
             let mut world = HitWorld::with_broadphase(kind);
             // Two frames, so the sweep order kept from the first is exercised too.
             for _ in 0..2 {

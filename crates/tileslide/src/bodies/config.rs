@@ -2,7 +2,7 @@
 //! gap), and what it reports.
 
 use super::error::BodyError;
-use crate::broadphase::Broadphase;
+use crate::broadphase::PairMethod;
 use crate::geometry::MAX_COORD;
 
 /// What happens to the blocked part of a move.
@@ -42,7 +42,7 @@ pub struct ResolveConfig {
     /// [`Self::MAX_PASSES`].
     pub passes: u32,
     /// Pair finding.
-    pub broadphase: Broadphase,
+    pub broadphase: PairMethod,
     /// Separation that moving bodies keep from each other and from walls, in map units.
     /// Bodies stop between one half and one times this far from contact, so rounding never
     /// leaves them overlapping. Default `1e-3`, a thousandth of a cell of side 1: scale it
@@ -90,7 +90,7 @@ impl Default for ResolveConfig {
         Self {
             slide: SlideMode::FullLength,
             passes: 4,
-            broadphase: Broadphase::UniformGrid,
+            broadphase: PairMethod::UniformGrid,
             gap: 1e-3,
         }
     }

@@ -7,7 +7,7 @@ use glam::Vec2;
 
 use super::HitTypes;
 use super::volume::{Facing, Placed, Volume, VolumeError, check_range};
-use crate::broadphase::{Broadphase, PairFinder};
+use crate::broadphase::{PairFinder, PairMethod};
 use crate::geometry::{Aabb, Circle};
 
 /// An object registered for one frame: where it is, how it faces, and who it is.
@@ -157,7 +157,7 @@ struct Entry {
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct HitWorld {
-    broadphase: Broadphase,
+    broadphase: PairMethod,
     entries: Vec<Entry>,
     attack: Vec<Volume>,
     vulnerable: Vec<Volume>,
@@ -176,12 +176,12 @@ impl HitWorld {
     /// An empty world using sweep and prune on x, as Replica Island does.
     #[must_use]
     pub fn new() -> Self {
-        Self::with_broadphase(Broadphase::SweepAndPrune)
+        Self::with_broadphase(PairMethod::SweepAndPrune)
     }
 
     /// An empty world using `broadphase` (the results are the same either way).
     #[must_use]
-    pub fn with_broadphase(broadphase: Broadphase) -> Self {
+    pub fn with_broadphase(broadphase: PairMethod) -> Self {
         Self {
             broadphase,
             ..Self::default()
