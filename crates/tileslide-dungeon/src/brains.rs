@@ -155,7 +155,7 @@ fn explore(brain: &mut HeroBrain, level: &mut Level, p: Vec2, radius: f32, speed
 }
 
 /// The next step along `path` from `p`, `next` being the next point to reach.
-fn follow(path: &tileslide::Path, next: &mut usize, p: Vec2, speed: f32) -> Vec2 {
+fn follow(path: &tileslide::NavPath, next: &mut usize, p: Vec2, speed: f32) -> Vec2 {
     while *next < path.points().len() && path.points()[*next].distance(p) < 0.05 {
         *next += 1;
     }

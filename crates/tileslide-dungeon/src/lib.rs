@@ -9,7 +9,7 @@
 //! - Movement: every fighter is a circle in [`tileslide::Bodies`]; each step brains
 //!   propose moves and the resolver steps them (no overlaps, no wall crossings).
 //! - Navigation: a [`tileslide::NavGrid`] updated per dug square; heroes follow
-//!   [`tileslide::FlowField`]s, creatures walk [`tileslide::Path`]s home; both are
+//!   [`tileslide::FlowField`]s, creatures walk [`tileslide::NavPath`]s home; both are
 //!   refreshed only when a dug square affects them.
 //! - Hits: [`tileslide::HitWorld`] attack and vulnerability volumes with teams; melee
 //!   swings hit each victim once, fireballs are swept along their step.

@@ -1,7 +1,7 @@
 //! What to draw over the map in one picture: bodies, rays, paths, volumes, hit events.
 
 use tileslide::{
-    Aabb, Cell, Circle, HitEvent, HitWorld, Path, Ray, RayHit, SegmentFlags, TemporarySegment,
+    Aabb, Cell, Circle, HitEvent, HitWorld, NavPath, Ray, RayHit, SegmentFlags, TemporarySegment,
     TileMap, Vec2, VolumeShape,
 };
 
@@ -166,7 +166,7 @@ impl Picture {
     }
 
     /// A path found by [`NavGrid`](tileslide::NavGrid): its corners joined by lines.
-    pub fn path(&mut self, path: &Path) -> &mut Self {
+    pub fn path(&mut self, path: &NavPath) -> &mut Self {
         self.polyline(path.points())
     }
 

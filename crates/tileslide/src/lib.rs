@@ -74,7 +74,7 @@ pub use geometry::{
 };
 pub use glam::Vec2;
 pub use path::{
-    FlowField, MAX_NAV_NODES, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, Path,
+    FlowField, MAX_NAV_NODES, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, NavPath,
 };
 pub use query::{CircleHit, Faces, QueryFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{

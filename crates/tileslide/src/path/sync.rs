@@ -78,10 +78,10 @@ impl NavChange {
     }
 
     /// True when some edit changed moves within `bounds` and opened or closed some move for
-    /// a circle needing `need` clearance steps (what [`Path::is_affected_by`] asks, edit by
+    /// a circle needing `need` clearance steps (what [`NavPath::is_affected_by`] asks, edit by
     /// edit, as if the grid had caught up after each).
     ///
-    /// [`Path::is_affected_by`]: super::Path::is_affected_by
+    /// [`NavPath::is_affected_by`]: super::NavPath::is_affected_by
     pub(super) fn affects(&self, bounds: &Aabb, need: u16) -> bool {
         if self.rebuilt {
             return true;
