@@ -66,9 +66,9 @@ impl Boxed {
         object
     }
 
-    /// The whole box, local.
+    /// The whole box, local: centred at its half size.
     fn body(&self, hit: HitTypes) -> Option<Volume> {
-        Volume::rect(Vec2::ZERO, self.half * 2.0, hit).ok()
+        Volume::rect(self.half, self.half, hit).ok()
     }
 
     /// The strip at the feet or the head (towards `up` when `top`), local.
@@ -80,7 +80,15 @@ impl Boxed {
         } else {
             (0.0, depth)
         };
-        Volume::rect(Vec2::new(0.0, y0), Vec2::new(size.x, y1), hit).ok()
+        // From its corners: the strip's edge must be exactly the box's.
+        let strip = Volume {
+            shape: VolumeShape::Rect(Aabb {
+                min: Vec2::new(0.0, y0),
+                max: Vec2::new(size.x, y1),
+            }),
+            hit,
+        };
+        strip.check().ok().map(|()| strip)
     }
 
     /// The strip in world coordinates, for pictures.
@@ -89,7 +97,7 @@ impl Boxed {
         let local = self.strip(up, top, STRIP * scale, HitTypes::NONE)?;
         let corner = self.center - self.half;
         match local.shape {
-            VolumeShape::Box(b) => Some(VolumeShape::Box(Aabb {
+            VolumeShape::Rect(b) => Some(VolumeShape::Rect(Aabb {
                 min: b.min + corner,
                 max: b.max + corner,
             })),

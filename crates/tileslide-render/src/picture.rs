@@ -184,13 +184,13 @@ impl Picture {
 
     /// An attack or vulnerability volume in **world** coordinates (place an object's local
     /// volume at its position first): filled translucent, outlined. Skipped if not finite,
-    /// if a circle's radius is negative, or if a box's minimum exceeds its maximum.
+    /// if a circle's radius is negative, or if a rect's minimum exceeds its maximum.
     pub fn volume(&mut self, shape: VolumeShape, kind: VolumeKind) -> &mut Self {
         let usable = match shape {
             VolumeShape::Circle(c) => {
                 c.center.is_finite() && c.radius.is_finite() && c.radius >= 0.0
             }
-            VolumeShape::Box(b) => {
+            VolumeShape::Rect(b) => {
                 b.min.is_finite() && b.max.is_finite() && b.min.cmple(b.max).all()
             }
         };
@@ -414,7 +414,7 @@ fn draw_volume(
                 pen.disc(center, view.pixel_length(c.radius), fill, color, line);
             }
         }
-        VolumeShape::Box(b) => {
+        VolumeShape::Rect(b) => {
             if let (Some(a), Some(b)) = (view.pixel_of(b.min), view.pixel_of(b.max)) {
                 pen.rect(a, b, fill, color, line);
             }

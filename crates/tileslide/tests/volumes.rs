@@ -15,8 +15,9 @@ fn circle(x: f32, y: f32, r: f32, hit: HitTypes) -> Volume {
     Volume::circle(Vec2::new(x, y), r, hit).unwrap()
 }
 
-fn rect(x0: f32, y0: f32, x1: f32, y1: f32, hit: HitTypes) -> Volume {
-    Volume::rect(Vec2::new(x0, y0), Vec2::new(x1, y1), hit).unwrap()
+/// The rectangle centred at (`x`, `y`) with half extents (`hx`, `hy`).
+fn rect(x: f32, y: f32, hx: f32, hy: f32, hit: HitTypes) -> Volume {
+    Volume::rect(Vec2::new(x, y), Vec2::new(hx, hy), hit).unwrap()
 }
 
 fn object(key: u64, x: f32, y: f32) -> HitObject {
@@ -28,7 +29,7 @@ fn object(key: u64, x: f32, y: f32) -> HitObject {
 
 /// A unit body accepting `accepts`.
 fn body(accepts: HitTypes) -> [Volume; 1] {
-    [rect(0.0, 0.0, 1.0, 1.0, accepts)]
+    [rect(0.5, 0.5, 0.5, 0.5, accepts)]
 }
 
 fn hits(world: &mut HitWorld) -> Vec<(u32, u32, HitTypes, bool)> {
@@ -109,7 +110,7 @@ fn the_first_attack_volume_in_list_order_that_matches_gives_the_hit() {
 #[test]
 fn volumes_are_mirrored_when_the_object_faces_the_other_way() {
     // A sword reaching right of a 1 × 1 hero; targets on both sides.
-    let sword = [rect(1.0, 0.4, 2.0, 0.6, HitTypes::HIT)];
+    let sword = [rect(1.5, 0.5, 0.5, 0.1, HitTypes::HIT)];
     for (flip_x, struck) in [(false, 2u32), (true, 1)] {
         let mut world = HitWorld::new();
         world.begin_frame();
@@ -199,7 +200,7 @@ fn a_volume_reaching_into_the_corner_is_not_missed() {
     // Replica Island's bounding circle, radius max(w, h) / 2 about the object's centre,
     // misses this: a 1 × 1 object whose attack box sits at its top-right corner, beyond
     // the circle, touching a victim diagonally.
-    let claw = [rect(1.0, 1.0, 1.5, 1.5, HitTypes::HIT)];
+    let claw = [rect(1.25, 1.25, 0.25, 0.25, HitTypes::HIT)];
     let mut world = HitWorld::new();
     world.begin_frame();
     world.register(object(1, 0.0, 0.0), &claw, &[]).unwrap();
@@ -266,7 +267,7 @@ fn a_bullet_ten_times_its_size_per_frame_cannot_pass_through() {
         ..HitObject::new(1, Vec2::new(0.4, 0.5), Vec2::ZERO)
     };
     world.register(shot, &bullet, &[]).unwrap();
-    let wall = [rect(0.0, 0.0, 0.1, 1.0, HitTypes::HIT)];
+    let wall = [rect(0.05, 0.5, 0.05, 0.5, HitTypes::HIT)];
     world
         .register(HitObject::new(2, Vec2::ZERO, Vec2::ONE), &[], &wall)
         .unwrap();
@@ -288,15 +289,15 @@ fn volumes_and_objects_beyond_max_coord_are_refused_by_register_too() {
     let far = |what: &'static str| move |e: VolumeError| matches!(e, VolumeError::OutOfRange { what: w, .. } if w == what);
     assert!(Volume::circle(Vec2::new(1e20, 0.0), 1.0, HitTypes::HIT).is_err_and(far("center")));
     assert!(Volume::circle(Vec2::ZERO, 3e38, HitTypes::HIT).is_err_and(far("radius")));
-    assert!(Volume::rect(Vec2::ZERO, Vec2::splat(3e38), HitTypes::HIT).is_err_and(far("max")));
     assert!(
-        Volume::rect(
-            Vec2::splat(-MAX_COORD),
-            Vec2::splat(MAX_COORD),
-            HitTypes::HIT
-        )
-        .is_ok()
+        Volume::rect(Vec2::ZERO, Vec2::splat(3e38), HitTypes::HIT).is_err_and(far("half extents"))
     );
+    assert!(Volume::rect(Vec2::splat(3e38), Vec2::ONE, HitTypes::HIT).is_err_and(far("center")));
+    assert!(
+        Volume::rect(Vec2::splat(MAX_COORD), Vec2::splat(4.0), HitTypes::HIT)
+            .is_err_and(far("max"))
+    );
+    assert!(Volume::rect(Vec2::ZERO, Vec2::splat(MAX_COORD), HitTypes::HIT).is_ok());
     // Built from the public fields, the check still applies.
     let huge = Volume {
         shape: VolumeShape::Circle(Circle::new(Vec2::ZERO, f32::MAX)),
@@ -304,7 +305,7 @@ fn volumes_and_objects_beyond_max_coord_are_refused_by_register_too() {
     };
     assert!(huge.check().is_err_and(far("radius")));
     let inside_out = Volume {
-        shape: VolumeShape::Box(Aabb {
+        shape: VolumeShape::Rect(Aabb {
             min: Vec2::ONE,
             max: Vec2::ZERO,
         }),
@@ -312,7 +313,7 @@ fn volumes_and_objects_beyond_max_coord_are_refused_by_register_too() {
     };
     assert!(matches!(
         inside_out.check(),
-        Err(VolumeError::InvertedBox { .. })
+        Err(VolumeError::InvertedRect { .. })
     ));
     // Objects: position, start of the frame's move, size.
     let at = |x: f32| object(1, x, 0.0);
@@ -395,7 +396,7 @@ fn placed(v: &Volume, o: &HitObject) -> Shape {
     };
     match v.shape {
         VolumeShape::Circle(c) => Shape::Circle(o.position + m(c.center), c.radius),
-        VolumeShape::Box(b) => {
+        VolumeShape::Rect(b) => {
             let (a, c) = (m(b.min), m(b.max));
             Shape::Box(o.position + a.min(c), o.position + a.max(c))
         }
@@ -451,13 +452,12 @@ fn volume() -> impl Strategy<Value = Volume> {
     let q = || (-8i32..24).prop_map(|v| v as f32 / 8.0);
     prop_oneof![
         (q(), q(), 0u32..8, hit_types()).prop_map(|(x, y, r, t)| circle(x, y, r as f32 / 8.0, t)),
-        (q(), q(), 0u32..12, 0u32..12, hit_types()).prop_map(|(x, y, w, h, t)| rect(
-            x,
-            y,
-            x + w as f32 / 8.0,
-            y + h as f32 / 8.0,
-            t
-        )),
+        // Corner (x, y), size (w/8, h/8): the centre and half extents are on a 1/16
+        // lattice, so the corners are exact.
+        (q(), q(), 0u32..12, 0u32..12, hit_types()).prop_map(|(x, y, w, h, t)| {
+            let (hx, hy) = (w as f32 / 16.0, h as f32 / 16.0);
+            rect(x + hx, y + hy, hx, hy, t)
+        }),
     ]
 }
 

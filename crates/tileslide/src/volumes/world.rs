@@ -144,7 +144,7 @@ struct Entry {
 /// world.begin_frame();
 /// let hero = HitObject { team: 1, ..HitObject::new(1, Vec2::ZERO, Vec2::new(1.0, 2.0)) };
 /// let fist = [Volume::circle(Vec2::new(1.3, 1.0), 0.3, HitTypes::HIT)?];
-/// let body = [Volume::rect(Vec2::ZERO, Vec2::new(1.0, 2.0), HitTypes::ANY)?];
+/// let body = [Volume::rect(Vec2::new(0.5, 1.0), Vec2::new(0.5, 1.0), HitTypes::ANY)?];
 /// let hero = world.register(hero, &fist, &body)?;
 /// let slime = HitObject::new(2, Vec2::new(1.5, 0.0), Vec2::ONE);
 /// let slime = world.register(slime, &[], &body[..1])?;
