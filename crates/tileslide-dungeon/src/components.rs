@@ -134,7 +134,7 @@ pub struct Swing {
 /// A fireball: an attack volume swept along its velocity each step.
 #[derive(Clone, Copy, Debug)]
 pub struct Fireball {
-    /// Its key in the hit volumes (from [`crate::spawn::Ids`]).
+    /// Its owner in the hit volumes (from [`crate::spawn::Ids`]).
     pub key: u64,
     /// Centre.
     pub position: Vec2,

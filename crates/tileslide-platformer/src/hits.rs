@@ -3,8 +3,8 @@
 //! enemy's body deals `HIT` to the player's body.
 
 use tileslide::{
-    Aabb, Circle, HitEvent, HitObject, HitTypes, HitWorld, TeamRule, Vec2, Volume, VolumeError,
-    VolumeShape,
+    Aabb, Circle, HitEvent, HitObject, HitTypes, HitWorld, Owner, TeamRule, Vec2, Volume,
+    VolumeError, VolumeShape,
 };
 
 /// The game's own hit type: a stomp, dealt by the player's feet while falling.
@@ -59,8 +59,8 @@ pub struct Boxed {
 }
 
 impl Boxed {
-    fn object(&self, key: u64, team: u32) -> HitObject {
-        let mut object = HitObject::new(key, self.center - self.half, self.half * 2.0);
+    fn object(&self, owner: u64, team: u32) -> HitObject {
+        let mut object = HitObject::new(Owner(owner), self.center - self.half, self.half * 2.0);
         object.motion = self.motion;
         object.team = team;
         object
@@ -140,7 +140,7 @@ pub fn exchange(
     for (i, center) in coins {
         let coin = Volume::circle(Vec2::splat(radius), radius, HitTypes::COLLECT).ok();
         let mut object = HitObject::new(
-            1_000_000 + *i as u64,
+            Owner(1_000_000 + *i as u64),
             *center - Vec2::splat(radius),
             Vec2::splat(2.0 * radius),
         );

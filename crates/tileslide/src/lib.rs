@@ -56,6 +56,7 @@ pub mod broadphase;
 mod controller;
 mod geometry;
 pub mod io;
+mod owner;
 mod path;
 mod query;
 mod tiles;
@@ -73,14 +74,15 @@ pub use geometry::{
     cast_ray_segment, sweep_box_segment, sweep_circle_circle, sweep_circle_segment,
 };
 pub use glam::Vec2;
+pub use owner::Owner;
 pub use path::{
     FlowField, MAX_NAV_NODES, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, NavPath,
 };
 pub use query::{CircleHit, Faces, QueryFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{
     ActiveSegment, Cell, JOURNAL_EDITS, JournalError, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError,
-    MapRevision, Owner, SegmentFlags, SegmentRef, ShapeError, TemporaryError, TemporarySegment,
-    TileId, TileMap, TileSegment, TileSet, TileSetError, TileShape,
+    MapRevision, SegmentFlags, SegmentRef, ShapeError, TemporaryError, TemporarySegment, TileId,
+    TileMap, TileSegment, TileSet, TileSetError, TileShape,
 };
 pub use volumes::{
     Facing, HitEvent, HitObject, HitRule, HitTypes, HitWorld, ObjectId, TeamRule, Volume,

@@ -7,8 +7,8 @@
 
 use proptest::prelude::*;
 use tileslide::{
-    Facing, HitEvent, HitObject, HitTypes, HitWorld, ObjectId, TeamRule, Vec2, Volume, VolumeShape,
-    broadphase::PairMethod,
+    Facing, HitEvent, HitObject, HitTypes, HitWorld, ObjectId, Owner, TeamRule, Vec2, Volume,
+    VolumeShape, broadphase::PairMethod,
 };
 
 fn circle(x: f32, y: f32, r: f32, hit: HitTypes) -> Volume {
@@ -20,10 +20,10 @@ fn rect(x: f32, y: f32, hx: f32, hy: f32, hit: HitTypes) -> Volume {
     Volume::rect(Vec2::new(x, y), Vec2::new(hx, hy), hit).unwrap()
 }
 
-fn object(key: u64, x: f32, y: f32) -> HitObject {
+fn object(owner: u64, x: f32, y: f32) -> HitObject {
     HitObject {
-        team: key as u32,
-        ..HitObject::new(key, Vec2::new(x, y), Vec2::ONE)
+        team: owner as u32,
+        ..HitObject::new(Owner(owner), Vec2::new(x, y), Vec2::ONE)
     }
 }
 
@@ -141,8 +141,8 @@ fn events_come_pair_by_pair_in_registration_order_both_directions() {
     let fist = body(HitTypes::HIT);
     let mut world = HitWorld::new();
     world.begin_frame();
-    for (key, x) in [(1, 1.0), (2, 0.5), (3, 0.0)] {
-        world.register(object(key, x, 0.0), &fist, &fist).unwrap();
+    for (owner, x) in [(1, 1.0), (2, 0.5), (3, 0.0)] {
+        world.register(object(owner, x, 0.0), &fist, &fist).unwrap();
     }
     let order: Vec<_> = hits(&mut world).iter().map(|h| (h.0, h.1)).collect();
     assert_eq!(order, [(0, 1), (1, 0), (0, 2), (2, 0), (1, 2), (2, 1)]);
@@ -180,13 +180,13 @@ fn the_victim_decides_and_the_attacker_learns_it() {
     let accepted =
         |v: ObjectId, got: &[HitEvent]| got.iter().find(|e| e.victim == v).unwrap().accepted;
     assert!(!accepted(b, &got) && !accepted(c, &got) && accepted(d, &got));
-    // A callback: the victim with key 4 refuses, and is asked only about hits it received.
+    // A callback: the victim owned by 4 refuses, and is asked only about hits it received.
     let mut asked = Vec::new();
     let got = world
         .detect(
             &mut |attacker: &HitObject, victim: &HitObject, _: HitTypes| {
-                asked.push((attacker.key, victim.key));
-                victim.key != 4
+                asked.push((attacker.owner.0, victim.owner.0));
+                victim.owner != Owner(4)
             },
         )
         .to_vec();
@@ -264,12 +264,12 @@ fn a_bullet_ten_times_its_size_per_frame_cannot_pass_through() {
     // From x = -0.6 to x = 0.4 this frame (+1.0), through a target 0.1 thick at x = 0.
     let shot = HitObject {
         motion: Vec2::new(1.0, 0.0),
-        ..HitObject::new(1, Vec2::new(0.4, 0.5), Vec2::ZERO)
+        ..HitObject::new(Owner(1), Vec2::new(0.4, 0.5), Vec2::ZERO)
     };
     world.register(shot, &bullet, &[]).unwrap();
     let wall = [rect(0.05, 0.5, 0.05, 0.5, HitTypes::HIT)];
     world
-        .register(HitObject::new(2, Vec2::ZERO, Vec2::ONE), &[], &wall)
+        .register(HitObject::new(Owner(2), Vec2::ZERO, Vec2::ONE), &[], &wall)
         .unwrap();
     assert_eq!(hits(&mut world).len(), 1);
     // The target moving too: they pass each other in the frame, meeting in the middle.
@@ -277,7 +277,7 @@ fn a_bullet_ten_times_its_size_per_frame_cannot_pass_through() {
     world.register(shot, &bullet, &[]).unwrap();
     let dodging = HitObject {
         motion: Vec2::new(-1.0, 0.0),
-        ..HitObject::new(2, Vec2::new(-0.9, 0.0), Vec2::ONE)
+        ..HitObject::new(Owner(2), Vec2::new(-0.9, 0.0), Vec2::ONE)
     };
     world.register(dodging, &[], &wall).unwrap();
     assert_eq!(hits(&mut world).len(), 1);
@@ -477,7 +477,7 @@ fn objects() -> impl Strategy<Value = Vec<Registered>> {
                     flip_y: fy,
                 },
                 ..HitObject::new(
-                    0,
+                    Owner(0),
                     Vec2::new(x as f32 / 8.0, y as f32 / 8.0),
                     Vec2::new(1.0, 2.0),
                 )
@@ -536,8 +536,8 @@ proptest! {
         let (a, b) = (Volume { hit: HitTypes::HIT, ..a }, Volume { hit: HitTypes::HIT, ..b });
         let motion = Vec2::new(motion.0 as f32, motion.1 as f32) / 8.0;
         let end = Vec2::new(from.0 as f32, from.1 as f32) / 8.0 + motion;
-        let shooter = HitObject { motion, ..HitObject::new(1, end, Vec2::ONE) };
-        let target = HitObject { team: 1, ..HitObject::new(2, Vec2::ZERO, Vec2::ONE) };
+        let shooter = HitObject { motion, ..HitObject::new(Owner(1), end, Vec2::ONE) };
+        let target = HitObject { team: 1, ..HitObject::new(Owner(2), Vec2::ZERO, Vec2::ONE) };
         let mut world = HitWorld::new();
         world.begin_frame();
         world.register(shooter, &[a], &[]).unwrap();

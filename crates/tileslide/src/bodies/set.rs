@@ -9,6 +9,7 @@ use super::error::BodyError;
 use super::handle::BodyHandle;
 use super::resolver::Resolver;
 use crate::geometry::in_range;
+use crate::owner::Owner;
 use crate::tiles::TileMap;
 
 #[derive(Clone, Debug)]
@@ -239,12 +240,12 @@ impl Bodies {
         Ok(())
     }
 
-    /// Changes a body's user data.
+    /// Changes a body's owner.
     ///
     /// # Errors
     /// [`BodyError::StaleHandle`].
-    pub fn set_user_data(&mut self, handle: BodyHandle, user_data: u64) -> Result<(), BodyError> {
-        self.get_mut(handle)?.user_data = user_data;
+    pub fn set_owner(&mut self, handle: BodyHandle, owner: Owner) -> Result<(), BodyError> {
+        self.get_mut(handle)?.owner = owner;
         Ok(())
     }
 

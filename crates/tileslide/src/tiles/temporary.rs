@@ -3,10 +3,7 @@ use thiserror::Error;
 
 use super::{MapError, SegmentFlags, TileMap};
 use crate::geometry::{Segment, in_range, unit_normal};
-
-/// Who submitted a temporary segment: any number the game uses for its objects.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Owner(pub u64);
+use crate::owner::Owner;
 
 /// A segment that is part of the world only until it is cleared: a moving platform's top, a
 /// door. Queries treat it like a tile segment, except that it knows who owns it (so the
