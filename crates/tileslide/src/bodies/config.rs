@@ -101,8 +101,8 @@ impl Default for ResolveConfig {
 pub struct ResolveReport {
     /// Bodies with a non-zero proposed move.
     pub moving: usize,
-    /// Contacts met (each sweep that stopped at something counts once).
-    pub contacts: usize,
+    /// How many contacts were met (each sweep that stopped at something counts once).
+    pub contact_count: usize,
     /// Bodies whose remainder was still blocked after the last pass, and was cut at its
     /// first contact.
     pub cut_short: usize,
