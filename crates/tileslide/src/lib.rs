@@ -70,7 +70,7 @@ pub use controller::{
     Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
 };
 pub use geometry::{
-    Aabb, Circle, MAX_COORD, PARALLEL_TOLERANCE, Ray, RaySegmentHit, Segment, SweepHit,
+    Aabb, Circle, EndCaps, MAX_COORD, PARALLEL_TOLERANCE, Ray, RaySegmentHit, Segment, SweepHit,
     cast_ray_segment, sweep_box_segment, sweep_circle_circle, sweep_circle_segment,
 };
 pub use glam::Vec2;

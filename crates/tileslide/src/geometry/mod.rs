@@ -6,6 +6,7 @@
 
 mod aabb;
 mod circle;
+mod end_caps;
 mod limits;
 mod normal;
 pub(crate) mod ray;
@@ -15,6 +16,7 @@ mod sweep_box;
 
 pub use aabb::Aabb;
 pub use circle::Circle;
+pub use end_caps::EndCaps;
 pub use limits::MAX_COORD;
 pub(crate) use limits::in_range;
 pub(crate) use normal::unit_normal;

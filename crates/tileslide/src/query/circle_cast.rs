@@ -9,7 +9,9 @@ use glam::Vec2;
 
 use super::{Faces, QueryFilter, SegmentSource};
 use crate::MAX_COORD;
-use crate::geometry::{Aabb, Segment, SweepHit, circle_segment, in_range, sweep_circle_segment};
+use crate::geometry::{
+    Aabb, EndCaps, Segment, SweepHit, circle_segment, in_range, sweep_circle_segment,
+};
 use crate::tiles::store::{CAP_A, CAP_B, HotSegment};
 use crate::tiles::{SegmentFlags, SegmentRef, TileId, TileMap};
 
@@ -44,8 +46,8 @@ pub struct CircleHit {
 pub(crate) struct Capsule {
     pub segment: Segment,
     pub normal: Vec2,
-    /// Rounded cap at `[a, b]`.
-    pub caps: [bool; 2],
+    /// Which ends are rounded.
+    pub caps: EndCaps,
 }
 
 impl Capsule {
@@ -57,7 +59,7 @@ impl Capsule {
     /// Such a normal is replaced by the segment's perpendicular on the same side; a normal
     /// perpendicular to rounding (every computed one) is kept bit for bit.
     #[inline]
-    pub fn new(segment: Segment, normal: Vec2, caps: [bool; 2]) -> Self {
+    pub fn new(segment: Segment, normal: Vec2, caps: EndCaps) -> Self {
         let e = segment.delta();
         let normal = if normal.dot(e).abs() <= 1e-6 * e.length() {
             normal
@@ -104,7 +106,7 @@ impl Capsule {
         Self {
             segment: Segment::new(self.segment.b, self.segment.a),
             normal: -self.normal,
-            caps: [self.caps[1], self.caps[0]],
+            caps: self.caps.reversed(),
         }
     }
 }
@@ -279,7 +281,7 @@ impl TileMap {
                 continue;
             }
             f(Wall {
-                capsule: Capsule::new(tmp.segment, tmp.normal, [true; 2]),
+                capsule: Capsule::new(tmp.segment, tmp.normal, EndCaps::BOTH),
                 flags: tmp.flags,
                 source: SegmentSource::Temporary {
                     owner: tmp.owner,
@@ -310,7 +312,7 @@ impl TileMap {
     pub(crate) fn capsules_in(&self, region: &Aabb, mask: SegmentFlags, out: &mut Vec<Capsule>) {
         for tmp in self.temporaries() {
             if tmp.flags.intersects(mask) && region.overlaps_segment(&tmp.segment) {
-                out.push(Capsule::new(tmp.segment, tmp.normal, [true; 2]));
+                out.push(Capsule::new(tmp.segment, tmp.normal, EndCaps::BOTH));
             }
         }
         self.for_each_segment_in(region, |_, _, s, capsule| {
@@ -346,7 +348,10 @@ impl TileMap {
                     let capsule = Capsule::new(
                         Segment::new(s.a, s.b()),
                         s.normal,
-                        [cap & CAP_A != 0, cap & CAP_B != 0],
+                        EndCaps {
+                            a: cap & CAP_A != 0,
+                            b: cap & CAP_B != 0,
+                        },
                     );
                     f(index, i as u32, s, capsule);
                 }
