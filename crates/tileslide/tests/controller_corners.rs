@@ -7,8 +7,8 @@
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Character, CharacterShape, Contact, Contacts, ControllerConfig, EndCaps, MoveOptions, Owner,
-    Segment, SegmentFlags, TemporarySegment, TileMap, Vec2, sweep_box_segment,
+    Character, CharacterShape, Contact, Contacts, ControllerConfig, MoveOptions, Owner, Segment,
+    SegmentFlags, TemporarySegment, TileMap, Vec2, geometry::EndCaps, geometry::sweep_box_segment,
 };
 
 const UP: Vec2 = Vec2::NEG_Y;

@@ -12,8 +12,8 @@
 use glam::DVec2;
 use proptest::prelude::*;
 use tileslide::{
-    EndCaps, Ray, Segment, SweepHit, Vec2, cast_ray_segment, sweep_box_segment,
-    sweep_circle_circle, sweep_circle_segment,
+    Ray, Segment, Vec2, geometry::EndCaps, geometry::SweepHit, geometry::cast_ray_segment,
+    geometry::sweep_box_segment, geometry::sweep_circle_circle, geometry::sweep_circle_segment,
 };
 
 fn v(x: f32, y: f32) -> Vec2 {

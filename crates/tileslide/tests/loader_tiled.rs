@@ -14,7 +14,8 @@ use tileslide::io::tiled::{
 };
 use tileslide::io::{LoadError, LoadErrorKind, Location};
 use tileslide::{
-    Cell, HitTypes, MAX_CELLS, QueryFilter, Ray, SegmentFlags, TileId, TileMap, TileSegment, Vec2,
+    Cell, HitTypes, QueryFilter, Ray, SegmentFlags, TileId, TileMap, TileSegment, Vec2,
+    limits::MAX_CELLS,
 };
 
 const H: u32 = Flip::HORIZONTAL_BIT;

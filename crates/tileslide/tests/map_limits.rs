@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use tileslide::{Cell, MAX_CELLS, MapError, TileId, TileMap, TileSet, TileShape, Vec2};
+use tileslide::{Cell, MapError, TileId, TileMap, TileSet, TileShape, Vec2, limits::MAX_CELLS};
 
 fn round_tile(vertices: usize) -> TileSet {
     let mut set = TileSet::new(Vec2::ONE).unwrap();
@@ -127,7 +127,7 @@ fn cell_at_agrees_with_cell_corner_for_awkward_cell_sizes() {
 
 #[test]
 fn a_map_reaching_past_max_coord_is_refused() {
-    use tileslide::MAX_COORD;
+    use tileslide::limits::MAX_COORD;
     // 2^20 cells of 32 map units reach 2^25, past the coordinate range.
     let mut set = TileSet::new(Vec2::splat(32.0)).unwrap();
     set.insert(

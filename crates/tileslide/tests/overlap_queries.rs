@@ -608,7 +608,7 @@ fn invalid_circles_and_boxes_overlap_nothing_not_even_temporaries() {
 mod absurd_inputs {
     use tileslide::io::ascii;
     use tileslide::{
-        Aabb, Circle, MAX_COORD, Owner, Segment, SegmentFlags, TemporarySegment, Vec2,
+        Aabb, Circle, Owner, Segment, SegmentFlags, TemporarySegment, Vec2, limits::MAX_COORD,
     };
 
     fn room() -> tileslide::TileMap {

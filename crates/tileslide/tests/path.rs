@@ -26,8 +26,8 @@ use glam::DVec2;
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, JOURNAL_EDITS, NavConfig,
-    NavError, NavGrid, NavPath, QueryFilter, SegmentFlags, TileMap, Vec2,
+    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, NavConfig, NavError, NavGrid,
+    NavPath, QueryFilter, SegmentFlags, TileMap, Vec2, limits::JOURNAL_EDITS,
 };
 
 use path_support::any_angle::{InflatedScene, room_and_blocks};

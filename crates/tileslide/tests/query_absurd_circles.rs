@@ -18,7 +18,9 @@ use generators::{map_of, small_map_at};
 use glam::DVec2;
 use path_support::walls::point_segment_distance;
 use proptest::prelude::*;
-use tileslide::{Cell, CircleHit, Faces, MAX_COORD, QueryFilter, SegmentSource, TileMap, Vec2};
+use tileslide::{
+    Cell, CircleHit, Faces, QueryFilter, SegmentSource, TileMap, Vec2, limits::MAX_COORD,
+};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)

@@ -17,7 +17,7 @@ use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
     Cell, Faces, QueryFilter, Ray, RayHit, Segment, SegmentSource, TileId, TileMap, Vec2,
-    cast_ray_segment,
+    geometry::cast_ray_segment,
 };
 
 fn v(x: f32, y: f32) -> Vec2 {
@@ -79,7 +79,7 @@ fn solve_f64(ray: &Ray, segment: &Segment) -> Option<f32> {
     let w = a - o;
     let sign = 1.0f64.copysign(den);
     let (den, tn, sn) = (den * sign, w.perp_dot(e) * sign, w.perp_dot(d) * sign);
-    let crossing = den > f64::from(tileslide::PARALLEL_TOLERANCE) * e.length_squared();
+    let crossing = den > f64::from(tileslide::geometry::PARALLEL_TOLERANCE) * e.length_squared();
     let inside = crossing && tn >= 0.0 && tn <= den && sn >= 0.0 && sn <= den;
     inside.then(|| (tn / den) as f32)
 }
@@ -100,7 +100,7 @@ fn required(ray: &Ray, segment: &Segment, eps: f64) -> bool {
     let err_den = c * d.length() * e.length();
     let err_tn = c * w.length() * e.length();
     let err_sn = c * w.length() * d.length();
-    let threshold = f64::from(tileslide::PARALLEL_TOLERANCE) * e.length_squared();
+    let threshold = f64::from(tileslide::geometry::PARALLEL_TOLERANCE) * e.length_squared();
     den > threshold * (1.0 + 1e-5) + err_den
         && tn > err_tn
         && den - tn > err_tn + err_den

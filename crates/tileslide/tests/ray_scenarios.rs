@@ -888,6 +888,9 @@ fn ray_ending_exactly_on_a_floor_hits_it_with_a_non_dyadic_origin() {
     // The floor's top is y = 2.58 (as the map stores it); the ray ends exactly there.
     let r = ray(0.5, top.a.y - 0.5, 0.5, top.a.y);
     assert_eq!(r.end().y, top.a.y);
-    assert_eq!(tileslide::cast_ray_segment(&r, &top).unwrap().t, 1.0);
+    assert_eq!(
+        tileslide::geometry::cast_ray_segment(&r, &top).unwrap().t,
+        1.0
+    );
     assert_eq!(hit(&m, r, &front()).t, 1.0);
 }

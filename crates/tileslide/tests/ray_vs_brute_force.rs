@@ -23,7 +23,7 @@ use generators::{query_filter, rows, tile_chars, tile_map, varied_tile_chars};
 use proptest::prelude::*;
 use tileslide::{
     Cell, Owner, QueryFilter, Ray, RayHit, Segment, SegmentFlags, SegmentSource, TemporarySegment,
-    TileMap, Vec2, cast_ray_segment,
+    TileMap, Vec2, geometry::cast_ray_segment,
 };
 
 fn v(x: f32, y: f32) -> Vec2 {
@@ -570,7 +570,7 @@ proptest! {
             for col in 0..m.width() {
                 for s in m.active_segments(Cell::new(col, row)) {
                     if s.normal.dot(r.delta) < 0.0
-                        && let Some(hit) = tileslide::cast_ray_segment(&r, &s.segment)
+                        && let Some(hit) = tileslide::geometry::cast_ray_segment(&r, &s.segment)
                     {
                         nearest = Some(nearest.map_or(hit.t, |n| n.min(hit.t)));
                     }

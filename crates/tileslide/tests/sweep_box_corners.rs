@@ -7,7 +7,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use proptest::prelude::*;
-use tileslide::{EndCaps, Segment, Vec2, sweep_box_segment};
+use tileslide::{Segment, Vec2, geometry::EndCaps, geometry::sweep_box_segment};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)

@@ -268,7 +268,7 @@ fn huge_but_finite_normal_is_normalised_not_zeroed() {
 #[test]
 fn temporary_segment_beyond_max_coord_is_refused_naming_the_point() {
     let mut m = corridor();
-    let far = tileslide::MAX_COORD * 2.0;
+    let far = tileslide::limits::MAX_COORD * 2.0;
     for (a, b) in [
         (v(3.0, 1.0), v(far, 1.0)),
         (v(-far, 1.0), v(3.0, 1.0)),
@@ -276,7 +276,7 @@ fn temporary_segment_beyond_max_coord_is_refused_naming_the_point() {
     ] {
         let mut bad = door(3.0, 8);
         bad.segment = Segment::new(a, b);
-        let p = if a.x.abs().max(a.y.abs()) > tileslide::MAX_COORD {
+        let p = if a.x.abs().max(a.y.abs()) > tileslide::limits::MAX_COORD {
             a
         } else {
             b
@@ -296,7 +296,10 @@ fn temporary_segment_beyond_max_coord_is_refused_naming_the_point() {
     assert!(m.temporaries().is_empty(), "nothing refused is kept");
     // At MAX_COORD exactly it is accepted, and a ray from afar along it hits it.
     let mut edge = door(3.0, 8);
-    edge.segment = Segment::new(v(tileslide::MAX_COORD, -1.0), v(tileslide::MAX_COORD, 4.0));
+    edge.segment = Segment::new(
+        v(tileslide::limits::MAX_COORD, -1.0),
+        v(tileslide::limits::MAX_COORD, 4.0),
+    );
     m.add_temporary(edge).unwrap();
     let ray = Ray::between(v(0.5, 1.5), v(3e38, 1.5));
     let hits = m.cast_ray_all(ray, &QueryFilter::default());

@@ -18,7 +18,10 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use proptest::prelude::*;
-use tileslide::{EndCaps, Segment, SweepHit, Vec2, sweep_circle_circle, sweep_circle_segment};
+use tileslide::{
+    Segment, Vec2, geometry::EndCaps, geometry::SweepHit, geometry::sweep_circle_circle,
+    geometry::sweep_circle_segment,
+};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)

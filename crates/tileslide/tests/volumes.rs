@@ -285,7 +285,7 @@ fn a_bullet_ten_times_its_size_per_frame_cannot_pass_through() {
 
 #[test]
 fn volumes_and_objects_beyond_max_coord_are_refused_by_register_too() {
-    use tileslide::{Aabb, Circle, MAX_COORD, VolumeError};
+    use tileslide::{Aabb, Circle, VolumeError, limits::MAX_COORD};
     let far = |what: &'static str| move |e: VolumeError| matches!(e, VolumeError::OutOfRange { what: w, .. } if w == what);
     assert!(Volume::circle(Vec2::new(1e20, 0.0), 1.0, HitTypes::HIT).is_err_and(far("center")));
     assert!(Volume::circle(Vec2::ZERO, 3e38, HitTypes::HIT).is_err_and(far("radius")));

@@ -134,8 +134,8 @@ pub struct MoveOptions {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 ///
-/// [`sweep_circle_segment`]: crate::sweep_circle_segment
-/// [`sweep_box_segment`]: crate::sweep_box_segment
+/// [`sweep_circle_segment`]: crate::geometry::sweep_circle_segment
+/// [`sweep_box_segment`]: crate::geometry::sweep_box_segment
 #[derive(Clone, Debug)]
 pub struct Character {
     /// The shape's centre, in world coordinates.

@@ -32,13 +32,13 @@ pub enum CharacterShape {
 
 impl CharacterShape {
     /// A circle of `radius`; an error unless it is positive and at most
-    /// [`MAX_COORD`](crate::MAX_COORD).
+    /// [`MAX_COORD`](crate::limits::MAX_COORD).
     pub fn circle(radius: f32) -> Result<Self, ControllerError> {
         Self::Circle { radius }.validated()
     }
 
     /// A box with half extents `half`; an error unless both are positive and at most
-    /// [`MAX_COORD`](crate::MAX_COORD).
+    /// [`MAX_COORD`](crate::limits::MAX_COORD).
     pub fn rect(half: Vec2) -> Result<Self, ControllerError> {
         Self::Rect { half }.validated()
     }

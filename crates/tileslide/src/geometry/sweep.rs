@@ -112,7 +112,8 @@ pub struct SweepHit {
 /// NaN or infinite input hits nothing.
 ///
 /// ```
-/// # use tileslide::{Vec2, sweep_circle_circle};
+/// # use tileslide::geometry::sweep_circle_circle;
+/// # use tileslide::Vec2;
 /// // A circle of radius 1 moving 10 to the right meets one of radius 1 whose centre is 5 away.
 /// let hit = sweep_circle_circle(Vec2::ZERO, Vec2::new(10.0, 0.0), Vec2::new(5.0, 0.0), 2.0).unwrap();
 /// assert_eq!(hit.t, 0.3);
@@ -192,7 +193,8 @@ pub(crate) fn circle_circle(d: Vec2, motion: Vec2, radius_sum: f32) -> Option<Sw
 /// and scaled by a power of two into that range first.
 ///
 /// ```
-/// # use tileslide::{Segment, Vec2, sweep_circle_segment, EndCaps};
+/// # use tileslide::geometry::{EndCaps, sweep_circle_segment};
+/// # use tileslide::{Segment, Vec2};
 /// // A floor along y = 0 facing up; a circle of radius 0.5 falls onto it from y = 3.
 /// let floor = Segment::new(Vec2::new(-5.0, 0.0), Vec2::new(5.0, 0.0));
 /// let hit = sweep_circle_segment(Vec2::new(0.0, 3.0), 0.5, Vec2::new(0.0, -5.0), &floor, Vec2::Y, EndCaps::BOTH).unwrap();
@@ -229,7 +231,7 @@ pub fn sweep_circle_segment(
 
 /// [`sweep_circle_segment`] in `f32` as written, without the size check: for callers whose
 /// inputs are known to be ordinary. The resolver's bodies are (positions, moves and radii
-/// within [`MAX_COORD`](crate::MAX_COORD), radii positive), so its hot loop runs exactly
+/// within [`MAX_COORD`](crate::limits::MAX_COORD), radii positive), so its hot loop runs exactly
 /// the arithmetic it ran before the check existed.
 #[inline]
 pub(crate) fn circle_segment(

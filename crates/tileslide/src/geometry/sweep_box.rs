@@ -65,7 +65,8 @@ const CORNER_ROUNDING: f32 = 8.0 * f32::EPSILON;
 /// hits nothing.
 ///
 /// ```
-/// # use tileslide::{Segment, Vec2, sweep_box_segment, EndCaps};
+/// # use tileslide::geometry::{EndCaps, sweep_box_segment};
+/// # use tileslide::{Segment, Vec2};
 /// // A floor along y = 0 facing up; a 1 × 2 box falls onto it from y = 3 (its bottom at 2).
 /// let floor = Segment::new(Vec2::new(-5.0, 0.0), Vec2::new(5.0, 0.0));
 /// let hit = sweep_box_segment(Vec2::new(0.0, 3.0), Vec2::new(0.5, 1.0), Vec2::new(0.0, -4.0), &floor, Vec2::Y, EndCaps::BOTH).unwrap();

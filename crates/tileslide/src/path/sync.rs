@@ -42,7 +42,7 @@ impl NavChange {
     }
 
     /// True when the grid was more edits behind the map than the map remembers
-    /// ([`JOURNAL_EDITS`](crate::JOURNAL_EDITS)) and was built anew: which moves changed is
+    /// ([`JOURNAL_EDITS`](crate::limits::JOURNAL_EDITS)) and was built anew: which moves changed is
     /// not known, and every path counts as affected.
     #[must_use]
     pub fn is_rebuild(&self) -> bool {
@@ -106,7 +106,7 @@ impl NavGrid {
     ///
     /// Each edited cell costs the same as on any map size: the grid recomputes the moves
     /// near it (see `docs/path.md`), and is then what [`NavGrid::new`] would build. A grid
-    /// more edits behind than the map remembers ([`JOURNAL_EDITS`](crate::JOURNAL_EDITS))
+    /// more edits behind than the map remembers ([`JOURNAL_EDITS`](crate::limits::JOURNAL_EDITS))
     /// is built anew, and the change says so ([`NavChange::is_rebuild`]).
     ///
     /// # Errors

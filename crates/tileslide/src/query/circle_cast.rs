@@ -8,10 +8,10 @@
 use glam::Vec2;
 
 use super::{Faces, QueryFilter, SegmentSource};
-use crate::MAX_COORD;
 use crate::geometry::{
     Aabb, EndCaps, Segment, SweepHit, circle_segment, in_range, sweep_circle_segment,
 };
+use crate::limits::MAX_COORD;
 use crate::tiles::store::{CAP_A, CAP_B, HotSegment};
 use crate::tiles::{SegmentFlags, SegmentRef, TileId, TileMap};
 

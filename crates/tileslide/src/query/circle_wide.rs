@@ -1,5 +1,5 @@
 //! Circle casts that the `f32` sweep of `cast_circle` does not take as given: a centre far
-//! from the map, or a radius beyond [`MAX_COORD`](crate::MAX_COORD).
+//! from the map, or a radius beyond [`MAX_COORD`](crate::limits::MAX_COORD).
 //!
 //! Rounding such a start to `f32` near the map would move the line it travels (at 10⁷ an
 //! `f32` is a whole unit apart from the next, at 10³⁰ about 10²³ units). So the motion is

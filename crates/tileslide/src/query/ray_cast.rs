@@ -38,9 +38,9 @@ impl TileMap {
     ///   map, or whose motion is longer than 2³² or shorter than 2⁻³² cells along an axis,
     ///   is solved in `f64` on the part of it that crosses the map, with no early stop, and
     ///   its hit point is taken on the segment; from an origin beyond
-    ///   [`MAX_COORD`](crate::MAX_COORD) every cell is tested (see `docs/ray-casting.md`).
+    ///   [`MAX_COORD`](crate::limits::MAX_COORD) every cell is tested (see `docs/ray-casting.md`).
     ///
-    /// [`cast_ray_segment`]: crate::cast_ray_segment
+    /// [`cast_ray_segment`]: crate::geometry::cast_ray_segment
     /// [`Faces::Both`]: crate::Faces::Both
     ///
     /// ```
@@ -254,7 +254,7 @@ impl TileMap {
     /// Calls `visit` with the index of every cell a finite ray that is not ordinary may
     /// hit a segment in, in walk order (a cell may come more than once).
     ///
-    /// From an origin within [`MAX_COORD`](crate::MAX_COORD), the ray is first clipped in
+    /// From an origin within [`MAX_COORD`](crate::limits::MAX_COORD), the ray is first clipped in
     /// `f64` to the map's rectangle widened by the touch tolerance, where the products of
     /// `f32` values are exact and nothing overflows; the clipped piece, in grid units,
     /// lies within the map (so `f32` holds it as well as any ray inside the map) and is

@@ -32,12 +32,12 @@ pub enum MapError {
         /// y given.
         y: f32,
     },
-    /// The map would reach past [`MAX_COORD`](crate::MAX_COORD) from the origin: its
+    /// The map would reach past [`MAX_COORD`](crate::limits::MAX_COORD) from the origin: its
     /// corners are where every query and body would compute.
     #[error(
         "map of {width}×{height} cells at ({x}, {y}) reaches ({far_x}, {far_y}), past the \
          ±{max} coordinate range (MAX_COORD)",
-        max = crate::MAX_COORD
+        max = crate::limits::MAX_COORD
     )]
     OutOfRange {
         /// Width given.

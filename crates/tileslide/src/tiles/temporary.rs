@@ -34,13 +34,13 @@ pub enum TemporaryError {
     /// The normal is the zero vector.
     #[error("temporary segment of owner {} has a zero normal", .0.0)]
     ZeroNormal(Owner),
-    /// An end point lies beyond [`MAX_COORD`](crate::MAX_COORD): every query computes with
+    /// An end point lies beyond [`MAX_COORD`](crate::limits::MAX_COORD): every query computes with
     /// the segment, and promises its answers within that range only.
     #[error(
         "temporary segment of owner {} has end point ({x}, {y}), past the ±{max} coordinate \
          range (MAX_COORD)",
         owner.0,
-        max = crate::MAX_COORD
+        max = crate::limits::MAX_COORD
     )]
     OutOfRange {
         /// Who submitted it.
@@ -53,7 +53,7 @@ pub enum TemporaryError {
 }
 
 impl TemporarySegment {
-    /// Checks the segment (finite, within [`MAX_COORD`](crate::MAX_COORD), not a point, a
+    /// Checks the segment (finite, within [`MAX_COORD`](crate::limits::MAX_COORD), not a point, a
     /// non-zero normal) and normalises its normal.
     pub(crate) fn validated(mut self) -> Result<Self, TemporaryError> {
         let id = self.owner;

@@ -53,7 +53,7 @@ impl HitObject {
 
     /// Whether the object can be registered with its volumes: its position, where it
     /// starts the frame (`position − motion`) and its size finite and within
-    /// [`MAX_COORD`](crate::MAX_COORD), so that placing and sweeping its volumes cannot
+    /// [`MAX_COORD`](crate::limits::MAX_COORD), so that placing and sweeping its volumes cannot
     /// overflow. [`HitWorld::register`] refuses an object this refuses.
     ///
     /// # Errors
@@ -210,7 +210,7 @@ impl HitWorld {
     /// What [`HitObject::check`] or [`Volume::check`] says of the object or of its first
     /// bad volume (a NaN, infinite or out-of-range position, start, size, centre or
     /// corner); the world is unchanged. So every pair test computes within a few times
-    /// [`MAX_COORD`](crate::MAX_COORD), where nothing overflows (a box at 3·10³⁸ once
+    /// [`MAX_COORD`](crate::limits::MAX_COORD), where nothing overflows (a box at 3·10³⁸ once
     /// missed a box it lay in, its centre overflowing to infinity).
     pub fn register(
         &mut self,
