@@ -101,7 +101,8 @@ impl Boxed {
                 min: b.min + corner,
                 max: b.max + corner,
             })),
-            VolumeShape::Circle(_) => None,
+            // The strip is built as a rect; any other shape has no picture here.
+            _ => None,
         }
     }
 }

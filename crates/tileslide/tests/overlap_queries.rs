@@ -39,6 +39,9 @@ fn key_of(o: &SegmentOverlap) -> Key {
     match o.source {
         SegmentSource::Tile { segment, .. } => Key::Tile(segment.cell, segment.index),
         SegmentSource::Temporary { index, .. } => Key::Temporary(index),
+        // The brute force lists tile and temporary segments only: a hit on anything else
+        // is one it cannot check.
+        other => panic!("a segment source the brute force does not list: {other:?}"),
     }
 }
 

@@ -44,7 +44,8 @@ fn along() -> Ray {
 fn owner_of(hit: &RayHit) -> Option<Owner> {
     match hit.source {
         SegmentSource::Temporary { owner, .. } => Some(owner),
-        SegmentSource::Tile { .. } => None,
+        // Tile segments, and any other source, have no owner.
+        _ => None,
     }
 }
 

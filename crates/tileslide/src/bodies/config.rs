@@ -7,6 +7,7 @@ use crate::geometry::MAX_COORD;
 
 /// What happens to the blocked part of a move.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum SlideMode {
     /// The write-up's rule: the blocked remainder keeps its full length and is redirected
     /// along the contact tangent, to the side its projection points. The default.

@@ -39,6 +39,7 @@ use sweep::SweepPairs;
 /// How a [`PairFinder`] finds the pairs of boxes: bodies that may meet during a step,
 /// objects whose hit volumes may touch.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum PairMethod {
     /// A uniform grid sized to the largest box: the right choice when boxes are of similar
     /// size. The default.

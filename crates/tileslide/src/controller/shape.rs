@@ -16,6 +16,7 @@ use crate::query::Capsule;
 /// # Ok::<(), tileslide::ControllerError>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum CharacterShape {
     /// A circle of this radius: rolls over corners, and stands on a slope at one point.
     Circle {

@@ -9,6 +9,7 @@ use super::{FlowField, NavGrid};
 
 /// What a navigation call refuses.
 #[derive(Clone, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum NavError {
     /// `max_radius` is not positive and finite, or too large for the cell size.
     #[error("max_radius {max_radius} must be positive, finite and at most {limit} (31 cells)")]

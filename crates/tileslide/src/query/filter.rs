@@ -4,6 +4,7 @@ use crate::tiles::{Owner, SegmentFlags};
 
 /// Which faces of a segment a ray or a cast can hit.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[non_exhaustive]
 pub enum Faces {
     /// Only faces the ray meets head-on: `dot(normal, p1 − p0) < 0` (the default).
     #[default]

@@ -7,6 +7,7 @@ use super::{Cell, TemporaryError, TileId};
 
 /// Why a map could not be built or edited.
 #[derive(Clone, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum MapError {
     /// Width and height must both be at least 1.
     #[error("map size {width}×{height} is empty")]

@@ -24,6 +24,7 @@ pub struct TemporarySegment {
 
 /// Why a temporary segment was refused.
 #[derive(Clone, Copy, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum TemporaryError {
     /// A coordinate, normal or velocity component is NaN or infinite.
     #[error("temporary segment of owner {} has a non-finite coordinate, normal or velocity", .0.0)]

@@ -14,6 +14,7 @@ use crate::geometry::{Aabb, Circle, MAX_COORD, Segment, in_range};
 
 /// A volume's shape in object-local coordinates.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum VolumeShape {
     /// A disc (radius ≥ 0).
     Circle(Circle),
@@ -40,6 +41,7 @@ pub struct Volume {
 
 /// A volume that cannot be used.
 #[derive(Clone, Copy, Debug, Error, PartialEq)]
+#[non_exhaustive]
 pub enum VolumeError {
     /// A coordinate or radius is NaN or infinite.
     #[error("volume has a non-finite {what}: ({x}, {y})")]
