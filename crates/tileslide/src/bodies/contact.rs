@@ -8,7 +8,7 @@
 use glam::Vec2;
 
 use super::config::SlideMode;
-use crate::geometry::{EndCaps, SweepHit, circle_circle};
+use crate::geometry::{SweepHit, circle_circle};
 use crate::query::Capsule;
 
 /// Relative size below which the remainder's projection on the tangent counts as zero (the
@@ -80,12 +80,11 @@ pub(super) fn sweep_wall(
     // A rounded end only grazed from within its radius is not a contact, but the flat side
     // or the other end may still be met further on: sweep again without the ends the move
     // only grazes.
-    let mut caps = wall.caps.to_array();
+    let mut caps = wall.caps;
     for (cap, end) in caps.iter_mut().zip([wall.segment.a, wall.segment.b]) {
         *cap &= !circle_circle(center - end, motion, radius)
             .is_some_and(|end_hit| grazes(end_hit, motion));
     }
-    let caps = EndCaps::from_array(caps);
     Capsule { caps, ..*wall }.sweep_ordinary(center, radius, motion)
 }
 

@@ -11,7 +11,7 @@ use edge::Footing;
 use super::contact::{Contact, Contacts, Surface};
 use super::platform::Riding;
 use super::{CharacterShape, ControllerError};
-use crate::geometry::{Aabb, EndCaps, MAX_COORD, Segment, SweepHit, in_range};
+use crate::geometry::{Aabb, MAX_COORD, Segment, SweepHit, in_range};
 use crate::query::{Capsule, QueryFilter, SegmentSource, Wall};
 use crate::tiles::{ActiveSegment, Owner, SegmentFlags, TileMap};
 
@@ -754,13 +754,13 @@ impl Character {
     /// them. A character the platform holds is above them, where the floor's faces cover
     /// them: through rounding they tilted a rolling circle's ground normal by 2e-4 and moved
     /// it by 1e-5 of a cell. So for it they are flat, as on an all-solid floor.
-    fn caps_needed(&self, map: &TileMap, wall: &Wall, options: MoveOptions) -> EndCaps {
-        let mut caps = wall.capsule.caps.to_array();
+    fn caps_needed(&self, map: &TileMap, wall: &Wall, options: MoveOptions) -> [bool; 2] {
+        let mut caps = wall.capsule.caps;
         let SegmentSource::Tile { segment, .. } = wall.source else {
-            return wall.capsule.caps;
+            return caps;
         };
         let Some(this) = map.active_segment(segment) else {
-            return wall.capsule.caps;
+            return caps;
         };
         for (end, cap) in caps.iter_mut().enumerate() {
             let point = end_point(&this.segment, end);
@@ -790,7 +790,7 @@ impl Character {
                 *cap = false;
             }
         }
-        EndCaps::from_array(caps)
+        caps
     }
 }
 

@@ -15,7 +15,7 @@
 use glam::Vec2;
 
 use super::{Character, Contact, Contacts, MoveOptions};
-use crate::geometry::{EndCaps, Segment};
+use crate::geometry::Segment;
 use crate::query::{Capsule, SegmentSource};
 use crate::tiles::{Owner, SegmentFlags, TileMap};
 
@@ -35,7 +35,7 @@ impl Riding {
             return None;
         };
         let platform = map.temporaries().get(index)?;
-        let capsule = Capsule::new(platform.segment, platform.normal, EndCaps::BOTH);
+        let capsule = Capsule::new(platform.segment, platform.normal, [true; 2]);
         Some(Self {
             owner,
             middle: midpoint(&platform.segment),
@@ -51,7 +51,7 @@ impl Riding {
             .iter()
             .filter(|t| t.owner == self.owner)
             .filter(|t| {
-                Capsule::new(t.segment, t.normal, EndCaps::BOTH)
+                Capsule::new(t.segment, t.normal, [true; 2])
                     .normal
                     .dot(self.normal)
                     > 0.9
@@ -119,7 +119,7 @@ impl Character {
             if !platform.flags.intersects(self.config().mask) || one_way && options.drop_through {
                 continue;
             }
-            let capsule = Capsule::new(platform.segment, platform.normal, EndCaps::BOTH);
+            let capsule = Capsule::new(platform.segment, platform.normal, [true; 2]);
             let Some(depth) = self.shape().penetration(&capsule, self.position) else {
                 continue;
             };

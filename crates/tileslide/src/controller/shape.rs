@@ -3,7 +3,7 @@
 use glam::Vec2;
 
 use super::ControllerError;
-use crate::geometry::{Aabb, SweepHit, in_range, sweep_box_segment};
+use crate::geometry::{Aabb, EndCaps, SweepHit, in_range, sweep_box_segment};
 use crate::query::Capsule;
 
 /// A character's collision shape, centred on its position.
@@ -112,7 +112,7 @@ impl CharacterShape {
                 motion,
                 &capsule.segment,
                 capsule.normal,
-                capsule.caps,
+                EndCaps::from_array(capsule.caps),
             ),
         }
     }

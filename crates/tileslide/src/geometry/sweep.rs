@@ -226,11 +226,11 @@ pub fn sweep_circle_segment(
         )?;
         (p, radius, motion, Segment::new(Vec2::ZERO, e))
     };
-    circle_segment(center, radius, motion, &segment, normal, caps)
+    circle_segment(center, radius, motion, &segment, normal, caps.to_array())
 }
 
-/// [`sweep_circle_segment`] in `f32` as written, without the size check: for callers whose
-/// inputs are known to be ordinary. The resolver's bodies are (positions, moves and radii
+/// [`sweep_circle_segment`] in `f32` as written, without the size check, the caps as
+/// `[a, b]`: for callers whose inputs are known to be ordinary. The resolver's bodies are (positions, moves and radii
 /// within [`MAX_COORD`](crate::limits::MAX_COORD), radii positive), so its hot loop runs exactly
 /// the arithmetic it ran before the check existed.
 #[inline]
@@ -240,7 +240,7 @@ pub(crate) fn circle_segment(
     motion: Vec2,
     segment: &Segment,
     normal: Vec2,
-    caps: EndCaps,
+    caps: [bool; 2],
 ) -> Option<SweepHit> {
     let (a, e) = (segment.a, segment.delta());
     let h0 = (center - a).dot(normal);
@@ -277,7 +277,7 @@ pub(crate) fn circle_segment(
             best = Some(SweepHit { t, normal });
         }
     }
-    for (end, capped) in [(a, caps.a), (segment.b, caps.b)] {
+    for (end, capped) in [(a, caps[0]), (segment.b, caps[1])] {
         if !capped {
             continue;
         }

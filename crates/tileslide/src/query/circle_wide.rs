@@ -11,7 +11,7 @@ use glam::{DVec2, Vec2};
 
 use super::QueryFilter;
 use super::circle_cast::{Capsule, CircleHit};
-use crate::geometry::{Aabb, EndCaps, Segment, SweepHit, circle_segment};
+use crate::geometry::{Aabb, Segment, SweepHit, circle_segment};
 use crate::tiles::TileMap;
 
 /// The size, as a power of two, that a wall's sweep is scaled to: the largest component of
@@ -178,7 +178,7 @@ fn sweep_wide(capsule: &Capsule, start: DVec2, radius: f64, motion: DVec2) -> Op
     let (a, b) = (capsule.segment.a.as_dvec2(), capsule.segment.b.as_dvec2());
     let normal = capsule.normal;
     let mut best = sweep_scaled(start - a, b - a, radius, motion, normal, false);
-    for (end, capped) in [(a, capsule.caps.a), (b, capsule.caps.b)] {
+    for (end, capped) in [(a, capsule.caps[0]), (b, capsule.caps[1])] {
         if capped
             && let Some(hit) = sweep_scaled(start - end, DVec2::ZERO, radius, motion, normal, true)
             && best.is_none_or(|b| hit.t < b.t)
@@ -232,7 +232,7 @@ fn sweep_scaled(
         (motion * scale).as_vec2(),
         &Segment::new(Vec2::ZERO, (e * scale).as_vec2()),
         normal,
-        EndCaps { a: cap, b: false },
+        [cap, false],
     )
 }
 
@@ -293,7 +293,7 @@ mod tests {
         // A floor from (0, 0) to (1, 0) facing up, the centre above it moving down-right,
         // and its rounded ends: radii from 4 to 10³⁰ units all hold it, and all meet it at
         // once with the same normal.
-        let floor = Capsule::new(Segment::new(Vec2::ZERO, Vec2::X), Vec2::Y, EndCaps::BOTH);
+        let floor = Capsule::new(Segment::new(Vec2::ZERO, Vec2::X), Vec2::Y, [true; 2]);
         let (start, motion) = (DVec2::new(0.25, 0.5), DVec2::new(1.0, -1.0));
         let hits: Vec<_> = [4.0, 1e5, 1e15, 1e30]
             .into_iter()

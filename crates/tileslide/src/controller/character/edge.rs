@@ -138,7 +138,7 @@ impl Character {
             if !self.held_by(wall.flags, capsule.segment.a, capsule.normal, options) {
                 continue;
             }
-            for (end, cap) in capsule.caps.to_array().into_iter().enumerate() {
+            for (end, &cap) in capsule.caps.iter().enumerate() {
                 if !cap || across == 0.0 {
                     continue;
                 }
