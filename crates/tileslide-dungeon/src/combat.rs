@@ -4,7 +4,7 @@
 //! ray cast meets). Then damage and death.
 
 use hecs::{Entity, World};
-use tileslide::{Bodies, Ray, QueryFilter};
+use tileslide::{Bodies, QueryFilter, Ray};
 
 use crate::brains::{IMP_RANGE, Sightings};
 use crate::components::{

@@ -1,7 +1,7 @@
 //! An enemy: a box that patrols back and forth, turning at walls, edges and its range.
 
 use tileslide::{
-    Character, CharacterShape, ControllerConfig, ControllerError, MoveOptions, Ray, QueryFilter,
+    Character, CharacterShape, ControllerConfig, ControllerError, MoveOptions, QueryFilter, Ray,
     TileMap, Vec2,
 };
 

@@ -1,7 +1,7 @@
 //! The script that plays: it reads the world through ray casts and decides, each step,
 //! whether to run, wait, jump or drop.
 
-use tileslide::{Ray, QueryFilter, SegmentFlags, SegmentSource, Vec2};
+use tileslide::{QueryFilter, Ray, SegmentFlags, SegmentSource, Vec2};
 
 use crate::coin::Coin;
 use crate::enemy::Enemy;

@@ -12,7 +12,7 @@ use super::contact::{Contact, Contacts, Surface};
 use super::platform::Riding;
 use super::{CharacterShape, ControllerError};
 use crate::geometry::{Aabb, MAX_COORD, Segment, SweepHit, in_range};
-use crate::query::{Capsule, RayFilter, SegmentSource, Wall};
+use crate::query::{Capsule, QueryFilter, SegmentSource, Wall};
 use crate::tiles::{ActiveSegment, Owner, SegmentFlags, TileMap};
 
 /// How a character moves: slope limit, ground snapping, the gap it keeps from surfaces.
@@ -134,8 +134,8 @@ pub struct MoveOptions {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 ///
-/// [`sweep_circle_segment`]: crate::sweep_circle_segment
-/// [`sweep_box_segment`]: crate::sweep_box_segment
+/// [`sweep_circle_segment`]: crate::geometry::sweep_circle_segment
+/// [`sweep_box_segment`]: crate::geometry::sweep_box_segment
 #[derive(Clone, Debug)]
 pub struct Character {
     /// The shape's centre, in world coordinates.
@@ -648,7 +648,7 @@ impl Character {
         );
         let region = Aabb::from_corners(start.min.min(end.min), start.max.max(end.max))
             .expand(self.config.skin);
-        let mut filter = RayFilter::default().with_mask(self.config.mask);
+        let mut filter = QueryFilter::default().with_mask(self.config.mask);
         filter.exclude_owner = exclude;
         self.walls.clear();
         map.walls_in(&region, &filter, &mut self.walls);

@@ -19,6 +19,7 @@ use glam::Vec2;
 
 /// A character or its move was given a value it cannot use.
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum ControllerError {
     /// A position, direction or displacement was not finite (or `up` was zero).
     #[error("character {what} must be finite (and `up` non-zero), got {value}")]
@@ -29,10 +30,10 @@ pub enum ControllerError {
         /// The value given.
         value: Vec2,
     },
-    /// A position, or the end point of a move, lies beyond [`MAX_COORD`](crate::MAX_COORD).
+    /// A position, or the end point of a move, lies beyond [`MAX_COORD`](crate::limits::MAX_COORD).
     #[error(
         "character {what} {value} is beyond the coordinate range (±{})",
-        crate::MAX_COORD
+        crate::limits::MAX_COORD
     )]
     OutOfRange {
         /// Which value: `"position"` or `"displacement"` (the move's end point is out of
@@ -42,10 +43,10 @@ pub enum ControllerError {
         value: Vec2,
     },
     /// A shape's size was not positive and finite, or was beyond
-    /// [`MAX_COORD`](crate::MAX_COORD).
+    /// [`MAX_COORD`](crate::limits::MAX_COORD).
     #[error(
         "character shape {what} must be positive and at most {}, got {value}",
-        crate::MAX_COORD
+        crate::limits::MAX_COORD
     )]
     BadShape {
         /// `"radius"` or `"half extents"`.
@@ -56,7 +57,7 @@ pub enum ControllerError {
     /// A [`ControllerConfig`] field was out of range.
     #[error(
         "controller config field `{field}` is out of range: {value} (max_slope_degrees in [0, 90), distances in [0, {}], max_slides at least 1)",
-        crate::MAX_COORD
+        crate::limits::MAX_COORD
     )]
     BadConfig {
         /// The field's name.
