@@ -2,7 +2,7 @@
 
 use anyhow::{Result, anyhow, bail};
 use serde_json::{Value, json};
-use tileslide::{NavConfig, NavError, NavGrid, Path, TileMap, Vec2};
+use tileslide::{NavConfig, NavError, NavGrid, NavPath, TileMap, Vec2};
 
 use crate::json::number;
 use crate::map_file::{self, MapArgs};
@@ -55,7 +55,7 @@ pub fn run(args: &MapArgs, from: &str, to: &str, radius: &str, as_json: bool) ->
 }
 
 /// `{"found":true,"length":L,"points":[[X,Y],...]}` or `{"found":false}`.
-fn path_json(path: Option<&Path>) -> Value {
+fn path_json(path: Option<&NavPath>) -> Value {
     match path {
         None => json!({ "found": false }),
         Some(path) => {

@@ -14,7 +14,8 @@ use tileslide::io::tiled::{
 };
 use tileslide::io::{LoadError, LoadErrorKind, Location};
 use tileslide::{
-    Cell, HitTypes, MAX_CELLS, Ray, RayFilter, SegmentFlags, TileId, TileMap, TileSegment, Vec2,
+    Cell, HitTypes, QueryFilter, Ray, SegmentFlags, TileId, TileMap, TileSegment, Vec2,
+    limits::MAX_CELLS,
 };
 
 const H: u32 = Flip::HORIZONTAL_BIT;
@@ -228,7 +229,7 @@ fn an_infinite_map_covers_its_chunks_and_keeps_tileds_pixels() {
     // A vertical door: a 4-pixel slab across the cell at x = 6..10 of its cell, flag1 set.
     // Cell (32, 5) spans x = 256..272, y = -176..-160 in pixels.
     let ray = Ray::between(v(200.0, -168.0), v(300.0, -168.0));
-    let hit = map.cast_ray(ray, &RayFilter::default()).unwrap();
+    let hit = map.cast_ray(ray, &QueryFilter::default()).unwrap();
     assert_eq!(hit.tile(), Some(TileId(9)));
     assert_eq!((hit.point, hit.normal), (v(262.0, -168.0), v(-1.0, 0.0)));
     assert_eq!(
@@ -362,7 +363,7 @@ fn a_collision_vertex_just_outside_its_tile_snaps_onto_the_edge() {
     assert_eq!(ends, [v(0.0, 0.0), v(0.0, 128.0), v(128.0, 0.0)]);
     // A ray across the tile meets the slope where it is drawn.
     let ray = Ray::between(v(120.0, 64.0), v(0.0, 64.0));
-    let hit = map.map.cast_ray(ray, &RayFilter::default()).unwrap();
+    let hit = map.map.cast_ray(ray, &QueryFilter::default()).unwrap();
     assert_eq!(hit.point, v(64.0, 64.0));
     // Up to 2 px (1/64 of 128) snaps; past it the map is refused, naming layer, cell, tile.
     assert!(
@@ -660,7 +661,7 @@ fn a_ray_meets_a_flipped_ramps_slope_from_its_open_side_only() {
     let flips = load(&fixture("flips.tmx"));
     // Cell (1, 0): the ramp flipped H, its slope from (16,0) to (32,16) facing up-right.
     let down = Ray::between(v(28.0, -10.0), v(28.0, 30.0));
-    let hit = flips.map.cast_ray(down, &RayFilter::default()).unwrap();
+    let hit = flips.map.cast_ray(down, &QueryFilter::default()).unwrap();
     assert_eq!(hit.point, v(28.0, 12.0));
     let k = std::f32::consts::FRAC_1_SQRT_2;
     assert!(hit.normal.distance(v(k, -k)) < 1e-6);
@@ -732,7 +733,7 @@ fn object_layers_come_with_shapes_properties_and_hit_types() {
 fn rays_and_circles_behave_in_the_example_cave() {
     let cave = load(&example("cave.tmj"));
     let map = &cave.map;
-    let filter = RayFilter::default();
+    let filter = QueryFilter::default();
     // Down onto the one-way ledge (cells 14..18, row 4): stops on its top at y = 64.
     let hit = map
         .cast_ray(Ray::between(v(232.0, 20.0), v(232.0, 200.0)), &filter)

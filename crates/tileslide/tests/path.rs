@@ -1,4 +1,4 @@
-//! Proves the navigation grid (`NavGrid`, `Path`, `FlowField`) against
+//! Proves the navigation grid (`NavGrid`, `NavPath`, `FlowField`) against
 //! references built without `tileslide::path` (see `path_support`):
 //!
 //! - the moves it opens and the points it connects equal a brute-force lattice whose
@@ -11,7 +11,7 @@
 //!   reaches the goal through a door and past pillars;
 //! - a grid and a field caught up with random digs and fills (`sync`, read from the map's
 //!   edit journal, rebuilt when the journal was overrun) equal ones built on the edited
-//!   map, and `Path::is_affected_by` never misses a change;
+//!   map, and `NavPath::is_affected_by` never misses a change;
 //! - a grid or field used with a map that is not its own (another map, a clone edited
 //!   apart) is refused;
 //! - bad input is refused with the error naming it.
@@ -26,8 +26,8 @@ use glam::DVec2;
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, JOURNAL_EDITS, NavConfig,
-    NavError, NavGrid, Path, RayFilter, SegmentFlags, TileMap, Vec2,
+    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, NavConfig, NavError, NavGrid,
+    NavPath, QueryFilter, SegmentFlags, TileMap, Vec2, limits::JOURNAL_EDITS,
 };
 
 use path_support::any_angle::{InflatedScene, room_and_blocks};
@@ -50,10 +50,10 @@ fn map(text: &str) -> TileMap {
     ascii::parse(text, "path.txt", 1.0).unwrap()
 }
 
-fn both_faces() -> RayFilter {
-    RayFilter {
+fn both_faces() -> QueryFilter {
+    QueryFilter {
         faces: Faces::Both,
-        ..RayFilter::default()
+        ..QueryFilter::default()
     }
 }
 
@@ -224,7 +224,7 @@ proptest! {
 fn check_path(
     map: &TileMap,
     walls: &Walls,
-    path: &Path,
+    path: &NavPath,
     (from, to): (Vec2, Vec2),
     r: f32,
 ) -> Result<(), TestCaseError> {
@@ -355,7 +355,7 @@ const LENGTH_RATIO: f64 = 1.08;
 /// exact shortest path between its ends.
 struct LengthCheck {
     what: String,
-    path: Path,
+    path: NavPath,
     bound: f64,
 }
 
@@ -781,9 +781,9 @@ fn assert_same_moves(nav: &NavGrid, fresh: &NavGrid, map: &TileMap, context: &st
 
 /// Asserts that every run of `path` is still clear for its radius on `map` (solid walls
 /// from both sides, one-way platforms from the front).
-fn assert_still_clear(path: &Path, map: &TileMap, context: &str) {
+fn assert_still_clear(path: &NavPath, map: &TileMap, context: &str) {
     let solid = both_faces().with_mask(SegmentFlags::SOLID);
-    let one_way = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
+    let one_way = QueryFilter::default().with_mask(SegmentFlags::ONE_WAY);
     let r = path.radius();
     for run in path.points().windows(2) {
         let (a, motion) = (run[0], run[1] - run[0]);

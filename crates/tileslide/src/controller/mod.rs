@@ -20,6 +20,7 @@ use glam::Vec2;
 
 /// A character or its move was given a value it cannot use.
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum ControllerError {
     /// A position, direction or displacement was not finite (or `up` was zero).
     #[error("character {what} must be finite (and `up` non-zero), got {value}")]

@@ -60,7 +60,7 @@ use glam::Vec2;
 pub use error::NavError;
 pub(crate) use error::check_point;
 pub use flow::FlowField;
-pub use route::Path;
+pub use route::NavPath;
 pub use sync::NavChange;
 
 use crate::tiles::{MapRevision, SegmentFlags, TileMap};
@@ -292,7 +292,7 @@ impl NavGrid {
         from: Vec2,
         to: Vec2,
         radius: f32,
-    ) -> Result<Option<Path>, NavError> {
+    ) -> Result<Option<NavPath>, NavError> {
         check_point("from", from)?;
         check_point("to", to)?;
         let need = self.check(map, radius)?;
@@ -303,7 +303,7 @@ impl NavGrid {
         }
         // Near ends joined straight: no search needed.
         if self.joins_straight(map, from, to, radius) {
-            return Ok(Some(Path::new(vec![from, to], radius, need)));
+            return Ok(Some(NavPath::new(vec![from, to], radius, need)));
         }
         let k = self.class(need);
         let class = &mut self.classes[k];
@@ -326,7 +326,7 @@ impl NavGrid {
         points.extend(nodes.iter().map(|&n| lattice.position_of(n as usize)));
         points.push(to);
         let smoothed = smooth::smooth(map, &points, radius, &self.table);
-        Ok(Some(Path::new(smoothed, radius, need)))
+        Ok(Some(NavPath::new(smoothed, radius, need)))
     }
 
     /// The index in `classes` of the radius class `need`, built on first use.

@@ -18,7 +18,7 @@
 use glam::Vec2;
 
 use super::clearance::Clearance;
-use crate::query::{Faces, RayFilter};
+use crate::query::{Faces, QueryFilter};
 use crate::tiles::{SegmentFlags, TileMap};
 
 /// Corners turning by less than this (radians) are not cut: a corner of turn θ in place of
@@ -66,9 +66,9 @@ pub(crate) fn is_clear(map: &TileMap, a: Vec2, b: Vec2, radius: f32, table: &Cle
     if a == b {
         return true;
     }
-    let filter = RayFilter {
+    let filter = QueryFilter {
         faces: Faces::Both,
-        ..RayFilter::default()
+        ..QueryFilter::default()
     }
     .with_mask(SegmentFlags(table.mask.0 & !SegmentFlags::ONE_WAY.0));
     map.cast_circle(a, radius, b - a, &filter).is_none()

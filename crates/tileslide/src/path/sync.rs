@@ -42,7 +42,7 @@ impl NavChange {
     }
 
     /// True when the grid was more edits behind the map than the map remembers
-    /// ([`JOURNAL_EDITS`](crate::JOURNAL_EDITS)) and was built anew: which moves changed is
+    /// ([`JOURNAL_EDITS`](crate::limits::JOURNAL_EDITS)) and was built anew: which moves changed is
     /// not known, and every path counts as affected.
     #[must_use]
     pub fn is_rebuild(&self) -> bool {
@@ -78,10 +78,10 @@ impl NavChange {
     }
 
     /// True when some edit changed moves within `bounds` and opened or closed some move for
-    /// a circle needing `need` clearance steps (what [`Path::is_affected_by`] asks, edit by
+    /// a circle needing `need` clearance steps (what [`NavPath::is_affected_by`] asks, edit by
     /// edit, as if the grid had caught up after each).
     ///
-    /// [`Path::is_affected_by`]: super::Path::is_affected_by
+    /// [`NavPath::is_affected_by`]: super::NavPath::is_affected_by
     pub(super) fn affects(&self, bounds: &Aabb, need: u16) -> bool {
         if self.rebuilt {
             return true;
@@ -106,7 +106,7 @@ impl NavGrid {
     ///
     /// Each edited cell costs the same as on any map size: the grid recomputes the moves
     /// near it (see `docs/path.md`), and is then what [`NavGrid::new`] would build. A grid
-    /// more edits behind than the map remembers ([`JOURNAL_EDITS`](crate::JOURNAL_EDITS))
+    /// more edits behind than the map remembers ([`JOURNAL_EDITS`](crate::limits::JOURNAL_EDITS))
     /// is built anew, and the change says so ([`NavChange::is_rebuild`]).
     ///
     /// # Errors

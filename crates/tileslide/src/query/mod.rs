@@ -14,6 +14,6 @@ mod traversal;
 
 pub use circle_cast::CircleHit;
 pub(crate) use circle_cast::{Capsule, Wall};
-pub use filter::{Faces, RayFilter};
+pub use filter::{Faces, QueryFilter};
 pub use hit::{RayHit, SegmentSource};
 pub use overlap::SegmentOverlap;
