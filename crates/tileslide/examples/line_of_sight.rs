@@ -13,7 +13,7 @@ use std::error::Error;
 use std::path::{Path, PathBuf};
 
 use tileslide::io::ascii;
-use tileslide::{Circle, Ray, QueryFilter, TileMap, Vec2};
+use tileslide::{Circle, QueryFilter, Ray, TileMap, Vec2};
 use tileslide_render::{Animation, Canvas, Picture, RenderOptions, Rgba};
 
 /// y down: `#` walls, `/` and `\` slanted walls.

@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 
 use tileslide::io::ascii;
 use tileslide::{
-    Circle, Facing, HitObject, HitTypes, HitWorld, TeamRule, Vec2, Volume, VolumeShape,
+    Circle, Facing, HitObject, HitTypes, HitWorld, Owner, TeamRule, Vec2, Volume, VolumeShape,
 };
 use tileslide_render::{Animation, Canvas, Picture, RenderOptions, VolumeKind};
 
@@ -122,7 +122,7 @@ fn play(mut animation: Option<&mut Animation<'_>>) -> Result<(Run, Picture), Box
         for (i, &at) in SLIMES.iter().enumerate() {
             let slime = HitObject {
                 team: 2,
-                ..HitObject::new(1 + i as u64, at, SIZE)
+                ..HitObject::new(Owner(1 + i as u64), at, SIZE)
             };
             world.register(slime, &[], &body)?;
             plain.register(slime, &[], &body)?;
@@ -146,7 +146,7 @@ fn play(mut animation: Option<&mut Animation<'_>>) -> Result<(Run, Picture), Box
             if let Some(victim) = world.object(event.victim)
                 && event.accepted
             {
-                *run.hits.entry((swing, victim.key)).or_default() += 1;
+                *run.hits.entry((swing, victim.owner.0)).or_default() += 1;
             }
             picture.hit_event(&world, event);
         }
