@@ -72,7 +72,10 @@ fn circle_casts(c: &mut Criterion) {
             b.iter(|| {
                 let mut hits = 0u32;
                 for &(start, motion) in list {
-                    let hit = m.cast_circle(black_box(start), 0.3, black_box(motion), &filter).ok().flatten();
+                    let hit = m
+                        .cast_circle(black_box(start), 0.3, black_box(motion), &filter)
+                        .ok()
+                        .flatten();
                     hits += u32::from(hit.is_some());
                 }
                 hits

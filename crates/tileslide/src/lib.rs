@@ -20,11 +20,21 @@
 //! - A position along a ray or move is `t` in `[0, 1]`.
 //! - Normals point out of solid material; by default a ray hits only faces it meets
 //!   head-on (`dot(normal, p1 − p0) < 0`).
-//! - Coordinates are at most [`MAX_COORD`] (2²⁴ map units) from the origin: maps reaching
+//! - Coordinates are at most [`MAX_COORD`](limits::MAX_COORD) (2²⁴ map units) from the origin: maps reaching
 //!   past it, and positions, moves' end points, radii and sizes past it, are refused with an
 //!   error naming the value. Ray casts answer every finite ray; a circle cast every finite
 //!   motion of a circle whose centre and radius are in the range.
 //! - Bad input (files, shapes, cells) is an error naming what and where, never a panic.
+//!
+//! ## What is where
+//!
+//! The crate root holds what a game uses every frame: the map and its tiles and temporary
+//! segments, the queries and their hits, bodies, the character, hit volumes, paths, their
+//! errors, the shapes these take ([`Segment`], [`Ray`], [`Circle`], [`Aabb`]), the
+//! caller's entity ([`Owner`]) and [`Vec2`]. Four public modules hold the rest:
+//! [`io`] (the loaders), [`geometry`] (the exact pair primitives the rest is built on),
+//! [`broadphase`] (pairs of overlapping boxes) and [`limits`] (the largest coordinates,
+//! maps and grids accepted).
 //!
 //! ## Quick start
 //!
@@ -52,10 +62,12 @@
 //! ```
 
 mod bodies;
-mod broadphase;
+pub mod broadphase;
 mod controller;
-mod geometry;
+pub mod geometry;
 pub mod io;
+pub mod limits;
+mod owner;
 mod path;
 mod query;
 mod tiles;
@@ -65,23 +77,21 @@ pub use bodies::{
     Bodies, Body, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, ResolveConfig,
     ResolveReport, SlideMode,
 };
-pub use broadphase::{PairMethod, PairFinder};
 pub use controller::{
     Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
 };
-pub use geometry::{
-    Aabb, Circle, MAX_COORD, PARALLEL_TOLERANCE, Ray, RaySegmentHit, Segment, SweepHit,
-    cast_ray_segment, sweep_box_segment, sweep_circle_circle, sweep_circle_segment,
-};
+pub use geometry::aabb::Aabb;
+pub use geometry::circle::Circle;
+pub use geometry::ray::Ray;
+pub use geometry::segment::Segment;
 pub use glam::Vec2;
-pub use path::{
-    FlowField, MAX_NAV_NODES, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, Path,
-};
+pub use owner::Owner;
+pub use path::{FlowField, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, NavPath};
 pub use query::{CastError, CircleHit, Faces, QueryFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{
-    ActiveSegment, Cell, JOURNAL_EDITS, JournalError, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError,
-    MapRevision, Owner, SegmentFlags, SegmentRef, ShapeError, TemporaryError, TemporarySegment,
-    TileId, TileMap, TileSegment, TileSet, TileSetError, TileShape,
+    ActiveSegment, Cell, JournalError, MapError, MapRevision, SegmentFlags, SegmentRef, ShapeError,
+    TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet, TileSetError,
+    TileShape,
 };
 pub use volumes::{
     Facing, HitEvent, HitObject, HitRule, HitTypes, HitWorld, ObjectId, TeamRule, Volume,

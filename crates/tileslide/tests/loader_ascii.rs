@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use tileslide::io::{LoadError, LoadErrorKind, Location, ascii};
-use tileslide::{Cell, Ray, RayFilter, TileId, TileMap, Vec2};
+use tileslide::{Cell, QueryFilter, Ray, TileId, TileMap, Vec2};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)
@@ -167,7 +167,7 @@ fn cell_size_scales_the_map() {
     let hit = map
         .cast_ray(
             Ray::between(v(3.75, 3.75), v(3.75, 0.5)),
-            &RayFilter::default(),
+            &QueryFilter::default(),
         )
         .unwrap();
     // Row 0 at the top (y down): the block above has its bottom edge at y = 2.5.
@@ -198,11 +198,11 @@ fn cell_size_is_checked_before_the_text() {
 fn one_way_platform_blocks_from_above_only() {
     let map = parse("...\n.=.\n...");
     let down = Ray::between(v(1.5, 0.5), v(1.5, 2.5));
-    let hit = map.cast_ray(down, &RayFilter::default()).unwrap();
+    let hit = map.cast_ray(down, &QueryFilter::default()).unwrap();
     assert_eq!(hit.point, v(1.5, 1.0));
     assert_eq!(hit.normal, v(0.0, -1.0));
     let up = Ray::between(v(1.5, 2.5), v(1.5, 0.5));
-    assert!(map.cast_ray(up, &RayFilter::default()).is_none());
+    assert!(map.cast_ray(up, &QueryFilter::default()).is_none());
 }
 
 #[test]
@@ -211,7 +211,7 @@ fn ramps_face_up_left_and_up_right() {
     let map = parse("..\n/\\");
     let h = std::f32::consts::FRAC_1_SQRT_2;
     let on = |x: f32| {
-        map.cast_ray(Ray::between(v(x, 0.5), v(x, 2.0)), &RayFilter::default())
+        map.cast_ray(Ray::between(v(x, 0.5), v(x, 2.0)), &QueryFilter::default())
             .unwrap()
     };
     let up = on(0.25);

@@ -11,7 +11,7 @@ use std::sync::Arc;
 use proptest::prelude::*;
 use replica_support::{data_dir, level_names};
 use tileslide::io::{Location, ascii, baked, replica};
-use tileslide::{Cell, Ray, RayFilter, TileMap, Vec2};
+use tileslide::{Cell, QueryFilter, Ray, TileMap, Vec2};
 
 const CAVE: &str = "\
 ##########
@@ -69,8 +69,8 @@ fn assert_same(a: &TileMap, b: &TileMap) {
         let p1 = a.origin() + Vec2::new(f(3), f(4)) * size;
         let ray = Ray::between(p0, p1);
         assert_eq!(
-            a.cast_ray(ray, &RayFilter::default()),
-            b.cast_ray(ray, &RayFilter::default())
+            a.cast_ray(ray, &QueryFilter::default()),
+            b.cast_ray(ray, &QueryFilter::default())
         );
     }
 }
@@ -386,7 +386,7 @@ fn a_segment_moved_out_of_its_cell_with_a_non_unit_normal_is_refused_despite_its
     // Before this was checked, the file loaded and answered rays differently from its
     // source; what the source answers is what a loaded map must answer.
     let ray = Ray::between(Vec2::new(9.5, 0.5), Vec2::new(11.5, 0.5));
-    assert!(map.cast_ray(ray, &RayFilter::default()).is_none());
+    assert!(map.cast_ray(ray, &QueryFilter::default()).is_none());
 }
 
 /// A change to the record at a payload offset.

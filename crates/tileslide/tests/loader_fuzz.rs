@@ -13,7 +13,7 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 use replica_support::{data_dir, raw_level, read};
 use tileslide::io::{LoadErrorKind, Location, ascii, replica};
-use tileslide::{Cell, Ray, RayFilter, TileId, TileMap, TileSet, Vec2};
+use tileslide::{Cell, QueryFilter, Ray, TileId, TileMap, TileSet, Vec2};
 
 /// 256 cases per property unless `PROPTEST_CASES` says otherwise (for long fuzz runs).
 fn runner() -> TestRunner {
@@ -29,9 +29,9 @@ fn poke(map: &TileMap) {
         Ray::between((b.min + b.max) * 0.5, b.min),
     ];
     for ray in rays {
-        let _ = map.cast_ray(ray, &RayFilter::default());
-        let _ = map.cast_ray(ray, &RayFilter::both_sides());
-        let _ = map.cast_ray_all(ray, &RayFilter::against(Vec2::NEG_Y));
+        let _ = map.cast_ray(ray, &QueryFilter::default());
+        let _ = map.cast_ray(ray, &QueryFilter::both_sides());
+        let _ = map.cast_ray_all(ray, &QueryFilter::against(Vec2::NEG_Y));
     }
     let _ = map.is_point_solid((b.min + b.max) * 0.5);
     assert!(map.active_segment_count() <= 5 * map.placed_segment_count().max(1));

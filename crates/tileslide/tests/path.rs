@@ -26,8 +26,8 @@ use glam::DVec2;
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, limits::JOURNAL_EDITS, NavConfig,
-    NavError, NavGrid, NavPath, QueryFilter, SegmentFlags, TileMap, Vec2,
+    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, NavConfig, NavError, NavGrid,
+    NavPath, QueryFilter, SegmentFlags, TileMap, Vec2, limits::JOURNAL_EDITS,
 };
 
 use path_support::any_angle::{InflatedScene, room_and_blocks};
@@ -686,7 +686,9 @@ fn a_body_the_resolver_left_against_a_wall_still_gets_a_flow_direction() {
     // A path from there, along the wall and away, is clear by the circle cast.
     let path = nav.find_path(&map, p, v(6.0, 2.0), 0.3).unwrap().unwrap();
     for w in path.points().windows(2) {
-        let hit = map.cast_circle(w[0], 0.3, w[1] - w[0], &both_faces()).unwrap();
+        let hit = map
+            .cast_circle(w[0], 0.3, w[1] - w[0], &both_faces())
+            .unwrap();
         assert!(hit.is_none(), "{w:?}: {hit:?}");
     }
     // Where fitting ends: half the resolver's gap from the wall fits, an eighth of the
@@ -1367,7 +1369,10 @@ fn searches_through_a_shared_grid_on_several_threads_find_what_one_thread_finds(
         .iter()
         .map(|&(a, b, r)| nav.clone().find_path(&map, a, b, r).unwrap())
         .collect();
-    assert!(alone.iter().filter(|p| p.is_some()).count() > 4, "too few paths to compare");
+    assert!(
+        alone.iter().filter(|p| p.is_some()).count() > 4,
+        "too few paths to compare"
+    );
     let shared = &nav;
     let found: Vec<Vec<Option<NavPath>>> = std::thread::scope(|scope| {
         let workers: Vec<_> = (0..3)
@@ -1388,7 +1393,11 @@ fn searches_through_a_shared_grid_on_several_threads_find_what_one_thread_finds(
     });
     for (w, paths) in found.iter().enumerate() {
         for (k, path) in paths.iter().enumerate() {
-            assert_eq!(path, &alone[(k + 16 * w) % queries.len()], "worker {w}, query {k}");
+            assert_eq!(
+                path,
+                &alone[(k + 16 * w) % queries.len()],
+                "worker {w}, query {k}"
+            );
         }
     }
 }

@@ -8,7 +8,7 @@
 use std::sync::Arc;
 
 use tileslide::io::ascii;
-use tileslide::{Cell, FlowField, limits::MAX_COORD, NavConfig, NavError, NavGrid, TileMap, Vec2};
+use tileslide::{Cell, FlowField, NavConfig, NavError, NavGrid, TileMap, Vec2, limits::MAX_COORD};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)

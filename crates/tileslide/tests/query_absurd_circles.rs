@@ -18,7 +18,9 @@ use generators::{map_of, small_map_at};
 use glam::DVec2;
 use path_support::walls::point_segment_distance;
 use proptest::prelude::*;
-use tileslide::{CastError, Cell, CircleHit, Faces, limits::MAX_COORD, QueryFilter, SegmentSource, TileMap, Vec2};
+use tileslide::{
+    CastError, Cell, CircleHit, Faces, QueryFilter, SegmentSource, TileMap, Vec2, limits::MAX_COORD,
+};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)
@@ -35,6 +37,9 @@ fn key_of(hit: &CircleHit) -> Key {
     match hit.source {
         SegmentSource::Tile { segment, .. } => Key::Tile(segment.cell, segment.index),
         SegmentSource::Temporary { index, .. } => Key::Temporary(index),
+        // The brute force lists tile and temporary segments only: a hit on anything else
+        // is one it cannot check.
+        other => panic!("a segment source the brute force does not list: {other:?}"),
     }
 }
 
@@ -167,7 +172,9 @@ fn check_against_brute_force(
     cast: &Cast,
     filter: &QueryFilter,
 ) -> Result<Option<CircleHit>, TestCaseError> {
-    let hit = map.cast_circle(cast.center, cast.radius, cast.motion, filter).unwrap();
+    let hit = map
+        .cast_circle(cast.center, cast.radius, cast.motion, filter)
+        .unwrap();
     let walls = walls(map, filter);
     let tol = cast.tolerance(map);
     let r = f64::from(cast.radius);
@@ -254,7 +261,9 @@ fn check_against_moved_start(
     let (_, end) = cast.span();
     let from = cast.at(-clear);
     let to = cast.at(end.min(clear));
-    let moved = map.cast_circle(from.as_vec2(), cast.radius, (to - from).as_vec2(), filter).unwrap();
+    let moved = map
+        .cast_circle(from.as_vec2(), cast.radius, (to - from).as_vec2(), filter)
+        .unwrap();
     let tol = cast.tolerance(map);
     let r = f64::from(cast.radius);
     // A contact whose point the line passes a hair less than a radius from only grazes
@@ -491,7 +500,13 @@ fn a_circle_from_beyond_max_coord_stops_at_the_wall() {
     let left = row_map("#....");
     for far in [MAX_COORD * 2.0, 1e20, 1e30, 1.5e38] {
         let hit = right
-            .cast_circle(v(-far, 0.25), 0.1, v(2.0 * far, 0.0), &QueryFilter::default()).unwrap()
+            .cast_circle(
+                v(-far, 0.25),
+                0.1,
+                v(2.0 * far, 0.0),
+                &QueryFilter::default(),
+            )
+            .unwrap()
             .unwrap_or_else(|| panic!("from {far}: no hit"));
         assert_eq!(hit.normal, v(-1.0, 0.0), "from {far}");
         assert!(
@@ -502,7 +517,13 @@ fn a_circle_from_beyond_max_coord_stops_at_the_wall() {
         let t = (f64::from(far) + 1.9) / (2.0 * f64::from(far));
         assert!((f64::from(hit.t) - t).abs() < 1e-7, "from {far}: {hit:?}");
         let hit = left
-            .cast_circle(v(far, 0.25), 0.1, v(-2.0 * far, 0.0), &QueryFilter::default()).unwrap()
+            .cast_circle(
+                v(far, 0.25),
+                0.1,
+                v(-2.0 * far, 0.0),
+                &QueryFilter::default(),
+            )
+            .unwrap()
             .unwrap_or_else(|| panic!("from {far}: no hit"));
         assert_eq!(hit.normal, v(1.0, 0.0), "from {far}");
         assert!(
@@ -524,7 +545,8 @@ fn a_circle_from_afar_travels_its_exact_line() {
     for dir in [v(1.0, 0.25), v(0.8, 0.3), v(1.0, -0.375)] {
         for far in [2f32.powi(24), 2f32.powi(60), 2f32.powi(100)] {
             let hit = map
-                .cast_circle(-dir * far, 0.5, dir * (2.0 * far), &QueryFilter::default()).unwrap()
+                .cast_circle(-dir * far, 0.5, dir * (2.0 * far), &QueryFilter::default())
+                .unwrap()
                 .unwrap_or_else(|| panic!("{dir} from {far}: no hit"));
             let y = 1.5 * f64::from(dir.y) / f64::from(dir.x);
             assert_eq!(hit.normal, v(-1.0, 0.0), "{dir} from {far}");
@@ -542,7 +564,8 @@ fn a_circle_holding_the_map_stops_at_once_against_a_face_it_moves_towards() {
     let filter = QueryFilter::default();
     // From inside the room, moving right: the right wall's inner face, at once.
     let hit = room
-        .cast_circle(v(2.5, 1.5), 1e30, v(1.0, 0.0), &filter).unwrap()
+        .cast_circle(v(2.5, 1.5), 1e30, v(1.0, 0.0), &filter)
+        .unwrap()
         .unwrap();
     assert_eq!(hit.t, 0.0);
     assert_eq!(
@@ -555,7 +578,8 @@ fn a_circle_holding_the_map_stops_at_once_against_a_face_it_moves_towards() {
     // row order that faces the centre and that it moves towards is the left face of the
     // top-left cell, by its rounded top end (the room's corner).
     let hit = room
-        .cast_circle(v(-1e30, 1.5), 3e38, v(1e30, 0.0), &filter).unwrap()
+        .cast_circle(v(-1e30, 1.5), 3e38, v(1e30, 0.0), &filter)
+        .unwrap()
         .unwrap();
     assert_eq!(hit.t, 0.0);
     assert!(
@@ -566,11 +590,13 @@ fn a_circle_holding_the_map_stops_at_once_against_a_face_it_moves_towards() {
     assert_eq!(hit.center, v(-1e30, 1.5));
     // Moving away from it, from the left or from above: nothing stops it.
     assert!(
-        room.cast_circle(v(-1e30, 1.5), 3e38, v(-1e30, 0.0), &filter).unwrap()
+        room.cast_circle(v(-1e30, 1.5), 3e38, v(-1e30, 0.0), &filter)
+            .unwrap()
             .is_none()
     );
     assert!(
-        room.cast_circle(v(1.5, -1e30), 3e38, v(0.0, -1e30), &filter).unwrap()
+        room.cast_circle(v(1.5, -1e30), 3e38, v(0.0, -1e30), &filter)
+            .unwrap()
             .is_none()
     );
 }
@@ -608,7 +634,9 @@ fn a_position_or_motion_that_is_not_finite_hits_nothing() {
         (v(-1e30, 0.25), v(f32::NAN, 0.0)),
     ] {
         assert!(
-            map.cast_circle(center, 0.1, motion, &filter).unwrap().is_none(),
+            map.cast_circle(center, 0.1, motion, &filter)
+                .unwrap()
+                .is_none(),
             "{center} by {motion}"
         );
     }

@@ -2,11 +2,12 @@
 //! gap), and what it reports.
 
 use super::error::BodyError;
-use crate::broadphase::Broadphase;
+use crate::broadphase::PairMethod;
 use crate::geometry::MAX_COORD;
 
 /// What happens to the blocked part of a move.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum SlideMode {
     /// The write-up's rule: the blocked remainder keeps its full length and is redirected
     /// along the contact tangent, to the side its projection points. The default.
@@ -42,7 +43,7 @@ pub struct ResolveConfig {
     /// [`Self::MAX_PASSES`].
     pub passes: u32,
     /// Pair finding.
-    pub broadphase: Broadphase,
+    pub broadphase: PairMethod,
     /// Separation that moving bodies keep from each other and from walls, in map units.
     /// Bodies stop between one half and one times this far from contact, so rounding never
     /// leaves them overlapping. Default `1e-3`, a thousandth of a cell of side 1: scale it
@@ -90,7 +91,7 @@ impl Default for ResolveConfig {
         Self {
             slide: SlideMode::FullLength,
             passes: 4,
-            broadphase: Broadphase::UniformGrid,
+            broadphase: PairMethod::UniformGrid,
             gap: 1e-3,
         }
     }
@@ -101,8 +102,8 @@ impl Default for ResolveConfig {
 pub struct ResolveReport {
     /// Bodies with a non-zero proposed move.
     pub moving: usize,
-    /// Contacts met (each sweep that stopped at something counts once).
-    pub contacts: usize,
+    /// How many contacts were met (each sweep that stopped at something counts once).
+    pub contact_count: usize,
     /// Bodies whose remainder was still blocked after the last pass, and was cut at its
     /// first contact.
     pub cut_short: usize,

@@ -12,7 +12,7 @@ use super::contact::{Contact, Contacts, Surface};
 use super::platform::Riding;
 use super::{CharacterShape, ControllerError};
 use crate::geometry::{Aabb, MAX_COORD, Segment, SweepHit, in_range};
-use crate::query::{Capsule, RayFilter, SegmentSource, Wall};
+use crate::query::{Capsule, QueryFilter, SegmentSource, Wall};
 use crate::tiles::{ActiveSegment, Owner, SegmentFlags, TileMap};
 
 /// How a character moves: slope limit, ground snapping, the gap it keeps from surfaces.
@@ -113,6 +113,13 @@ pub struct MoveOptions {
 /// Every part of a move is an exact sweep (see [`sweep_circle_segment`] and
 /// [`sweep_box_segment`]), so no speed passes through a wall.
 ///
+/// The character has no velocity of its own: gravity, jumps, coyote time and variable
+/// jump height are the game's rules, kept in the game's velocity.
+/// [`move_and_slide`](Self::move_and_slide) moves by that velocity × dt and takes out of it
+/// what the surfaces touched stopped (landing zeroes the fall, a ceiling the rise, a wall
+/// the speed into it), the part every game would otherwise write
+/// ([`clip_velocity`](Self::clip_velocity) alone, for a displacement made otherwise).
+///
 /// ```
 /// use tileslide::{Character, CharacterShape, ControllerConfig, MoveOptions, Vec2, io::ascii};
 /// let map = ascii::parse("\
@@ -134,8 +141,8 @@ pub struct MoveOptions {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 ///
-/// [`sweep_circle_segment`]: crate::sweep_circle_segment
-/// [`sweep_box_segment`]: crate::sweep_box_segment
+/// [`sweep_circle_segment`]: crate::geometry::sweep_circle_segment
+/// [`sweep_box_segment`]: crate::geometry::sweep_box_segment
 #[derive(Clone, Debug)]
 pub struct Character {
     /// The shape's centre, in world coordinates.
@@ -648,7 +655,7 @@ impl Character {
         );
         let region = Aabb::from_corners(start.min.min(end.min), start.max.max(end.max))
             .expand(self.config.skin);
-        let mut filter = RayFilter::default().with_mask(self.config.mask);
+        let mut filter = QueryFilter::default().with_mask(self.config.mask);
         filter.exclude_owner = exclude;
         self.walls.clear();
         map.walls_in(&region, &filter, &mut self.walls);

@@ -81,7 +81,8 @@ pub struct RaySegmentHit {
 ///   least 2⁻²⁴ units.
 ///
 /// ```
-/// # use tileslide::{cast_ray_segment, Ray, Segment, Vec2};
+/// # use tileslide::geometry::cast_ray_segment;
+/// # use tileslide::{Ray, Segment, Vec2};
 /// let wall = Segment::new(Vec2::new(2.0, -1.0), Vec2::new(2.0, 1.0));
 /// let hit = cast_ray_segment(&Ray::between(Vec2::ZERO, Vec2::new(4.0, 0.0)), &wall).unwrap();
 /// assert_eq!(hit.t, 0.5);

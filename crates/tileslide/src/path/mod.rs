@@ -62,7 +62,7 @@ use glam::Vec2;
 pub use error::NavError;
 pub(crate) use error::check_point;
 pub use flow::FlowField;
-pub use route::Path;
+pub use route::NavPath;
 pub use sync::NavChange;
 
 use crate::tiles::{MapRevision, SegmentFlags, TileMap};
@@ -235,7 +235,9 @@ impl NavGrid {
 
     /// The searches' memory, when the grid is borrowed mutably (no lock needed).
     fn memory_mut(&mut self) -> &mut SearchMemory {
-        self.memory.get_mut().unwrap_or_else(PoisonError::into_inner)
+        self.memory
+            .get_mut()
+            .unwrap_or_else(PoisonError::into_inner)
     }
 
     /// The widest circle this grid serves.
@@ -353,7 +355,7 @@ impl NavGrid {
         from: Vec2,
         to: Vec2,
         radius: f32,
-    ) -> Result<Option<Path>, NavError> {
+    ) -> Result<Option<NavPath>, NavError> {
         check_point("from", from)?;
         check_point("to", to)?;
         let need = self.check(map, radius)?;
@@ -364,7 +366,7 @@ impl NavGrid {
         }
         // Near ends joined straight: no search needed.
         if self.joins_straight(map, from, to, radius) {
-            return Ok(Some(Path::new(vec![from, to], radius, need)));
+            return Ok(Some(NavPath::new(vec![from, to], radius, need)));
         }
         let mut memory = self.memory();
         let SearchMemory { search, classes } = &mut *memory;
@@ -389,7 +391,7 @@ impl NavGrid {
         points.extend(nodes.iter().map(|&n| lattice.position_of(n as usize)));
         points.push(to);
         let smoothed = smooth::smooth(map, &points, radius, &self.table);
-        Ok(Some(Path::new(smoothed, radius, need)))
+        Ok(Some(NavPath::new(smoothed, radius, need)))
     }
 
     /// Lattice nodes per row and per column (`2 · width + 1`, `2 · height + 1`): a node

@@ -128,7 +128,10 @@ impl NavGrid {
             Ok(cells) => {
                 for cell in cells {
                     let moves = self.table.update_cell(map, cell);
-                    let memory = self.memory.get_mut().unwrap_or_else(PoisonError::into_inner);
+                    let memory = self
+                        .memory
+                        .get_mut()
+                        .unwrap_or_else(PoisonError::into_inner);
                     for class in &mut memory.classes {
                         class.apply(&self.table, &moves);
                     }

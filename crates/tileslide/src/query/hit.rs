@@ -4,6 +4,7 @@ use crate::tiles::{Cell, Owner, SegmentFlags, SegmentRef, TileId};
 
 /// Where a segment found by a query comes from.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum SegmentSource {
     /// An active segment of a tile.
     Tile {

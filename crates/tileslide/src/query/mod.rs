@@ -14,8 +14,8 @@ mod segment_test;
 mod traversal;
 
 pub use circle_cast::CircleHit;
-pub use error::CastError;
 pub(crate) use circle_cast::{Capsule, Wall};
+pub use error::CastError;
 pub use filter::{Faces, QueryFilter};
 pub use hit::{RayHit, SegmentSource};
 pub use overlap::SegmentOverlap;

@@ -1,8 +1,8 @@
 use glam::{DVec2, Vec2};
 
 use super::SegmentSource;
-use crate::MAX_COORD;
 use crate::geometry::{Aabb, Circle, Segment, in_range};
+use crate::limits::MAX_COORD;
 use crate::tiles::{Cell, SegmentFlags, SegmentRef, TileId, TileMap};
 
 /// A segment found by an overlap query.

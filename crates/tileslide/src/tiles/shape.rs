@@ -41,6 +41,7 @@ pub const MAX_SHAPE_SEGMENTS: usize = 4096;
 
 /// Why a tile shape was refused.
 #[derive(Clone, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum ShapeError {
     /// A coordinate or normal component is NaN or infinite.
     #[error("segment {segment} has a non-finite coordinate or normal")]

@@ -22,7 +22,7 @@
 //!   its own tile shape, flipped as Tiled draws it ([`Flip`]).
 //!   [`TiledMap::tile_info`] tells which tile of which tile set an id is.
 //! - **Errors** name the file and the line:column (XML, and JSON syntax) or the field
-//!   (`layers[2].data`); sizes are checked against [`MAX_CELLS`](crate::MAX_CELLS) before
+//!   (`layers[2].data`); sizes are checked against [`MAX_CELLS`](crate::limits::MAX_CELLS) before
 //!   anything is allocated; nothing panics.
 //!
 //! The `tiled` crate reads `.tmx` maps, `.tsx` tile sets and `.tx` templates; serde reads
@@ -30,14 +30,14 @@
 //!
 //! ```
 //! use tileslide::io::tiled::{self, TiledOptions};
-//! use tileslide::{Ray, RayFilter, Vec2};
+//! use tileslide::{Ray, QueryFilter, Vec2};
 //!
 //! let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/maps/cave.tmx");
 //! let cave = tiled::load(path, &TiledOptions::default())?;
 //! assert_eq!(cave.collision_layer, "walls");
 //! // Straight down from the top of the cave: the floor's top is at y = 224 pixels.
 //! let down = Ray::between(Vec2::new(40.0, 20.0), Vec2::new(40.0, 300.0));
-//! let hit = cave.map.cast_ray(down, &RayFilter::default()).unwrap();
+//! let hit = cave.map.cast_ray(down, &QueryFilter::default()).unwrap();
 //! assert_eq!((hit.point.y, hit.normal), (224.0, Vec2::new(0.0, -1.0)));
 //! // The object layers come along: the player's spawn point.
 //! let spawn = cave.object_layer("spawns").and_then(|l| l.object("player")).unwrap();
@@ -95,7 +95,7 @@ pub struct TiledOptions {
     /// Most cells a tile layer may hold (`width × height`; for an infinite layer, its
     /// chunks together, and the collision layer's bounding box), checked before anything is
     /// allocated from them. A map costs about 16 bytes a cell. Default, and most:
-    /// [`MAX_CELLS`](crate::MAX_CELLS) (2²⁶); a larger value is taken as that.
+    /// [`MAX_CELLS`](crate::limits::MAX_CELLS) (2²⁶); a larger value is taken as that.
     pub max_cells: u64,
     /// Most cells an infinite collision layer's bounding box may span for each cell its
     /// chunks hold, once it spans more than [`SPREAD_FREE_CELLS`]. The map is built over the
@@ -113,7 +113,7 @@ impl Default for TiledOptions {
     fn default() -> Self {
         Self {
             layer: None,
-            max_cells: crate::MAX_CELLS,
+            max_cells: crate::limits::MAX_CELLS,
             max_chunk_spread: 64,
         }
     }
@@ -145,13 +145,13 @@ impl TiledOptions {
 
     /// The cell bound in force: [`max_cells`](Self::max_cells), at most `MAX_CELLS`.
     fn cell_bound(&self) -> u64 {
-        self.max_cells.min(crate::MAX_CELLS)
+        self.max_cells.min(crate::limits::MAX_CELLS)
     }
 }
 
 /// How errors name the cell bound `limit`, and how to raise it.
 fn cell_limit(limit: u64) -> String {
-    if limit >= crate::MAX_CELLS {
+    if limit >= crate::limits::MAX_CELLS {
         format!("{limit} cells")
     } else {
         format!("{limit} cells (`TiledOptions::max_cells`; raise it to load this map)")
