@@ -36,6 +36,17 @@
 //! [`broadphase`] (pairs of overlapping boxes) and [`limits`] (the largest coordinates,
 //! maps and grids accepted).
 //!
+//! ## Features
+//!
+//! - `tiled` (default): Tiled maps, `.tmx` and `.tmj`, in [`io::tiled`].
+//! - `png` (default): tile sets traced from PNG tile sheets, in [`io::bitmap`].
+//! - `tiled-zstd`: zstd-compressed Tiled tile layers (builds the zstd C library).
+//! - `serde`: `Serialize` and `Deserialize` for the value types a game saves or sends:
+//!   shapes, configurations, filters, hits, contacts, reports, handles and ids (ids and
+//!   flags as their numbers). A [`BodyShape`] is read through [`BodyShape::compound`], so a
+//!   saved shape is checked as a built one is; other values are checked where they enter a
+//!   system, as built ones are.
+//!
 //! ## Quick start
 //!
 //! ```

@@ -13,5 +13,7 @@
 /// assert_eq!(Owner::default(), Owner(0));
 /// # Ok::<(), tileslide::BodyError>(())
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(feature = "serde", serde(transparent))]
 pub struct Owner(pub u64);

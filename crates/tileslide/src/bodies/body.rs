@@ -25,9 +25,31 @@ use crate::tiles::SegmentFlags;
 /// assert!(BodyShape::circle(0.0).is_err());
 /// # Ok::<(), tileslide::BodyError>(())
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Debug, PartialEq)]
+// Read through `compound`, so a saved shape is checked as a built one is.
+#[cfg_attr(
+    feature = "serde",
+    serde(try_from = "Vec<Circle>", into = "Vec<Circle>")
+)]
 pub struct BodyShape {
     circles: Vec<Circle>,
+}
+
+impl TryFrom<Vec<Circle>> for BodyShape {
+    type Error = BodyError;
+
+    /// [`BodyShape::compound`] of the circles.
+    fn try_from(circles: Vec<Circle>) -> Result<Self, BodyError> {
+        Self::compound(circles)
+    }
+}
+
+impl From<BodyShape> for Vec<Circle> {
+    /// The shape's circles, offsets from the body's position.
+    fn from(shape: BodyShape) -> Self {
+        shape.circles
+    }
 }
 
 impl BodyShape {
@@ -100,6 +122,7 @@ impl BodyShape {
 /// assert!(ghost.collides(&ghost));
 /// assert!(hero.collides(&hero));
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BodyFilter {
     /// The groups the body belongs to (bits).
@@ -138,6 +161,7 @@ impl BodyFilter {
 /// assert_eq!(desc.filter, BodyFilter::default());
 /// # Ok::<(), tileslide::BodyError>(())
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Debug, PartialEq)]
 pub struct BodyDesc {
     /// Where the body is.

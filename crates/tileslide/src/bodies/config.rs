@@ -6,6 +6,7 @@ use crate::broadphase::PairMethod;
 use crate::geometry::MAX_COORD;
 
 /// What happens to the blocked part of a move.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 #[non_exhaustive]
 pub enum SlideMode {
@@ -34,6 +35,7 @@ pub enum SlideMode {
 /// let negative = ResolveConfig { gap: -1.0, ..pixels };
 /// assert_eq!(negative.validate(), Err(BodyError::BadConfig { field: "gap", value: -1.0 }));
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ResolveConfig {
     /// Slide rule.
@@ -98,6 +100,7 @@ impl Default for ResolveConfig {
 }
 
 /// What a [`resolve`](crate::Bodies::resolve) did.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ResolveReport {
     /// Bodies with a non-zero proposed move.

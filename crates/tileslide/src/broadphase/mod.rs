@@ -38,6 +38,7 @@ use sweep::SweepPairs;
 
 /// How a [`PairFinder`] finds the pairs of boxes: bodies that may meet during a step,
 /// objects whose hit volumes may touch.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 #[non_exhaustive]
 pub enum PairMethod {

@@ -18,6 +18,7 @@ use crate::tiles::{ActiveSegment, Owner, SegmentFlags, TileMap};
 /// How a character moves: slope limit, ground snapping, the gap it keeps from surfaces.
 /// Distances are in map units; the defaults suit maps with cells of size 1 (scale them with
 /// the cell size, e.g. ×32 for Replica Island's pixels).
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ControllerConfig {
     /// The steepest walkable slope, in degrees from level: steeper surfaces are walls.
@@ -74,6 +75,7 @@ impl ControllerConfig {
 }
 
 /// Requests for one move.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct MoveOptions {
     /// Fall through one-way platforms during this move (hold it for as many moves as it

@@ -15,6 +15,7 @@ use crate::query::Capsule;
 /// assert!(CharacterShape::circle(f32::NAN).is_err());
 /// # Ok::<(), tileslide::ControllerError>(())
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum CharacterShape {

@@ -14,6 +14,7 @@ use super::{Aabb, Segment};
 /// circle.
 ///
 /// [`new`]: Self::new
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Circle {
     /// Centre.

@@ -18,6 +18,7 @@
 /// assert!(sweep_circle_segment(center, 0.5, motion, &floor, Vec2::Y, seam).is_none());
 /// assert!(sweep_circle_segment(center, 0.5, motion, &floor, Vec2::Y, EndCaps::BOTH).is_some());
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct EndCaps {
     /// The end `a` is capped.

@@ -6,6 +6,7 @@ use super::Segment;
 ///
 /// Queries report positions along it as `t` in `[0, 1]`: `t = 0` is the origin, `t = 1`
 /// the end point.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {
     /// Where the ray starts (`t = 0`).
@@ -44,6 +45,7 @@ impl Ray {
 }
 
 /// Where a ray meets a segment.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RaySegmentHit {
     /// Fraction along the ray, in `[0, 1]`.

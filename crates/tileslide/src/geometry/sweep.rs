@@ -83,6 +83,7 @@ pub(super) fn rescaled<const N: usize, const K: usize>(
 }
 
 /// Where a swept circle first touches an obstacle.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SweepHit {
     /// Fraction of the move, in `[0, 1]`, at which the circles touch.

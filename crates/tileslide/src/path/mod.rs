@@ -95,6 +95,7 @@ pub const NAV_MOVES: [(i32, i32); 8] = lattice::MOVES;
 pub const MAX_NAV_NODES: usize = 1 << 26;
 
 /// How a [`NavGrid`] is built.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NavConfig {
     /// The widest circle the grid serves (map units). Clearances are measured up to this,

@@ -22,6 +22,7 @@ use crate::tiles::{Owner, SegmentFlags, SegmentRef, TileId, TileMap};
 const MAX_CAST_MOTION: f32 = 134_217_728.0;
 
 /// A circle cast's first contact.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CircleHit {
     /// Fraction of the motion, in `[0, 1]`, at which the circle touches the segment.

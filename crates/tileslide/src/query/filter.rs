@@ -3,6 +3,7 @@ use glam::Vec2;
 use crate::tiles::{Owner, SegmentFlags};
 
 /// Which faces of a segment a ray or a cast can hit.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 #[non_exhaustive]
 pub enum Faces {
@@ -27,6 +28,7 @@ pub enum Faces {
 ///     .excluding(Owner(7));
 /// assert_eq!(floor_only.exclude_owner, Some(Owner(7)));
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct QueryFilter {
     /// Which faces count.

@@ -6,6 +6,7 @@ use crate::limits::MAX_COORD;
 use crate::tiles::{Cell, SegmentFlags, SegmentRef, TileId, TileMap};
 
 /// A segment found by an overlap query.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SegmentOverlap {
     /// The segment, in world coordinates.

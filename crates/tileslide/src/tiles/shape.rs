@@ -5,6 +5,7 @@ use super::SegmentFlags;
 use crate::geometry::{Ray, Segment, cast_ray_segment, unit_normal};
 
 /// One segment of a tile shape, in tile-local coordinates.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TileSegment {
     /// Start point, tile-local.

@@ -8,6 +8,7 @@ use crate::owner::Owner;
 /// A segment that is part of the world only until it is cleared: a moving platform's top, a
 /// door. Queries treat it like a tile segment, except that it knows who owns it (so the
 /// owner's own casts can skip it) and how fast it moves (so a rider can be carried).
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TemporarySegment {
     /// The segment, in world coordinates.

@@ -13,6 +13,7 @@ use super::HitTypes;
 use crate::geometry::{Aabb, Circle, MAX_COORD, Segment, in_range};
 
 /// A volume's shape in object-local coordinates.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum VolumeShape {
@@ -31,6 +32,7 @@ pub enum VolumeShape {
 /// let body = Volume::rect(Vec2::new(0.5, 1.0), Vec2::new(0.5, 1.0), HitTypes::ANY)?;
 /// # Ok::<(), tileslide::VolumeError>(())
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Volume {
     /// The shape, in object-local coordinates.
@@ -180,6 +182,7 @@ impl Volume {
 
 /// Which way an object faces: a volume is mirrored about the middle of the object's size on
 /// each flipped axis (Replica Island: `x → width − x` when facing left).
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Facing {
     /// Mirror x (facing left, for a game whose volumes are drawn facing right).

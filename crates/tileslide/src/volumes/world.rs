@@ -12,6 +12,7 @@ use crate::geometry::{Aabb, Circle};
 use crate::owner::Owner;
 
 /// An object registered for one frame: where it is, how it faces, and who it is.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HitObject {
     /// The caller's entity (stable across frames: "hit once per swing" remembers it).
@@ -74,11 +75,14 @@ impl HitObject {
 }
 
 /// An object's index in the frame's registrations.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(feature = "serde", serde(transparent))]
 pub struct ObjectId(pub u32);
 
 /// One hit: an attack volume of `attacker` met a vulnerability volume of `victim` that
 /// accepts its type.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct HitEvent {
     /// Who hit.
