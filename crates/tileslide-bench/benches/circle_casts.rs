@@ -8,7 +8,7 @@ use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use tileslide::io::ascii;
-use tileslide::{RayFilter, TileMap, Vec2};
+use tileslide::{QueryFilter, TileMap, Vec2};
 
 /// A `side × side` map of the ASCII tile set with about one cell in four filled: solid
 /// blocks, ramps both ways and one-way platforms.
@@ -64,7 +64,7 @@ fn casts(map: &TileMap, n: usize, reach: f32) -> Vec<(Vec2, Vec2)> {
 
 fn circle_casts(c: &mut Criterion) {
     let m = map(64);
-    let filter = RayFilter::default();
+    let filter = QueryFilter::default();
     let mut group = c.benchmark_group("cast_circle_1024");
     for reach in [2.0f32, 16.0] {
         let list = casts(&m, 1024, reach);
@@ -72,7 +72,10 @@ fn circle_casts(c: &mut Criterion) {
             b.iter(|| {
                 let mut hits = 0u32;
                 for &(start, motion) in list {
-                    let hit = m.cast_circle(black_box(start), 0.3, black_box(motion), &filter);
+                    let hit = m
+                        .cast_circle(black_box(start), 0.3, black_box(motion), &filter)
+                        .ok()
+                        .flatten();
                     hits += u32::from(hit.is_some());
                 }
                 hits

@@ -93,7 +93,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let report = bodies.step(&map);
         times.push(start.elapsed().as_secs_f64() * 1e3);
         moving += report.moving;
-        contacts += report.contacts;
+        contacts += report.contact_count;
         cut += report.cut_short;
     }
     println!(

@@ -8,7 +8,7 @@
 
 use std::time::Instant;
 
-use tileslide::{Ray, RayFilter, RayHit, SegmentSource};
+use tileslide::{QueryFilter, Ray, RayHit, SegmentSource};
 use tileslide_scenes::{Fnv1a, Scene, scene_rays};
 
 /// FNV-1a (64-bit) over the bits of every hit, and over a marker for every miss.
@@ -30,6 +30,8 @@ fn checksum(hits: impl Iterator<Item = Option<RayHit>>) -> u64 {
                 }
             }
             SegmentSource::Temporary { index, .. } => h.write_u32(index as u32),
+            // A source added to tileslide later: hashed as a marker of its own.
+            _ => h.write_u32(u32::MAX - 1),
         }
     }
     h.finish()
@@ -55,7 +57,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             delta: r.dir * r.length,
         })
         .collect();
-    let filter = RayFilter::default();
+    let filter = QueryFilter::default();
     let mut best = f64::MAX;
     let mut hits = Vec::with_capacity(rays.len());
     for _ in 0..passes {

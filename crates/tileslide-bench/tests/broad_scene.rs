@@ -2,7 +2,7 @@
 //! (5,000 circles, 3 updates): same pairs, touching boxes included, nothing more.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use tileslide::Broadphase;
+use tileslide::broadphase::PairMethod;
 use tileslide_bench::broad::{
     BroadContender, ParryBvhBroad, RapierBroad, TileslideBroad, run_broad,
 };
@@ -44,10 +44,10 @@ fn rapier_broad_phase_finds_exactly_the_reference_pairs() {
 
 #[test]
 fn tileslide_grid_finds_exactly_the_reference_pairs() {
-    check(&mut TileslideBroad::new(Broadphase::UniformGrid));
+    check(&mut TileslideBroad::new(PairMethod::UniformGrid));
 }
 
 #[test]
 fn tileslide_sweep_and_prune_finds_exactly_the_reference_pairs() {
-    check(&mut TileslideBroad::new(Broadphase::SweepAndPrune));
+    check(&mut TileslideBroad::new(PairMethod::SweepAndPrune));
 }

@@ -2,7 +2,7 @@
 
 use anyhow::{Result, anyhow, bail};
 use serde_json::{Value, json};
-use tileslide::{NavConfig, NavError, NavGrid, Path, TileMap, Vec2};
+use tileslide::{NavConfig, NavError, NavGrid, NavPath, TileMap, Vec2};
 
 use crate::json::number;
 use crate::map_file::{self, MapArgs};
@@ -20,7 +20,7 @@ pub fn run(args: &MapArgs, from: &str, to: &str, radius: &str, as_json: bool) ->
         max_radius: radius,
         ..NavConfig::default()
     };
-    let mut nav = NavGrid::new(&map, config).map_err(|e| match e {
+    let nav = NavGrid::new(&map, config).map_err(|e| match e {
         NavError::BadMaxRadius { limit, .. } => anyhow!(
             "--radius {radius}: too wide for this map, whose cells allow at most {limit} (31 cells)"
         ),
@@ -55,7 +55,7 @@ pub fn run(args: &MapArgs, from: &str, to: &str, radius: &str, as_json: bool) ->
 }
 
 /// `{"found":true,"length":L,"points":[[X,Y],...]}` or `{"found":false}`.
-fn path_json(path: Option<&Path>) -> Value {
+fn path_json(path: Option<&NavPath>) -> Value {
     match path {
         None => json!({ "found": false }),
         Some(path) => {
@@ -122,7 +122,7 @@ mod tests {
     fn json_has_the_documented_fields_in_order() {
         assert_eq!(path_json(None).to_string(), r#"{"found":false}"#);
         let map = tileslide::io::ascii::parse("#####\n#...#\n#####", "t.txt", 1.0).unwrap();
-        let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
         let path = nav
             .find_path(&map, Vec2::new(1.5, 1.5), Vec2::new(3.5, 1.5), 0.4)
             .unwrap();

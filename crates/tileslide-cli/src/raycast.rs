@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow, bail};
 use serde_json::json;
-use tileslide::{Ray, RayFilter, RayHit, SegmentFlags, Vec2};
+use tileslide::{QueryFilter, Ray, RayHit, SegmentFlags, Vec2};
 
 use crate::json::number;
 use crate::map_file::{self, MapArgs};
@@ -25,9 +25,9 @@ pub fn run(
     };
     let (map, _) = map_file::load(args)?;
     let filter = if both_sides {
-        RayFilter::both_sides()
+        QueryFilter::both_sides()
     } else {
-        RayFilter::default()
+        QueryFilter::default()
     };
     // All at once: `cast_rays` walks them side by side, with each answer `cast_ray`'s.
     let segments: Vec<Ray> = rays.iter().map(|(p0, p1)| Ray::between(*p0, *p1)).collect();

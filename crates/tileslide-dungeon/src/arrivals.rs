@@ -3,14 +3,14 @@
 use hecs::World;
 use tileslide::Bodies;
 
-use crate::GameError;
-use crate::STEPS_PER_SECOND;
 use crate::components::Kind;
+use crate::config::Party;
+use crate::error::GameError;
 use crate::events::Event;
-use crate::game::Party;
 use crate::layout::Layout;
 use crate::level::Level;
 use crate::spawn::{self, Ids};
+use crate::step::STEPS_PER_SECOND;
 use tileslide_scenes::SplitMix64;
 
 /// Steps between parties.

@@ -5,10 +5,10 @@
 use hecs::{Entity, World};
 use tileslide::{Bodies, Vec2};
 
-use crate::DT;
 use crate::components::{Body, CreatureBrain, Goal, HeroBrain, Id, Kind, Team};
 use crate::explore::centre_of;
 use crate::level::Level;
+use crate::step::DT;
 
 /// How far heroes notice enemies.
 const HERO_SIGHT: f32 = 3.5;
@@ -98,7 +98,7 @@ pub fn heroes(
             let sees = |a: Vec2, b: Vec2| {
                 map.cast_ray(
                     tileslide::Ray::between(a, b),
-                    &tileslide::RayFilter::default(),
+                    &tileslide::QueryFilter::default(),
                 )
                 .is_none()
             };
@@ -155,7 +155,7 @@ fn explore(brain: &mut HeroBrain, level: &mut Level, p: Vec2, radius: f32, speed
 }
 
 /// The next step along `path` from `p`, `next` being the next point to reach.
-fn follow(path: &tileslide::Path, next: &mut usize, p: Vec2, speed: f32) -> Vec2 {
+fn follow(path: &tileslide::NavPath, next: &mut usize, p: Vec2, speed: f32) -> Vec2 {
     while *next < path.points().len() && path.points()[*next].distance(p) < 0.05 {
         *next += 1;
     }

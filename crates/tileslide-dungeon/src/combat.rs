@@ -4,18 +4,18 @@
 //! ray cast meets). Then damage and death.
 
 use hecs::{Entity, World};
-use tileslide::{Bodies, Ray, RayFilter};
+use tileslide::{Bodies, QueryFilter, Ray};
 
-use crate::GameError;
 use crate::brains::{IMP_RANGE, Sightings};
 use crate::components::{
     Body, Carrying, Cooldown, FIREBALL_RADIUS, Fireball, Health, Kind, Swing, Team,
 };
+use crate::error::GameError;
 use crate::events::Event;
 use crate::hits::{Blow, Hits, Target};
 use crate::level::Level;
 use crate::spawn::Ids;
-use crate::{DT, STEPS_PER_SECOND};
+use crate::step::{DT, STEPS_PER_SECOND};
 
 const FIREBALL_SPEED: f32 = 8.0;
 const FIREBALL_DAMAGE: i32 = 6;
@@ -151,7 +151,7 @@ pub fn strike(
         let mut to = from + ball.velocity * DT;
         let wall = level
             .map
-            .cast_ray(Ray::between(from, to), &RayFilter::default());
+            .cast_ray(Ray::between(from, to), &QueryFilter::default());
         if let Some(hit) = &wall {
             to = hit.point;
         }

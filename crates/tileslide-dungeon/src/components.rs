@@ -1,6 +1,6 @@
 //! The components of the game's entities (hecs).
 
-use tileslide::{BodyHandle, Cell, Path, Vec2};
+use tileslide::{BodyHandle, Cell, NavPath, Vec2};
 
 /// A stable number per entity, in spawn order: systems that need an order sort by it, so
 /// nothing depends on how the ECS stores entities.
@@ -97,7 +97,7 @@ pub struct HeroBrain {
     pub goal: Goal,
     /// While the treasure has not been seen: the frontier square it explores towards,
     /// and its path there with the next point to reach.
-    pub exploring: Option<(Cell, Path, usize)>,
+    pub exploring: Option<(Cell, NavPath, usize)>,
 }
 
 /// A creature's mind: where it waits, and its way back there.
@@ -106,7 +106,7 @@ pub struct CreatureBrain {
     /// Its post.
     pub post: Vec2,
     /// Its way back to the post, dropped when a dug square affects it.
-    pub way_home: Option<(Path, usize)>,
+    pub way_home: Option<(NavPath, usize)>,
 }
 
 /// Steps until it may attack again.
@@ -134,7 +134,7 @@ pub struct Swing {
 /// A fireball: an attack volume swept along its velocity each step.
 #[derive(Clone, Copy, Debug)]
 pub struct Fireball {
-    /// Its key in the hit volumes (from [`crate::spawn::Ids`]).
+    /// Its owner in the hit volumes (from [`crate::spawn::Ids`]).
     pub key: u64,
     /// Centre.
     pub position: Vec2,

@@ -181,7 +181,7 @@ mod tests {
         let sees = |a: Vec2, b: Vec2| {
             map.cast_ray(
                 tileslide::Ray::between(a, b),
-                &tileslide::RayFilter::default(),
+                &tileslide::QueryFilter::default(),
             )
             .is_none()
         };

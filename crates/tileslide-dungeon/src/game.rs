@@ -4,94 +4,24 @@
 use hecs::World;
 use tileslide::{Bodies, Cell, TileMap};
 
-use crate::GameError;
 use crate::arrivals::Arrivals;
 use crate::audit::Audit;
 use crate::brains::{self, Sightings};
-use crate::components::{Body, Carrying, FIREBALL_RADIUS, Health, Id, Kind, Team};
+use crate::components::{Body, Carrying, CreatureBrain, FIREBALL_RADIUS, Health, Id, Team};
+use crate::config::GameConfig;
+use crate::error::GameError;
 use crate::events::Event;
 use crate::hits::Hits;
 use crate::keeper::Keeper;
 use crate::layout::Layout;
 use crate::level::Level;
 use crate::spawn::Ids;
+use crate::summary::{Summary, chronicle};
 use crate::{combat, treasure};
 use tileslide_scenes::{Fnv1a, SplitMix64};
 
 /// Pieces of treasure at the start.
 const TREASURE: u32 = 5;
-
-/// How a game is set up.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct GameConfig {
-    /// The seed of the game's random numbers.
-    pub seed: u64,
-    /// Whether the keeper summons creatures (false: an undefended dungeon).
-    pub defenders: bool,
-    /// What the hero parties are like.
-    pub party: Party,
-}
-
-impl GameConfig {
-    /// A defended game from `seed` with the usual parties.
-    #[must_use]
-    pub fn new(seed: u64) -> Self {
-        Self {
-            seed,
-            defenders: true,
-            party: Party::default(),
-        }
-    }
-}
-
-/// The hero parties: how many heroes each brings and how tough they are.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Party {
-    /// Fewest heroes in a party.
-    pub min_heroes: u32,
-    /// Most heroes in a party (at least `min_heroes`).
-    pub max_heroes: u32,
-    /// Each hero's hit points.
-    pub hero_hp: i32,
-}
-
-impl Default for Party {
-    /// Three to five heroes of [`Kind::Hero`]'s hit points.
-    fn default() -> Self {
-        Self {
-            min_heroes: 3,
-            max_heroes: 5,
-            hero_hp: Kind::Hero.max_hp(),
-        }
-    }
-}
-
-/// What happened so far.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct Summary {
-    /// Hero parties arrived.
-    pub waves: u32,
-    /// Heroes killed.
-    pub heroes_lost: u32,
-    /// Heroes who left by the exit.
-    pub heroes_escaped: u32,
-    /// Creatures summoned.
-    pub creatures_summoned: u32,
-    /// Creatures killed.
-    pub creatures_lost: u32,
-    /// Pieces of treasure taken up (some may be dropped again).
-    pub treasure_taken: u32,
-    /// Pieces still on the pile.
-    pub treasure_left: u32,
-    /// Pieces carried out of the dungeon.
-    pub treasure_stolen: u32,
-    /// Squares the keeper dug.
-    pub squares_dug: u32,
-    /// Steps run.
-    pub steps: u64,
-    /// Collision audit, summed over every step.
-    pub audit: Audit,
-}
 
 /// The Dungeon Builder game.
 pub struct Game {
@@ -301,7 +231,7 @@ fn refresh_ways(level: &mut Level, world: &mut World, events: &[Event]) -> Resul
     }
     let change = level.catch_up()?;
     if !change.is_empty() {
-        for brain in world.query_mut::<&mut crate::components::CreatureBrain>() {
+        for brain in world.query_mut::<&mut CreatureBrain>() {
             if brain
                 .way_home
                 .as_ref()
@@ -312,28 +242,4 @@ fn refresh_ways(level: &mut Level, world: &mut World, events: &[Event]) -> Resul
         }
     }
     Ok(())
-}
-
-/// Counts an event into the summary.
-fn chronicle(summary: &mut Summary, dug: &mut Vec<Cell>, event: &Event) {
-    match event {
-        Event::Dug { cell, .. } => {
-            summary.squares_dug += 1;
-            dug.push(*cell);
-        }
-        Event::Summoned { .. } => summary.creatures_summoned += 1,
-        Event::WaveArrived { .. } => summary.waves += 1,
-        Event::Died {
-            team: Team::Heroes, ..
-        } => summary.heroes_lost += 1,
-        Event::Died {
-            team: Team::Keeper, ..
-        } => summary.creatures_lost += 1,
-        Event::TreasureTaken { .. } => summary.treasure_taken += 1,
-        Event::Escaped { carried, .. } => {
-            summary.heroes_escaped += 1;
-            summary.treasure_stolen += u32::from(*carried);
-        }
-        Event::Damage { .. } => {}
-    }
 }

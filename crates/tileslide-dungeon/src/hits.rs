@@ -5,10 +5,10 @@
 //! steps. The hit events become [`Event::Damage`].
 
 use hecs::Entity;
-use tileslide::{HitObject, HitTypes, HitWorld, TeamRule, Vec2, Volume};
+use tileslide::{HitObject, HitTypes, HitWorld, Owner, TeamRule, Vec2, Volume};
 
-use crate::GameError;
 use crate::components::{Kind, Team};
+use crate::error::GameError;
 use crate::events::Event;
 
 /// How far ahead of the fighter's edge the middle of its swing is (cells).
@@ -19,7 +19,7 @@ const SWING_RADIUS: f32 = 0.25;
 /// A fighter's body this step, for [`Hits::fighter`].
 #[derive(Clone, Copy, Debug)]
 pub struct Target {
-    /// The game's stable id (the volumes' key).
+    /// The game's stable id (the hit volumes' owner).
     pub key: u64,
     /// The entity.
     pub entity: Entity,
@@ -112,7 +112,7 @@ impl Hits {
         let object = HitObject {
             team: team_number(target.team),
             swing: blow.map(|b| b.swing),
-            ..HitObject::new(target.key, target.position, Vec2::ZERO)
+            ..HitObject::new(Owner(target.key), target.position, Vec2::ZERO)
         };
         let body = self.bodies[match target.kind {
             Kind::Hero => 0,
@@ -153,7 +153,7 @@ impl Hits {
         let object = HitObject {
             team: team_number(team),
             motion: to - from,
-            ..HitObject::new(key, to, Vec2::ZERO)
+            ..HitObject::new(Owner(key), to, Vec2::ZERO)
         };
         self.world
             .register(object, std::slice::from_ref(&self.fireball), &[])?;

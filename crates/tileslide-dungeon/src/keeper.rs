@@ -4,13 +4,13 @@
 use hecs::World;
 use tileslide::{Bodies, Cell, Vec2};
 
-use crate::GameError;
-use crate::STEPS_PER_SECOND;
 use crate::components::Kind;
+use crate::error::GameError;
 use crate::events::Event;
 use crate::layout::{LAIR, ROOST};
 use crate::level::Level;
 use crate::spawn::{self, Ids};
+use crate::step::STEPS_PER_SECOND;
 
 /// Gold is counted in steps' worth: 20 gold a second.
 const INCOME: u32 = 20;

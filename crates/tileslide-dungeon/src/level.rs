@@ -3,7 +3,7 @@
 
 use tileslide::{Bodies, FlowField, NavChange, NavConfig, NavGrid, TileMap, Vec2};
 
-use crate::GameError;
+use crate::error::GameError;
 use crate::explore::Explored;
 use crate::layout::{Ground, Layout};
 
@@ -80,7 +80,7 @@ impl Level {
         self.map
             .cast_ray(
                 tileslide::Ray::between(a, b),
-                &tileslide::RayFilter::default(),
+                &tileslide::QueryFilter::default(),
             )
             .is_none()
     }

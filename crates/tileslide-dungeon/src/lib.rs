@@ -9,7 +9,7 @@
 //! - Movement: every fighter is a circle in [`tileslide::Bodies`]; each step brains
 //!   propose moves and the resolver steps them (no overlaps, no wall crossings).
 //! - Navigation: a [`tileslide::NavGrid`] updated per dug square; heroes follow
-//!   [`tileslide::FlowField`]s, creatures walk [`tileslide::Path`]s home; both are
+//!   [`tileslide::FlowField`]s, creatures walk [`tileslide::NavPath`]s home; both are
 //!   refreshed only when a dug square affects them.
 //! - Hits: [`tileslide::HitWorld`] attack and vulnerability volumes with teams; melee
 //!   swings hit each victim once, fireballs are swept along their step.
@@ -26,11 +26,20 @@
 //! # Ok::<(), tileslide_dungeon::GameError>(())
 //! ```
 
+// The modules import each other in one direction only. At the bottom, plain types:
+// `step` (the fixed step), `error`, `components`, `events`, `config`, `audit`, `explore`,
+// `layout`. Above them the shared world: `level` (map and navigation), `spawn`, `hits`.
+// Then the systems, each using only those: `keeper`, `arrivals`, `brains`, `combat` (which
+// reads `brains`' sightings), `treasure`, `summary`. `game` runs the systems in order;
+// `render` draws a `Game`.
+
 mod arrivals;
 mod audit;
 mod brains;
 mod combat;
 mod components;
+mod config;
+mod error;
 mod events;
 mod explore;
 mod game;
@@ -40,38 +49,19 @@ mod layout;
 mod level;
 mod render;
 mod spawn;
+mod step;
+mod summary;
 mod treasure;
 
 pub use audit::Audit;
 pub use components::{Goal, Kind, Team};
+pub use config::{GameConfig, Party};
+pub use error::GameError;
 pub use events::Event;
 pub use explore::Explored;
-pub use game::{Game, GameConfig, Party, Summary};
+pub use game::Game;
 pub use level::Level;
 pub use render::style;
+pub use step::{DT, STEPS_PER_SECOND};
+pub use summary::Summary;
 pub use tileslide_scenes::SplitMix64;
-
-/// Steps per second of game time.
-pub const STEPS_PER_SECOND: u32 = 30;
-/// The fixed step (seconds).
-pub const DT: f32 = 1.0 / STEPS_PER_SECOND as f32;
-
-/// What can go wrong (all of these are bugs in the game, not bad input).
-#[derive(Debug, thiserror::Error)]
-pub enum GameError {
-    /// The built-in map did not parse.
-    #[error("dungeon map: {0}")]
-    Load(#[from] tileslide::io::LoadError),
-    /// A map edit was refused.
-    #[error("digging: {0}")]
-    Map(#[from] tileslide::MapError),
-    /// Navigation refused.
-    #[error("navigation: {0}")]
-    Nav(#[from] tileslide::NavError),
-    /// The resolver refused a body.
-    #[error("bodies: {0}")]
-    Body(#[from] tileslide::BodyError),
-    /// A hit volume was refused.
-    #[error("hit volumes: {0}")]
-    Volume(#[from] tileslide::VolumeError),
-}

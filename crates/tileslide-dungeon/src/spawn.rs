@@ -3,8 +3,8 @@
 use hecs::{Entity, World};
 use tileslide::{Bodies, BodyDesc, BodyShape, Vec2};
 
-use crate::GameError;
 use crate::components::{Body, Cooldown, CreatureBrain, Goal, Health, HeroBrain, Id, Kind};
+use crate::error::GameError;
 
 /// Hands out [`Id`]s in spawn order.
 #[derive(Clone, Debug, Default)]

@@ -2,7 +2,7 @@
 //! character's centre may have crossed a solid face during the step. Checked with the
 //! map's own queries, independently of the controller that moved them.
 
-use tileslide::{Aabb, Ray, RayFilter, SegmentFlags, TileMap, Vec2};
+use tileslide::{Aabb, QueryFilter, Ray, SegmentFlags, TileMap, Vec2};
 
 /// Overlaps shallower than this fraction of a cell are contact, not penetration (the
 /// controller keeps a skin of a thousandth of a cell).
@@ -30,7 +30,7 @@ impl Audit {
             let depth = penetration(map, to, half, tolerance) / scale;
             self.max_penetration = self.max_penetration.max(depth);
         }
-        let solid = RayFilter::default().with_mask(SegmentFlags::SOLID);
+        let solid = QueryFilter::default().with_mask(SegmentFlags::SOLID);
         if from != to && map.cast_ray(Ray::between(from, to), &solid).is_some() {
             self.tunnels += 1;
         }

@@ -3,8 +3,8 @@
 //! enemy's body deals `HIT` to the player's body.
 
 use tileslide::{
-    Aabb, Circle, HitEvent, HitObject, HitTypes, HitWorld, TeamRule, Vec2, Volume, VolumeError,
-    VolumeShape,
+    Aabb, Circle, HitEvent, HitObject, HitTypes, HitWorld, Owner, TeamRule, Vec2, Volume,
+    VolumeError, VolumeShape,
 };
 
 /// The game's own hit type: a stomp, dealt by the player's feet while falling.
@@ -59,16 +59,16 @@ pub struct Boxed {
 }
 
 impl Boxed {
-    fn object(&self, key: u64, team: u32) -> HitObject {
-        let mut object = HitObject::new(key, self.center - self.half, self.half * 2.0);
+    fn object(&self, owner: u64, team: u32) -> HitObject {
+        let mut object = HitObject::new(Owner(owner), self.center - self.half, self.half * 2.0);
         object.motion = self.motion;
         object.team = team;
         object
     }
 
-    /// The whole box, local.
+    /// The whole box, local: centred at its half size.
     fn body(&self, hit: HitTypes) -> Option<Volume> {
-        Volume::rect(Vec2::ZERO, self.half * 2.0, hit).ok()
+        Volume::rect(self.half, self.half, hit).ok()
     }
 
     /// The strip at the feet or the head (towards `up` when `top`), local.
@@ -80,7 +80,15 @@ impl Boxed {
         } else {
             (0.0, depth)
         };
-        Volume::rect(Vec2::new(0.0, y0), Vec2::new(size.x, y1), hit).ok()
+        // From its corners: the strip's edge must be exactly the box's.
+        let strip = Volume {
+            shape: VolumeShape::Rect(Aabb {
+                min: Vec2::new(0.0, y0),
+                max: Vec2::new(size.x, y1),
+            }),
+            hit,
+        };
+        strip.check().ok().map(|()| strip)
     }
 
     /// The strip in world coordinates, for pictures.
@@ -89,11 +97,12 @@ impl Boxed {
         let local = self.strip(up, top, STRIP * scale, HitTypes::NONE)?;
         let corner = self.center - self.half;
         match local.shape {
-            VolumeShape::Box(b) => Some(VolumeShape::Box(Aabb {
+            VolumeShape::Rect(b) => Some(VolumeShape::Rect(Aabb {
                 min: b.min + corner,
                 max: b.max + corner,
             })),
-            VolumeShape::Circle(_) => None,
+            // The strip is built as a rect; any other shape has no picture here.
+            _ => None,
         }
     }
 }
@@ -132,7 +141,7 @@ pub fn exchange(
     for (i, center) in coins {
         let coin = Volume::circle(Vec2::splat(radius), radius, HitTypes::COLLECT).ok();
         let mut object = HitObject::new(
-            1_000_000 + *i as u64,
+            Owner(1_000_000 + *i as u64),
             *center - Vec2::splat(radius),
             Vec2::splat(2.0 * radius),
         );

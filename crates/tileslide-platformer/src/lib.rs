@@ -25,25 +25,41 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+// The modules import each other in one direction only. At the bottom: `input`, `error`,
+// `fall`, `coin`, `hits`, `audit`, `level` (with `replica_spawn`), `summary`. Above them
+// the moving things, each on its own: `player`, `enemy`, `platform`. `script` reads the
+// level and those things and returns an `Input`; `game` owns them all, asks the script
+// for its input every step and moves everything; `picture` draws a `Game`.
+
 mod audit;
+mod coin;
+mod enemy;
+mod error;
+mod fall;
 mod game;
 mod hits;
+mod input;
 mod level;
 mod picture;
+mod platform;
+mod player;
 mod replica_spawn;
 mod script;
 mod summary;
 
 pub use audit::{Audit, TOLERANCE, overlaps_solid};
-pub use game::{
-    Coin, Enemy, GRAVITY, Game, GameError, JUMP_SPEED, PLATFORM_OWNER, Player, RUN_SPEED,
-    STEPS_PER_SECOND,
-};
+pub use coin::Coin;
+pub use enemy::Enemy;
+pub use error::GameError;
+pub use fall::GRAVITY;
+pub use game::{Game, STEPS_PER_SECOND, next_input};
 pub use hits::{COIN_RADIUS, ENEMY_HALF, PLAYER_HALF, STOMP};
+pub use input::Input;
 pub use level::{BUNDLED_LEVEL, Goal, Level, LevelError, MARKERS, PlatformTrack};
 pub use picture::{COIN_COLOR, PLAYER_COLOR};
+pub use platform::PLATFORM_OWNER;
+pub use player::{JUMP_SPEED, Player, RUN_SPEED};
 pub use replica_spawn::player_spawn;
-pub use script::{Input, next_input};
 pub use summary::Summary;
 
 /// The longest run, in steps: a minute of game time.

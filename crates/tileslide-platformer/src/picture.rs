@@ -31,7 +31,7 @@ impl Game {
                 half: e.half(),
                 motion: Vec2::ZERO,
             };
-            picture.volume(box_shape(b.center, b.half), VolumeKind::Attack);
+            picture.volume(rect_shape(b.center, b.half), VolumeKind::Attack);
             if let Some(top) = b.world_strip(up, true, s) {
                 picture.volume(top, VolumeKind::Vulnerability);
             }
@@ -43,7 +43,7 @@ impl Game {
             PLAYER_COLOR
         };
         picture.volume(
-            box_shape(p.body.position, p.half()),
+            rect_shape(p.body.position, p.half()),
             VolumeKind::Vulnerability,
         );
         picture.body_with_color(Circle::new(p.body.position, p.half().x), color);
@@ -68,6 +68,6 @@ impl Game {
     }
 }
 
-fn box_shape(center: Vec2, half: Vec2) -> VolumeShape {
-    VolumeShape::Box(Aabb::from_center(center, half))
+fn rect_shape(center: Vec2, half: Vec2) -> VolumeShape {
+    VolumeShape::Rect(Aabb::from_center(center, half))
 }

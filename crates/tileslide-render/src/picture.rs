@@ -1,7 +1,7 @@
 //! What to draw over the map in one picture: bodies, rays, paths, volumes, hit events.
 
 use tileslide::{
-    Aabb, Cell, Circle, HitEvent, HitWorld, Path, Ray, RayHit, SegmentFlags, TemporarySegment,
+    Aabb, Cell, Circle, HitEvent, HitWorld, NavPath, Ray, RayHit, SegmentFlags, TemporarySegment,
     TileMap, Vec2, VolumeShape,
 };
 
@@ -74,7 +74,7 @@ enum Overlay {
 ///
 /// ```
 /// use tileslide::io::ascii;
-/// use tileslide::{Circle, Ray, RayFilter, Vec2};
+/// use tileslide::{Circle, Ray, QueryFilter, Vec2};
 /// use tileslide_render::{Canvas, Picture, RenderOptions};
 ///
 /// let map = ascii::parse("\
@@ -85,7 +85,7 @@ enum Overlay {
 /// let canvas = Canvas::new(&map, &RenderOptions::default())?; // 16 pixels per cell
 ///
 /// let ray = Ray::between(Vec2::new(1.5, 1.5), Vec2::new(1.5, 3.5));
-/// let hit = map.cast_ray(ray, &RayFilter::default());
+/// let hit = map.cast_ray(ray, &QueryFilter::default());
 /// let mut picture = Picture::new();
 /// picture
 ///     .body(Circle::new(Vec2::new(4.0, 1.5), 0.4))
@@ -166,7 +166,7 @@ impl Picture {
     }
 
     /// A path found by [`NavGrid`](tileslide::NavGrid): its corners joined by lines.
-    pub fn path(&mut self, path: &Path) -> &mut Self {
+    pub fn path(&mut self, path: &NavPath) -> &mut Self {
         self.polyline(path.points())
     }
 
@@ -184,15 +184,18 @@ impl Picture {
 
     /// An attack or vulnerability volume in **world** coordinates (place an object's local
     /// volume at its position first): filled translucent, outlined. Skipped if not finite,
-    /// if a circle's radius is negative, or if a box's minimum exceeds its maximum.
+    /// if a circle's radius is negative, if a rect's minimum exceeds its maximum, or if the
+    /// shape is one this version does not draw.
     pub fn volume(&mut self, shape: VolumeShape, kind: VolumeKind) -> &mut Self {
         let usable = match shape {
             VolumeShape::Circle(c) => {
                 c.center.is_finite() && c.radius.is_finite() && c.radius >= 0.0
             }
-            VolumeShape::Box(b) => {
+            VolumeShape::Rect(b) => {
                 b.min.is_finite() && b.max.is_finite() && b.min.cmple(b.max).all()
             }
+            // A shape added to tileslide after this version: skipped, as unusable.
+            _ => false,
         };
         self.push(Overlay::Volume { shape, kind }, usable)
     }
@@ -414,10 +417,12 @@ fn draw_volume(
                 pen.disc(center, view.pixel_length(c.radius), fill, color, line);
             }
         }
-        VolumeShape::Box(b) => {
+        VolumeShape::Rect(b) => {
             if let (Some(a), Some(b)) = (view.pixel_of(b.min), view.pixel_of(b.max)) {
                 pen.rect(a, b, fill, color, line);
             }
         }
+        // Not reached: `volume` skips the shapes it does not know.
+        _ => {}
     }
 }

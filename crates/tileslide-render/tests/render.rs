@@ -3,7 +3,7 @@
 
 use tileslide::io::ascii;
 use tileslide::{
-    Aabb, Cell, Circle, Owner, Ray, RayFilter, Segment, SegmentFlags, TemporarySegment, TileMap,
+    Aabb, Cell, Circle, Owner, QueryFilter, Ray, Segment, SegmentFlags, TemporarySegment, TileMap,
     Vec2, VolumeShape,
 };
 use tileslide_render::{
@@ -37,9 +37,9 @@ fn canvas(map: &TileMap, pixels_per_cell: f32) -> Canvas {
     .unwrap()
 }
 
-/// A box volume.
-fn box_volume(min: Vec2, max: Vec2) -> VolumeShape {
-    VolumeShape::Box(Aabb { min, max })
+/// A rect volume from its corners.
+fn rect_volume(min: Vec2, max: Vec2) -> VolumeShape {
+    VolumeShape::Rect(Aabb { min, max })
 }
 
 /// The colour of the pixel under world point `p`.
@@ -167,7 +167,7 @@ fn a_body_is_filled_with_its_colour() {
 fn a_ray_hit_is_marked_with_a_dot() {
     let (map, canvas) = room_at(32.0);
     let ray = Ray::between(Vec2::new(4.5, 1.5), Vec2::new(4.5, 6.0));
-    let hit = map.cast_ray(ray, &RayFilter::default()).unwrap();
+    let hit = map.cast_ray(ray, &QueryFilter::default()).unwrap();
     let mut picture = Picture::new();
     picture.ray(ray, Some(&hit));
     let image = canvas.render(&picture);
@@ -180,7 +180,7 @@ fn a_ray_hit_is_marked_with_a_dot() {
 fn volumes_are_tinted_red_for_attack_and_blue_for_vulnerability() {
     let (_, canvas) = room_at(16.0);
     let mut picture = Picture::new();
-    let boxed = |x: f32| box_volume(Vec2::new(x, 1.0), Vec2::new(x + 1.0, 2.0));
+    let boxed = |x: f32| rect_volume(Vec2::new(x, 1.0), Vec2::new(x + 1.0, 2.0));
     picture
         .volume(boxed(1.0), VolumeKind::Attack)
         .volume(boxed(4.0), VolumeKind::Vulnerability)
@@ -233,7 +233,7 @@ fn non_finite_overlays_are_skipped_and_counted() {
         .polyline(&[Vec2::ZERO, Vec2::new(1.0, f32::NAN)])
         .polyline(&[])
         .volume(
-            box_volume(Vec2::new(3.0, 3.0), Vec2::new(2.0, 4.0)),
+            rect_volume(Vec2::new(3.0, 3.0), Vec2::new(2.0, 4.0)),
             VolumeKind::Attack,
         )
         .hit_marker(Vec2::new(f32::NEG_INFINITY, 0.0), false);
@@ -258,7 +258,7 @@ fn huge_finite_coordinates_do_not_panic() {
             VolumeKind::Vulnerability,
         )
         .volume(
-            box_volume(Vec2::splat(-f32::MAX), Vec2::splat(f32::MAX)),
+            rect_volume(Vec2::splat(-f32::MAX), Vec2::splat(f32::MAX)),
             VolumeKind::Attack,
         )
         .hit_marker(far, true);
@@ -317,7 +317,7 @@ fn shapes_of_any_finite_size_render_without_panicking() {
             .ray(Ray::between(p, q), None)
             .polyline(&[p, q, Vec2::new(next(), next())])
             .volume(VolumeShape::Circle(Circle::new(q, r)), VolumeKind::Attack)
-            .volume(box_volume(p.min(q), p.max(q)), VolumeKind::Vulnerability)
+            .volume(rect_volume(p.min(q), p.max(q)), VolumeKind::Vulnerability)
             .hit_marker(p, false)
             .temporary(&TemporarySegment {
                 segment: Segment::new(p, q),

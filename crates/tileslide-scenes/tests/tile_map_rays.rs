@@ -1,7 +1,7 @@
 //! tileslide's grid ray cast agrees with the scenes' reference walk on the standard scenes.
 #![allow(clippy::unwrap_used)]
 
-use tileslide::{Ray, RayFilter};
+use tileslide::{QueryFilter, Ray};
 use tileslide_scenes::{Scene, SceneRay, reference_hit_distance, scene_rays};
 
 fn same(a: Option<f32>, b: Option<f32>) -> bool {
@@ -27,7 +27,7 @@ fn agree_on(scene: Scene) -> usize {
                     origin: r.origin,
                     delta: r.dir * r.length,
                 },
-                &RayFilter::default(),
+                &QueryFilter::default(),
             )
             .map(|h| h.t * r.length)
         };

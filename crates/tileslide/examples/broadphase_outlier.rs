@@ -6,14 +6,16 @@
 use std::time::Instant;
 
 use tileslide::io::ascii;
-use tileslide::{Bodies, BodyDesc, BodyShape, Broadphase, ResolveConfig, TileMap, Vec2};
+use tileslide::{
+    Bodies, BodyDesc, BodyShape, ResolveConfig, TileMap, Vec2, broadphase::PairMethod,
+};
 
 const STEPS: u32 = 2000;
 
 /// Mean milliseconds per step of nine bodies (and the far one, if `far`).
 fn step_ms(
     map: &TileMap,
-    broadphase: Broadphase,
+    broadphase: PairMethod,
     far: bool,
 ) -> Result<f64, Box<dyn std::error::Error>> {
     let config = ResolveConfig {
@@ -56,7 +58,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "##########",
     ];
     let map = ascii::parse(&room.join("\n"), "room.txt", 1.0)?;
-    for broadphase in [Broadphase::SweepAndPrune, Broadphase::UniformGrid] {
+    for broadphase in [PairMethod::SweepAndPrune, PairMethod::UniformGrid] {
         let near = step_ms(&map, broadphase, false)?;
         let far = step_ms(&map, broadphase, true)?;
         println!("{broadphase:?}: 9 bodies {near:.4} ms a step, with one at y = 1e6 {far:.4} ms");

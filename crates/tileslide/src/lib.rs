@@ -20,16 +20,37 @@
 //! - A position along a ray or move is `t` in `[0, 1]`.
 //! - Normals point out of solid material; by default a ray hits only faces it meets
 //!   head-on (`dot(normal, p1 − p0) < 0`).
-//! - Coordinates are at most [`MAX_COORD`] (2²⁴ map units) from the origin: maps reaching
+//! - Coordinates are at most [`MAX_COORD`](limits::MAX_COORD) (2²⁴ map units) from the origin: maps reaching
 //!   past it, and positions, moves' end points, radii and sizes past it, are refused with an
 //!   error naming the value. Ray casts answer every finite ray; a circle cast every finite
 //!   motion of a circle whose centre and radius are in the range.
 //! - Bad input (files, shapes, cells) is an error naming what and where, never a panic.
 //!
+//! ## What is where
+//!
+//! The crate root holds what a game uses every frame: the map and its tiles and temporary
+//! segments, the queries and their hits, bodies, the character, hit volumes, paths, their
+//! errors, the shapes these take ([`Segment`], [`Ray`], [`Circle`], [`Aabb`]), the
+//! caller's entity ([`Owner`]) and [`Vec2`]. Four public modules hold the rest:
+//! [`io`] (the loaders), [`geometry`] (the exact pair primitives the rest is built on),
+//! [`broadphase`] (pairs of overlapping boxes) and [`limits`] (the largest coordinates,
+//! maps and grids accepted).
+//!
+//! ## Features
+//!
+//! - `tiled` (default): Tiled maps, `.tmx` and `.tmj`, in [`io::tiled`].
+//! - `png` (default): tile sets traced from PNG tile sheets, in [`io::bitmap`].
+//! - `tiled-zstd`: zstd-compressed Tiled tile layers (builds the zstd C library).
+//! - `serde`: `Serialize` and `Deserialize` for the value types a game saves or sends:
+//!   shapes, configurations, filters, hits, contacts, reports, handles and ids (ids and
+//!   flags as their numbers). A [`BodyShape`] is read through [`BodyShape::compound`], so a
+//!   saved shape is checked as a built one is; other values are checked where they enter a
+//!   system, as built ones are.
+//!
 //! ## Quick start
 //!
 //! ```
-//! use tileslide::{io::ascii, Ray, RayFilter, Vec2};
+//! use tileslide::{io::ascii, Ray, QueryFilter, Vec2};
 //!
 //! // '#' solid, '/' and '\' ramps, '=' one-way platform; row 0 is the top line.
 //! let map = ascii::parse("\
@@ -41,21 +62,23 @@
 //!
 //! // Straight down from above the ramp: the nearest hit is on its slope.
 //! let down = Ray::between(Vec2::new(4.75, 1.5), Vec2::new(4.75, 4.5));
-//! let hit = map.cast_ray(down, &RayFilter::default()).unwrap();
+//! let hit = map.cast_ray(down, &QueryFilter::default()).unwrap();
 //! assert!((hit.point.y - 3.25).abs() < 1e-6);
 //! assert_eq!(hit.cell().map(|c| (c.col, c.row)), Some((4, 3)));
 //!
 //! // Upward through the one-way platform: its back face does not block.
 //! let up = Ray::between(Vec2::new(2.5, 2.5), Vec2::new(2.5, 1.5));
-//! assert!(map.cast_ray(up, &RayFilter::default()).is_none());
+//! assert!(map.cast_ray(up, &QueryFilter::default()).is_none());
 //! # Ok::<(), tileslide::io::LoadError>(())
 //! ```
 
 mod bodies;
-mod broadphase;
+pub mod broadphase;
 mod controller;
-mod geometry;
+pub mod geometry;
 pub mod io;
+pub mod limits;
+mod owner;
 mod path;
 mod query;
 mod tiles;
@@ -65,23 +88,21 @@ pub use bodies::{
     Bodies, Body, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, ResolveConfig,
     ResolveReport, SlideMode,
 };
-pub use broadphase::{Broadphase, PairFinder};
 pub use controller::{
     Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
 };
-pub use geometry::{
-    Aabb, Circle, MAX_COORD, PARALLEL_TOLERANCE, Ray, RaySegmentHit, Segment, SweepHit,
-    cast_ray_segment, sweep_box_segment, sweep_circle_circle, sweep_circle_segment,
-};
+pub use geometry::aabb::Aabb;
+pub use geometry::circle::Circle;
+pub use geometry::ray::Ray;
+pub use geometry::segment::Segment;
 pub use glam::Vec2;
-pub use path::{
-    FlowField, MAX_NAV_NODES, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, Path,
-};
-pub use query::{CircleHit, Faces, RayFilter, RayHit, SegmentOverlap, SegmentSource};
+pub use owner::Owner;
+pub use path::{FlowField, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, NavPath};
+pub use query::{CastError, CircleHit, Faces, QueryFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{
-    ActiveSegment, Cell, JOURNAL_EDITS, JournalError, MAX_CELLS, MAX_SHAPE_SEGMENTS, MapError,
-    MapRevision, Owner, SegmentFlags, SegmentRef, ShapeError, TemporaryError, TemporarySegment,
-    TileId, TileMap, TileSegment, TileSet, TileSetError, TileShape,
+    ActiveSegment, Cell, JournalError, MapError, MapRevision, SegmentFlags, SegmentRef, ShapeError,
+    TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet, TileSetError,
+    TileShape,
 };
 pub use volumes::{
     Facing, HitEvent, HitObject, HitRule, HitTypes, HitWorld, ObjectId, TeamRule, Volume,

@@ -223,7 +223,7 @@ fn stale_handles_and_bad_numbers_are_errors() {
 
 #[test]
 fn positions_and_move_end_points_past_max_coord_are_refused() {
-    use tileslide::MAX_COORD;
+    use tileslide::limits::MAX_COORD;
     let mut bodies = Bodies::new();
     let shape = BodyShape::circle(0.3).unwrap();
     let refused = |what: &'static str, value: Vec2| Err(BodyError::OutOfRange { what, value });
@@ -265,7 +265,7 @@ fn positions_and_move_end_points_past_max_coord_are_refused() {
 
 #[test]
 fn radii_offsets_and_settings_out_of_range_are_refused() {
-    use tileslide::MAX_COORD;
+    use tileslide::limits::MAX_COORD;
     assert!(BodyShape::circle(MAX_COORD).is_ok());
     for radius in [
         f32::MAX,
@@ -325,7 +325,7 @@ fn radii_offsets_and_settings_out_of_range_are_refused() {
 
 #[test]
 fn a_slide_that_would_end_past_max_coord_stops_at_the_contact() {
-    use tileslide::{MAX_COORD, Owner, Segment, TemporarySegment};
+    use tileslide::{Owner, Segment, TemporarySegment, limits::MAX_COORD};
     let mut m = map(HALL);
     // A floor along the edge of the range, at y = 1 (y down: the floor faces −y).
     let floor = TemporarySegment {

@@ -21,8 +21,9 @@ use generators::{tile_chars, tile_map, wall_in};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Bodies, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Broadphase, Cell, Circle,
-    Owner, ResolveConfig, Segment, SegmentFlags, SlideMode, TemporarySegment, TileMap, Vec2,
+    Bodies, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Cell, Circle, Owner,
+    ResolveConfig, Segment, SegmentFlags, SlideMode, TemporarySegment, TileMap, Vec2,
+    broadphase::PairMethod,
 };
 
 /// Largest overlap allowed after a step, in cells (the skin).
@@ -362,7 +363,7 @@ const ABSURD_CALLS: u8 = 8;
 
 /// A point of the `MAX_COORD` square, from fractions of its side.
 fn in_square(x: f32, y: f32) -> Vec2 {
-    (Vec2::new(x, y) * 2.0 - Vec2::ONE) * tileslide::MAX_COORD
+    (Vec2::new(x, y) * 2.0 - Vec2::ONE) * tileslide::limits::MAX_COORD
 }
 
 /// Whether an error is the one expected.
@@ -371,7 +372,7 @@ type ErrorCheck = Box<dyn Fn(&BodyError) -> bool>;
 /// Makes refused call `which` on `handle`'s body; checks that it is refused with the right
 /// error and that the body and the settings are as they were.
 fn absurd_call(bodies: &mut Bodies, handle: BodyHandle, which: u8) -> Result<(), TestCaseError> {
-    use tileslide::MAX_COORD;
+    use tileslide::limits::MAX_COORD;
     let before = bodies.get(handle).unwrap().clone();
     let config = *bodies.config();
     let far = |what: &'static str| move |e: &BodyError| matches!(e, BodyError::OutOfRange { what: w, .. } if *w == what);
@@ -504,7 +505,7 @@ proptest! {
         let map = tile_map(w, &chars, 1.0, Vec2::ZERO);
         let config = ResolveConfig {
             slide: if tangential { SlideMode::Tangential } else { SlideMode::FullLength },
-            broadphase: if sap { Broadphase::SweepAndPrune } else { Broadphase::UniformGrid },
+            broadphase: if sap { PairMethod::SweepAndPrune } else { PairMethod::UniformGrid },
             ..ResolveConfig::default()
         };
         run(&map, &proposals, STEPS, config, |bodies, placed, step, before| {
@@ -551,7 +552,7 @@ proptest! {
         let ok = |_: &Bodies, _: &[(BodyHandle, Proposal)], _: usize, _: &[Vec2]| Ok(());
         let a = run(&map, &proposals, STEPS, ResolveConfig::default(), ok)?;
         let b = run(&map, &proposals, STEPS, ResolveConfig::default(), ok)?;
-        let sap = ResolveConfig { broadphase: Broadphase::SweepAndPrune, ..ResolveConfig::default() };
+        let sap = ResolveConfig { broadphase: PairMethod::SweepAndPrune, ..ResolveConfig::default() };
         let c = run(&map, &proposals, STEPS, sap, ok)?;
         let bits = |v: &[Vec2]| v.iter().map(|p| (p.x.to_bits(), p.y.to_bits())).collect::<Vec<_>>();
         prop_assert_eq!(bits(&a), bits(&b));
@@ -608,9 +609,9 @@ fn same_as_without_memory(
     let (mut bodies, placed) = place(&map, proposals);
     let mut config = ResolveConfig {
         broadphase: if sap {
-            Broadphase::SweepAndPrune
+            PairMethod::SweepAndPrune
         } else {
-            Broadphase::UniformGrid
+            PairMethod::UniformGrid
         },
         ..ResolveConfig::default()
     };
@@ -690,7 +691,7 @@ fn same_as_without_memory(
                     .unwrap();
             }
             Event::Giant(x, y, r) => {
-                let radius = (r * tileslide::MAX_COORD).max(0.5);
+                let radius = (r * tileslide::limits::MAX_COORD).max(0.5);
                 let at = Vec2::new(x * w as f32, y * h as f32);
                 let giant = BodyDesc::new(at, BodyShape::circle(radius).unwrap());
                 live.push((bodies.add(giant).unwrap(), Vec2::new(0.6, -0.1)));
@@ -733,7 +734,7 @@ fn same_as_without_memory(
                 // A move from far away can end beyond the square (its end point is refused,
                 // with the move unchanged): no move this step.
                 prop_assert!(
-                    !tileslide::MAX_COORD.ge(&(position + motion).abs().max_element()),
+                    !tileslide::limits::MAX_COORD.ge(&(position + motion).abs().max_element()),
                     "{}",
                     e
                 );

@@ -42,6 +42,8 @@ fn foot(shape: CharacterShape) -> f32 {
     match shape {
         CharacterShape::Circle { radius } => radius,
         CharacterShape::Rect { half } => half.y,
+        // Any other shape: the bottom of its bounding box.
+        other => -other.bounds(Vec2::ZERO).min.y,
     }
 }
 
@@ -62,6 +64,15 @@ fn in_solid(ch: &Character, m: &TileMap, eps: f32) -> bool {
         }
         CharacterShape::Rect { half } => {
             let probe = Aabb::from_center(p, half - Vec2::splat(eps));
+            m.segments_overlapping_aabb(&probe)
+                .iter()
+                .any(|s| solid(s.flags))
+        }
+        // Any other shape: its bounding box, shrunk by `eps` (may report more than it
+        // overlaps, never less).
+        other => {
+            let b = other.bounds(p);
+            let probe = Aabb::from_center(p, (b.max - b.min) * 0.5 - Vec2::splat(eps));
             m.segments_overlapping_aabb(&probe)
                 .iter()
                 .any(|s| solid(s.flags))
@@ -101,6 +112,7 @@ fn walking_into_walls_stops_flush_with_a_left_or_right_contact() {
         let half_width = match shape {
             CharacterShape::Circle { radius } => radius,
             CharacterShape::Rect { half } => half.x,
+            other => other.bounds(Vec2::ZERO).max.x,
         };
         let mut ch = hero(shape, v(4.5, 2.0));
         step(&mut ch, &m, v(0.0, 3.0));
@@ -299,6 +311,7 @@ fn moving_diagonally_into_a_corner_ends_flush_against_both_surfaces() {
         let (hw, hh) = match shape {
             CharacterShape::Circle { radius } => (radius, radius),
             CharacterShape::Rect { half } => (half.x, half.y),
+            other => other.bounds(Vec2::ZERO).max.into(),
         };
         assert!(
             (ch.position.x - (9.0 - hw - SKIN)).abs() < 1e-3,

@@ -8,7 +8,7 @@ use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
     Character, CharacterShape, Contact, Contacts, ControllerConfig, MoveOptions, Owner, Segment,
-    SegmentFlags, TemporarySegment, TileMap, Vec2, sweep_box_segment,
+    SegmentFlags, TemporarySegment, TileMap, Vec2, geometry::EndCaps, geometry::sweep_box_segment,
 };
 
 const UP: Vec2 = Vec2::NEG_Y;
@@ -89,7 +89,7 @@ fn tied(corner: &[(Segment, Vec2); 2], half: Vec2, start: Vec2, motion: Vec2) ->
     let length = motion.length();
     let reach = motion / length * (length + SKIN);
     let [t0, t1] = corner.map(|(segment, normal)| {
-        sweep_box_segment(start, half, reach, &segment, normal, [true; 2]).map(|hit| hit.t)
+        sweep_box_segment(start, half, reach, &segment, normal, EndCaps::BOTH).map(|hit| hit.t)
     });
     t0.is_some() && t0 == t1
 }

@@ -253,6 +253,8 @@ fn half_height(shape: CharacterShape) -> f32 {
     match shape {
         CharacterShape::Circle { radius } => radius,
         CharacterShape::Rect { half } => half.y,
+        // Any other shape: the top of its bounding box.
+        other => other.bounds(Vec2::ZERO).max.y,
     }
 }
 

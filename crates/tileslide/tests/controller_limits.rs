@@ -6,7 +6,8 @@
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Character, CharacterShape, ControllerConfig, ControllerError, MAX_COORD, MoveOptions, Vec2,
+    Character, CharacterShape, ControllerConfig, ControllerError, MoveOptions, Vec2,
+    limits::MAX_COORD,
 };
 
 const ROOM: &str = "\

@@ -13,7 +13,7 @@ use std::sync::Arc;
 use replica_support::{TILE, data_dir, level_names, raw_level, read};
 use tileslide::io::replica;
 use tileslide::{
-    Aabb, Character, CharacterShape, Contacts, ControllerConfig, MoveOptions, Ray, RayFilter,
+    Aabb, Character, CharacterShape, Contacts, ControllerConfig, MoveOptions, QueryFilter, Ray,
     SegmentFlags, TileMap, Vec2,
 };
 
@@ -85,7 +85,7 @@ fn run(name: &str, map: &TileMap, start: Vec2) -> Run {
     let dt = 1.0 / RATE;
     let mut vy = 0.0f32;
     let mut contacts = Contacts::default();
-    let solid = RayFilter::default().with_mask(SegmentFlags::SOLID);
+    let solid = QueryFilter::default().with_mask(SegmentFlags::SOLID);
     let mut result = Run {
         grounded_steps: 0,
         jumps: 0,
@@ -100,7 +100,7 @@ fn run(name: &str, map: &TileMap, start: Vec2) -> Run {
             let gap = map
                 .cast_ray(
                     Ray::between(ahead, ahead - Vec2::new(0.0, HALF.y + 40.0)),
-                    &RayFilter::default(),
+                    &QueryFilter::default(),
                 )
                 .is_none();
             if contacts.right.is_some() || gap {

@@ -9,7 +9,7 @@ use std::sync::Arc;
 
 use proptest::prelude::*;
 use tileslide::io::ascii;
-use tileslide::{Cell, MapError, Ray, RayFilter, TileId, TileMap, TileSet, TileShape, Vec2};
+use tileslide::{Cell, MapError, QueryFilter, Ray, TileId, TileMap, TileSet, TileShape, Vec2};
 
 /// The ASCII tiles plus a half-height block (partial seams) and a nub on the left edge
 /// (a seam split in two), all scaled to `cell`.
@@ -146,7 +146,7 @@ proptest! {
             let f = i as f32 / 16.0;
             let p0 = s.origin + Vec2::new(f * size.x + 0.1 * s.cell, -0.5 * s.cell);
             let p1 = s.origin + Vec2::new((1.0 - f) * size.x, size.y + 0.5 * s.cell);
-            for filter in [RayFilter::default(), RayFilter::both_sides()] {
+            for filter in [QueryFilter::default(), QueryFilter::both_sides()] {
                 for r in [Ray::between(p0, p1), Ray::between(p1, p0)] {
                     prop_assert_eq!(edited.cast_ray(r, &filter), rebuilt.cast_ray(r, &filter));
                     prop_assert_eq!(edited.cast_ray_all(r, &filter), rebuilt.cast_ray_all(r, &filter));

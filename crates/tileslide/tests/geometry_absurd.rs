@@ -12,8 +12,8 @@
 use glam::DVec2;
 use proptest::prelude::*;
 use tileslide::{
-    Ray, Segment, SweepHit, Vec2, cast_ray_segment, sweep_box_segment, sweep_circle_circle,
-    sweep_circle_segment,
+    Ray, Segment, Vec2, geometry::EndCaps, geometry::SweepHit, geometry::cast_ray_segment,
+    geometry::sweep_box_segment, geometry::sweep_circle_circle, geometry::sweep_circle_segment,
 };
 
 fn v(x: f32, y: f32) -> Vec2 {
@@ -151,6 +151,7 @@ proptest! {
         let (seg, normal) = segment(at, s, Vec2::ZERO, dir, len);
         let center = seg.a + in_frame(dir, c0) * s;
         let (motion, radius) = (v(m0.0, m0.1) * s, r0 * s);
+        let caps = EndCaps { a: caps[0], b: caps[1] };
         let hit = sweep_circle_segment(center, radius, motion, &seg, normal, caps);
         sane(hit)?;
         let p = center.as_dvec2() - seg.a.as_dvec2();
@@ -180,6 +181,7 @@ proptest! {
         let (seg, normal) = segment(at, s, Vec2::ZERO, dir, len);
         let center = seg.a + in_frame(dir, c0) * s;
         let (motion, half) = (v(m0.0, m0.1) * s, v(h0.0, h0.1) * s);
+        let caps = EndCaps { a: caps[0], b: caps[1] };
         let hit = sweep_box_segment(center, half, motion, &seg, normal, caps);
         sane(hit)?;
         let p = center.as_dvec2() - seg.a.as_dvec2();
@@ -234,9 +236,10 @@ fn motions_up_to_f32_max_meet_what_they_cross() {
     let floor = Segment::new(v(-1e38, 0.0), v(1e38, 0.0));
     let center = v(0.0, 1e38);
     let motion = v(0.0, -f32::MAX);
-    let hit = sweep_circle_segment(center, 1.0, motion, &floor, Vec2::Y, [true; 2]).unwrap();
+    let hit = sweep_circle_segment(center, 1.0, motion, &floor, Vec2::Y, EndCaps::BOTH).unwrap();
     assert!((hit.t - 1e38 / f32::MAX).abs() < 1e-6, "{hit:?}");
-    let hit = sweep_box_segment(center, v(1.0, 1.0), motion, &floor, Vec2::Y, [true; 2]).unwrap();
+    let hit =
+        sweep_box_segment(center, v(1.0, 1.0), motion, &floor, Vec2::Y, EndCaps::BOTH).unwrap();
     assert!((hit.t - 1e38 / f32::MAX).abs() < 1e-6, "{hit:?}");
     // Circles f32::MAX apart, one moving the whole way to the other.
     let hit = sweep_circle_circle(
@@ -256,7 +259,7 @@ fn motions_up_to_f32_max_meet_what_they_cross() {
         v(0.0, -4e-30),
         &tiny,
         Vec2::Y,
-        [true; 2],
+        EndCaps::BOTH,
     )
     .unwrap();
     assert!((hit.t - 0.5).abs() < 1e-5, "{hit:?}");

@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use tileslide::io::{LoadError, LoadErrorKind, Location, ascii};
-use tileslide::{Cell, Ray, QueryFilter, TileId, TileMap, Vec2};
+use tileslide::{Cell, QueryFilter, Ray, TileId, TileMap, Vec2};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)

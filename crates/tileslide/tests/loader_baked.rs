@@ -11,7 +11,7 @@ use std::sync::Arc;
 use proptest::prelude::*;
 use replica_support::{data_dir, level_names};
 use tileslide::io::{BakedFault, LoadError, LoadErrorKind, Location, ascii, baked, replica};
-use tileslide::{Cell, Ray, QueryFilter, TileMap, Vec2};
+use tileslide::{Cell, QueryFilter, Ray, TileMap, Vec2};
 
 const CAVE: &str = "\
 ##########

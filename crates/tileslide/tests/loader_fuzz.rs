@@ -13,7 +13,7 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 use replica_support::{data_dir, raw_level, read};
 use tileslide::io::{LoadErrorKind, Location, ascii, replica};
-use tileslide::{Cell, Ray, QueryFilter, TileId, TileMap, TileSet, Vec2};
+use tileslide::{Cell, QueryFilter, Ray, TileId, TileMap, TileSet, Vec2};
 
 /// 256 cases per property unless `PROPTEST_CASES` says otherwise (for long fuzz runs).
 fn runner() -> TestRunner {

@@ -14,7 +14,8 @@ use tileslide::io::tiled::{
 };
 use tileslide::io::{LoadError, LoadErrorKind, Location, NotTiled, Unsupported};
 use tileslide::{
-    Cell, HitTypes, limits::MAX_CELLS, Ray, QueryFilter, SegmentFlags, TileId, TileMap, TileSegment, Vec2,
+    Cell, HitTypes, QueryFilter, Ray, SegmentFlags, TileId, TileMap, TileSegment, Vec2,
+    limits::MAX_CELLS,
 };
 
 const H: u32 = Flip::HORIZONTAL_BIT;
@@ -769,6 +770,7 @@ fn rays_and_circles_behave_in_the_example_cave() {
     // A circle of radius 6 dropped at x = 40 lands on the floor (y = 224) at y = 218.
     let hit = map
         .cast_circle(v(40.0, 40.0), 6.0, v(0.0, 300.0), &filter)
+        .unwrap()
         .unwrap();
     assert!((hit.center.y - 218.0).abs() < 1e-3, "{hit:?}");
     // Points: inside the floor and a block, not in the air.

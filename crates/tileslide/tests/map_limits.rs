@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use tileslide::{Cell, MAX_CELLS, MapError, TileId, TileMap, TileSet, TileShape, Vec2};
+use tileslide::{Cell, MapError, TileId, TileMap, TileSet, TileShape, Vec2, limits::MAX_CELLS};
 
 fn round_tile(vertices: usize) -> TileSet {
     let mut set = TileSet::new(Vec2::ONE).unwrap();
@@ -43,7 +43,7 @@ fn more_cells_than_max_cells_is_refused() {
 
 #[test]
 fn an_edit_that_would_overfill_a_cell_is_refused_and_changes_nothing() {
-    use tileslide::{Ray, RayFilter, SegmentFlags, TileSegment};
+    use tileslide::{QueryFilter, Ray, SegmentFlags, TileSegment};
     let v = Vec2::new;
     let mut set = TileSet::new(Vec2::ONE).unwrap();
     // Tile 1: 300 overlapping segments along its right edge (normals differ by a hair, so
@@ -83,7 +83,7 @@ fn an_edit_that_would_overfill_a_cell_is_refused_and_changes_nothing() {
     let mut map = TileMap::new(Arc::new(set), 2, 1, Vec2::ZERO).unwrap();
     map.set_tile(Cell::new(0, 0), Some(TileId(1))).unwrap();
     let down = Ray::between(v(0.5, 0.1), v(0.5, 0.9));
-    let before = map.cast_ray(down, &RayFilter::default());
+    let before = map.cast_ray(down, &QueryFilter::default());
     assert!(
         before.is_some_and(|h| (h.point.y - 0.5).abs() < 1e-6),
         "{before:?}"
@@ -94,7 +94,7 @@ fn an_edit_that_would_overfill_a_cell_is_refused_and_changes_nothing() {
         Err(MapError::TooManySegments)
     );
     assert_eq!(map.tile(Cell::new(1, 0)), None);
-    assert_eq!(map.cast_ray(down, &RayFilter::default()), before);
+    assert_eq!(map.cast_ray(down, &QueryFilter::default()), before);
     assert_eq!(map.active_segment_count(), 301);
 }
 
@@ -127,7 +127,7 @@ fn cell_at_agrees_with_cell_corner_for_awkward_cell_sizes() {
 
 #[test]
 fn a_map_reaching_past_max_coord_is_refused() {
-    use tileslide::MAX_COORD;
+    use tileslide::limits::MAX_COORD;
     // 2^20 cells of 32 map units reach 2^25, past the coordinate range.
     let mut set = TileSet::new(Vec2::splat(32.0)).unwrap();
     set.insert(

@@ -1,4 +1,4 @@
-//! Proves the navigation grid (`NavGrid`, `Path`, `FlowField`) against
+//! Proves the navigation grid (`NavGrid`, `NavPath`, `FlowField`) against
 //! references built without `tileslide::path` (see `path_support`):
 //!
 //! - the moves it opens and the points it connects equal a brute-force lattice whose
@@ -11,7 +11,7 @@
 //!   reaches the goal through a door and past pillars;
 //! - a grid and a field caught up with random digs and fills (`sync`, read from the map's
 //!   edit journal, rebuilt when the journal was overrun) equal ones built on the edited
-//!   map, and `Path::is_affected_by` never misses a change;
+//!   map, and `NavPath::is_affected_by` never misses a change;
 //! - a grid or field used with a map that is not its own (another map, a clone edited
 //!   apart) is refused;
 //! - bad input is refused with the error naming it.
@@ -26,8 +26,8 @@ use glam::DVec2;
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, JOURNAL_EDITS, NavConfig,
-    NavError, NavGrid, Path, RayFilter, SegmentFlags, TileMap, Vec2,
+    Bodies, BodyDesc, BodyHandle, BodyShape, Cell, Faces, FlowField, NavConfig, NavError, NavGrid,
+    NavPath, QueryFilter, SegmentFlags, TileMap, Vec2, limits::JOURNAL_EDITS,
 };
 
 use path_support::any_angle::{InflatedScene, room_and_blocks};
@@ -50,10 +50,10 @@ fn map(text: &str) -> TileMap {
     ascii::parse(text, "path.txt", 1.0).unwrap()
 }
 
-fn both_faces() -> RayFilter {
-    RayFilter {
+fn both_faces() -> QueryFilter {
+    QueryFilter {
         faces: Faces::Both,
-        ..RayFilter::default()
+        ..QueryFilter::default()
     }
 }
 
@@ -158,7 +158,7 @@ proptest! {
         seed in any::<u64>(),
     ) {
         let map = random.build();
-        let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
         let walls = Walls::of(&map);
         let reference = LatticeReference::build(&map, &walls);
         prop_assert_eq!(nav.nodes(), (reference.nx, reference.ny));
@@ -224,7 +224,7 @@ proptest! {
 fn check_path(
     map: &TileMap,
     walls: &Walls,
-    path: &Path,
+    path: &NavPath,
     (from, to): (Vec2, Vec2),
     r: f32,
 ) -> Result<(), TestCaseError> {
@@ -236,7 +236,7 @@ fn check_path(
     let mut sum = 0.0;
     for run in points.windows(2) {
         let (a, b) = (run[0], run[1]);
-        let hit = map.cast_circle(a, r, b - a, &both_faces());
+        let hit = map.cast_circle(a, r, b - a, &both_faces()).unwrap();
         prop_assert!(
             hit.is_none(),
             "r {}: the run {} -> {} of {:?} hits a wall: {:?}",
@@ -278,7 +278,7 @@ proptest! {
         seed in any::<u64>(),
     ) {
         let map = random.build();
-        let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
         let walls = Walls::of(&map);
         let mut rng = SplitMix64::new(seed);
         for _ in 0..20 {
@@ -355,7 +355,7 @@ const LENGTH_RATIO: f64 = 1.08;
 /// exact shortest path between its ends.
 struct LengthCheck {
     what: String,
-    path: Path,
+    path: NavPath,
     bound: f64,
 }
 
@@ -380,7 +380,7 @@ fn lengths_against_any_angle(pairs: usize, seed: u64) -> Vec<LengthCheck> {
         ("pillars", PILLARS),
     ] {
         let map = map(text);
-        let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
         let (room, blocks) = room_and_blocks(&map);
         for r in [0.3f32, 0.8] {
             let scene = InflatedScene::new(room, &blocks, f64::from(r), 8);
@@ -663,7 +663,7 @@ fn a_crowd_following_a_flow_field_reaches_the_goal_without_overlapping_or_sticki
 #[test]
 fn a_body_the_resolver_left_against_a_wall_still_gets_a_flow_direction() {
     let map = map(ROOM);
-    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
     let field = FlowField::new(&nav, &map, v(6.0, 2.0), 0.3).unwrap();
     let mut bodies = Bodies::new();
     let h = bodies
@@ -686,7 +686,9 @@ fn a_body_the_resolver_left_against_a_wall_still_gets_a_flow_direction() {
     // A path from there, along the wall and away, is clear by the circle cast.
     let path = nav.find_path(&map, p, v(6.0, 2.0), 0.3).unwrap().unwrap();
     for w in path.points().windows(2) {
-        let hit = map.cast_circle(w[0], 0.3, w[1] - w[0], &both_faces());
+        let hit = map
+            .cast_circle(w[0], 0.3, w[1] - w[0], &both_faces())
+            .unwrap();
         assert!(hit.is_none(), "{w:?}: {hit:?}");
     }
     // Where fitting ends: half the resolver's gap from the wall fits, an eighth of the
@@ -781,15 +783,15 @@ fn assert_same_moves(nav: &NavGrid, fresh: &NavGrid, map: &TileMap, context: &st
 
 /// Asserts that every run of `path` is still clear for its radius on `map` (solid walls
 /// from both sides, one-way platforms from the front).
-fn assert_still_clear(path: &Path, map: &TileMap, context: &str) {
+fn assert_still_clear(path: &NavPath, map: &TileMap, context: &str) {
     let solid = both_faces().with_mask(SegmentFlags::SOLID);
-    let one_way = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
+    let one_way = QueryFilter::default().with_mask(SegmentFlags::ONE_WAY);
     let r = path.radius();
     for run in path.points().windows(2) {
         let (a, motion) = (run[0], run[1] - run[0]);
         assert!(
-            map.cast_circle(a, r, motion, &solid).is_none()
-                && map.cast_circle(a, r, motion, &one_way).is_none(),
+            map.cast_circle(a, r, motion, &solid).unwrap().is_none()
+                && map.cast_circle(a, r, motion, &one_way).unwrap().is_none(),
             "the edits blocked the run {} -> {} of a path they do not affect: {context}",
             run[0],
             run[1]
@@ -1028,7 +1030,7 @@ fn names_non_finite<T>(result: Result<T, NavError>, what: &str, bad: Vec2) -> bo
 #[test]
 fn non_finite_points_are_refused_naming_the_point() {
     let map = map(ROOM);
-    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
     let ok = v(1.5, 1.5);
     let field = FlowField::new(&nav, &map, ok, 0.3).unwrap();
     for bad in [
@@ -1060,7 +1062,7 @@ fn non_finite_points_are_refused_naming_the_point() {
 #[test]
 fn radii_that_are_not_positive_or_above_max_radius_are_refused() {
     let map = map(ROOM);
-    let mut nav = NavGrid::new(
+    let nav = NavGrid::new(
         &map,
         NavConfig {
             max_radius: 0.6,
@@ -1287,7 +1289,7 @@ fn unreachable_goals_and_ends_inside_walls_give_no_path() {
 #...#....#
 #...#....#
 ##########");
-    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
     let (left, right) = (v(2.0, 2.0), v(7.0, 2.0));
     assert_eq!(
         nav.find_path(&map, left, right, 0.3),
@@ -1322,4 +1324,80 @@ fn unreachable_goals_and_ends_inside_walls_give_no_path() {
     assert_eq!(field.distance(&nav, &map, left), Ok(None));
     assert_eq!(field.direction(&nav, &map, left), Ok(None));
     assert!(field.distance(&nav, &map, v(6.0, 3.0)).unwrap().is_some());
+}
+
+// ----------------------------------------------------------------------------------------
+// One grid, shared
+
+#[test]
+fn searches_through_a_shared_grid_on_several_threads_find_what_one_thread_finds() {
+    // `find_path` takes `&self`: a grid shared by reference across threads answers each
+    // query as a lone search does, whatever the radii and order of the others.
+    let text = "\
+############
+#..........#
+#.####.###.#
+#.#......#.#
+#.#.####.#.#
+#...#..#...#
+#.#.#..#.#.#
+#.#......#.#
+#.####.###.#
+#..........#
+############";
+    let map = map(text);
+    let open: Vec<Vec2> = text
+        .lines()
+        .enumerate()
+        .flat_map(|(row, line)| {
+            line.chars()
+                .enumerate()
+                .filter(|&(_, c)| c == '.')
+                .map(move |(col, _)| v(col as f32 + 0.5, row as f32 + 0.5))
+        })
+        .collect();
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let mut rng = SplitMix64::new(22);
+    let queries: Vec<(Vec2, Vec2, f32)> = (0..48)
+        .map(|_| {
+            let mut cell = || open[rng.below(open.len() as u64) as usize];
+            let (a, b) = (cell(), cell());
+            (a, b, [0.2, 0.3, 0.45][rng.below(3) as usize])
+        })
+        .collect();
+    let alone: Vec<_> = queries
+        .iter()
+        .map(|&(a, b, r)| nav.clone().find_path(&map, a, b, r).unwrap())
+        .collect();
+    assert!(
+        alone.iter().filter(|p| p.is_some()).count() > 4,
+        "too few paths to compare"
+    );
+    let shared = &nav;
+    let found: Vec<Vec<Option<NavPath>>> = std::thread::scope(|scope| {
+        let workers: Vec<_> = (0..3)
+            .map(|w| {
+                let (map, queries) = (&map, &queries);
+                scope.spawn(move || {
+                    // Each worker runs the queries from a different place in the list.
+                    (0..queries.len())
+                        .map(|k| {
+                            let (a, b, r) = queries[(k + 16 * w) % queries.len()];
+                            shared.find_path(map, a, b, r).unwrap()
+                        })
+                        .collect()
+                })
+            })
+            .collect();
+        workers.into_iter().map(|w| w.join().unwrap()).collect()
+    });
+    for (w, paths) in found.iter().enumerate() {
+        for (k, path) in paths.iter().enumerate() {
+            assert_eq!(
+                path,
+                &alone[(k + 16 * w) % queries.len()],
+                "worker {w}, query {k}"
+            );
+        }
+    }
 }

@@ -8,7 +8,7 @@
 use std::sync::Arc;
 
 use tileslide::io::ascii;
-use tileslide::{Cell, FlowField, MAX_COORD, NavConfig, NavError, NavGrid, TileMap, Vec2};
+use tileslide::{Cell, FlowField, NavConfig, NavError, NavGrid, TileMap, Vec2, limits::MAX_COORD};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)
@@ -48,7 +48,7 @@ fn names_out_of_range<T>(result: Result<T, NavError>, what: &str, bad: Vec2) -> 
 #[test]
 fn points_beyond_max_coord_are_refused_naming_the_point() {
     let map = room();
-    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
     let ok = v(1.5, 1.5);
     let field = FlowField::new(&nav, &map, ok, 0.3).unwrap();
     for bad in FAR {
@@ -84,7 +84,7 @@ fn points_beyond_max_coord_are_refused_naming_the_point() {
 #[test]
 fn points_at_max_coord_far_off_the_map_are_not_reached() {
     let map = room();
-    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
     let ok = v(1.5, 1.5);
     for far in [
         v(MAX_COORD, -MAX_COORD),
@@ -107,7 +107,7 @@ fn points_at_max_coord_far_off_the_map_are_not_reached() {
 #[test]
 fn radii_of_f32_max_or_nan_are_refused_naming_the_radius() {
     let map = room();
-    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
     let ok = v(1.5, 1.5);
     for radius in [f32::MAX, -f32::MAX, 1e20, f32::NAN] {
         let named = |e: NavError| {

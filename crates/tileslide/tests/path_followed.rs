@@ -102,7 +102,7 @@ proptest! {
         seed in any::<u64>(),
     ) {
         let map = ascii::parse(&text, "random.txt", 1.0).unwrap();
-        let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
         let mut rng = SplitMix64::new(seed);
         for k in 0..8 {
             let r = RADII[k % RADII.len()];
@@ -229,7 +229,7 @@ const LEDGE: &str = "\
 #[test]
 fn paths_and_flow_fields_cross_a_one_way_platform_only_from_behind() {
     let map = ascii::parse(LEDGE, "ledge.txt", 1.0).unwrap();
-    let mut nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
     let (below, above, r) = (v(2.5, 4.5), v(2.5, 1.5), 0.3);
     let up = nav.find_path(&map, below, above, r).unwrap().unwrap();
     assert_eq!(

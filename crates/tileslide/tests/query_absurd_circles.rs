@@ -18,7 +18,9 @@ use generators::{map_of, small_map_at};
 use glam::DVec2;
 use path_support::walls::point_segment_distance;
 use proptest::prelude::*;
-use tileslide::{Cell, CircleHit, Faces, MAX_COORD, RayFilter, SegmentSource, TileMap, Vec2};
+use tileslide::{
+    CastError, Cell, CircleHit, Faces, QueryFilter, SegmentSource, TileMap, Vec2, limits::MAX_COORD,
+};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)
@@ -35,6 +37,9 @@ fn key_of(hit: &CircleHit) -> Key {
     match hit.source {
         SegmentSource::Tile { segment, .. } => Key::Tile(segment.cell, segment.index),
         SegmentSource::Temporary { index, .. } => Key::Temporary(index),
+        // The brute force lists tile and temporary segments only: a hit on anything else
+        // is one it cannot check.
+        other => panic!("a segment source the brute force does not list: {other:?}"),
     }
 }
 
@@ -42,7 +47,7 @@ fn key_of(hit: &CircleHit) -> Key {
 type Wall = (Key, DVec2, DVec2);
 
 /// Every active and temporary segment with one of `filter`'s flags.
-fn walls(map: &TileMap, filter: &RayFilter) -> Vec<Wall> {
+fn walls(map: &TileMap, filter: &QueryFilter) -> Vec<Wall> {
     let mut out = Vec::new();
     for row in 0..map.height() {
         for col in 0..map.width() {
@@ -165,9 +170,11 @@ fn first_inside(cast: &Cast, walls: &[Wall], depth: f64, from: f64, to: f64) -> 
 fn check_against_brute_force(
     map: &TileMap,
     cast: &Cast,
-    filter: &RayFilter,
+    filter: &QueryFilter,
 ) -> Result<Option<CircleHit>, TestCaseError> {
-    let hit = map.cast_circle(cast.center, cast.radius, cast.motion, filter);
+    let hit = map
+        .cast_circle(cast.center, cast.radius, cast.motion, filter)
+        .unwrap();
     let walls = walls(map, filter);
     let tol = cast.tolerance(map);
     let r = f64::from(cast.radius);
@@ -247,14 +254,16 @@ fn check_against_brute_force(
 fn check_against_moved_start(
     map: &TileMap,
     cast: &Cast,
-    filter: &RayFilter,
+    filter: &QueryFilter,
     hit: Option<CircleHit>,
 ) -> Result<(), TestCaseError> {
     let clear = cast.clear(map);
     let (_, end) = cast.span();
     let from = cast.at(-clear);
     let to = cast.at(end.min(clear));
-    let moved = map.cast_circle(from.as_vec2(), cast.radius, (to - from).as_vec2(), filter);
+    let moved = map
+        .cast_circle(from.as_vec2(), cast.radius, (to - from).as_vec2(), filter)
+        .unwrap();
     let tol = cast.tolerance(map);
     let r = f64::from(cast.radius);
     // A contact whose point the line passes a hair less than a radius from only grazes
@@ -392,7 +401,7 @@ fn map_and_casts<S: Strategy<Value = Cast>>(
 }
 
 /// Checks every cast against the brute force and against its moved start.
-fn check_casts(map: &TileMap, casts: &[Cast], filter: &RayFilter) -> Result<(), TestCaseError> {
+fn check_casts(map: &TileMap, casts: &[Cast], filter: &QueryFilter) -> Result<(), TestCaseError> {
     for cast in casts {
         let hit = check_against_brute_force(map, cast, filter)?;
         check_against_moved_start(map, cast, filter, hit)?;
@@ -401,11 +410,11 @@ fn check_casts(map: &TileMap, casts: &[Cast], filter: &RayFilter) -> Result<(), 
 }
 
 /// Front faces only, or `Faces::Both` when `both`.
-fn front_or_both(both: bool) -> RayFilter {
+fn front_or_both(both: bool) -> QueryFilter {
     if both {
-        RayFilter::both_sides()
+        QueryFilter::both_sides()
     } else {
-        RayFilter::default()
+        QueryFilter::default()
     }
 }
 
@@ -457,8 +466,8 @@ proptest! {
             + motion.as_dvec2().length()
             + f64::from(map.cell_size().x);
         let holding = holding as f32;
-        let hit = map.cast_circle(center, radius, motion, &filter);
-        let small = map.cast_circle(center, holding, motion, &filter);
+        let hit = map.cast_circle(center, radius, motion, &filter).unwrap();
+        let small = map.cast_circle(center, holding, motion, &filter).unwrap();
         match (hit, small) {
             (None, None) => {}
             (Some(h), Some(s)) => {
@@ -491,7 +500,13 @@ fn a_circle_from_beyond_max_coord_stops_at_the_wall() {
     let left = row_map("#....");
     for far in [MAX_COORD * 2.0, 1e20, 1e30, 1.5e38] {
         let hit = right
-            .cast_circle(v(-far, 0.25), 0.1, v(2.0 * far, 0.0), &RayFilter::default())
+            .cast_circle(
+                v(-far, 0.25),
+                0.1,
+                v(2.0 * far, 0.0),
+                &QueryFilter::default(),
+            )
+            .unwrap()
             .unwrap_or_else(|| panic!("from {far}: no hit"));
         assert_eq!(hit.normal, v(-1.0, 0.0), "from {far}");
         assert!(
@@ -502,7 +517,13 @@ fn a_circle_from_beyond_max_coord_stops_at_the_wall() {
         let t = (f64::from(far) + 1.9) / (2.0 * f64::from(far));
         assert!((f64::from(hit.t) - t).abs() < 1e-7, "from {far}: {hit:?}");
         let hit = left
-            .cast_circle(v(far, 0.25), 0.1, v(-2.0 * far, 0.0), &RayFilter::default())
+            .cast_circle(
+                v(far, 0.25),
+                0.1,
+                v(-2.0 * far, 0.0),
+                &QueryFilter::default(),
+            )
+            .unwrap()
             .unwrap_or_else(|| panic!("from {far}: no hit"));
         assert_eq!(hit.normal, v(1.0, 0.0), "from {far}");
         assert!(
@@ -524,7 +545,8 @@ fn a_circle_from_afar_travels_its_exact_line() {
     for dir in [v(1.0, 0.25), v(0.8, 0.3), v(1.0, -0.375)] {
         for far in [2f32.powi(24), 2f32.powi(60), 2f32.powi(100)] {
             let hit = map
-                .cast_circle(-dir * far, 0.5, dir * (2.0 * far), &RayFilter::default())
+                .cast_circle(-dir * far, 0.5, dir * (2.0 * far), &QueryFilter::default())
+                .unwrap()
                 .unwrap_or_else(|| panic!("{dir} from {far}: no hit"));
             let y = 1.5 * f64::from(dir.y) / f64::from(dir.x);
             assert_eq!(hit.normal, v(-1.0, 0.0), "{dir} from {far}");
@@ -539,10 +561,11 @@ fn a_circle_from_afar_travels_its_exact_line() {
 #[test]
 fn a_circle_holding_the_map_stops_at_once_against_a_face_it_moves_towards() {
     let room = map_of("#####\n#...#\n#####", 1.0, Vec2::ZERO);
-    let filter = RayFilter::default();
+    let filter = QueryFilter::default();
     // From inside the room, moving right: the right wall's inner face, at once.
     let hit = room
         .cast_circle(v(2.5, 1.5), 1e30, v(1.0, 0.0), &filter)
+        .unwrap()
         .unwrap();
     assert_eq!(hit.t, 0.0);
     assert_eq!(
@@ -556,6 +579,7 @@ fn a_circle_holding_the_map_stops_at_once_against_a_face_it_moves_towards() {
     // top-left cell, by its rounded top end (the room's corner).
     let hit = room
         .cast_circle(v(-1e30, 1.5), 3e38, v(1e30, 0.0), &filter)
+        .unwrap()
         .unwrap();
     assert_eq!(hit.t, 0.0);
     assert!(
@@ -567,10 +591,12 @@ fn a_circle_holding_the_map_stops_at_once_against_a_face_it_moves_towards() {
     // Moving away from it, from the left or from above: nothing stops it.
     assert!(
         room.cast_circle(v(-1e30, 1.5), 3e38, v(-1e30, 0.0), &filter)
+            .unwrap()
             .is_none()
     );
     assert!(
         room.cast_circle(v(1.5, -1e30), 3e38, v(0.0, -1e30), &filter)
+            .unwrap()
             .is_none()
     );
 }
@@ -583,18 +609,24 @@ fn key_index(map: &TileMap, col: u32, row: u32, normal: Vec2) -> u32 {
 }
 
 #[test]
-fn a_radius_that_is_not_a_positive_finite_number_hits_nothing() {
+fn a_radius_that_is_not_a_positive_finite_number_is_refused_naming_it() {
     let map = row_map("....#");
-    let filter = RayFilter::default();
+    let filter = QueryFilter::default();
     for radius in [0.0, -0.1, -1e30, f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
-        for center in [v(0.5, 0.25), v(-1e30, 0.25)] {
+        for center in [v(0.5, 0.25), v(-1e30, 0.25), v(f32::NAN, 0.25)] {
+            let cast = map.cast_circle(center, radius, v(1e31, 0.0), &filter);
             assert!(
-                map.cast_circle(center, radius, v(1e31, 0.0), &filter)
-                    .is_none(),
-                "radius {radius} from {center}"
+                matches!(cast, Err(CastError::InvalidRadius(r)) if r.to_bits() == radius.to_bits()),
+                "radius {radius} from {center}: {cast:?}"
             );
         }
     }
+}
+
+#[test]
+fn a_position_or_motion_that_is_not_finite_hits_nothing() {
+    let map = row_map("....#");
+    let filter = QueryFilter::default();
     for (center, motion) in [
         (v(f32::NAN, 0.25), v(1.0, 0.0)),
         (v(f32::NEG_INFINITY, 0.25), v(1.0, 0.0)),
@@ -602,7 +634,9 @@ fn a_radius_that_is_not_a_positive_finite_number_hits_nothing() {
         (v(-1e30, 0.25), v(f32::NAN, 0.0)),
     ] {
         assert!(
-            map.cast_circle(center, 0.1, motion, &filter).is_none(),
+            map.cast_circle(center, 0.1, motion, &filter)
+                .unwrap()
+                .is_none(),
             "{center} by {motion}"
         );
     }

@@ -16,8 +16,8 @@ use generators::{small_map_at, tile_chars, tile_map};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    Cell, Faces, Ray, RayFilter, RayHit, Segment, SegmentSource, TileId, TileMap, Vec2,
-    cast_ray_segment,
+    Cell, Faces, QueryFilter, Ray, RayHit, Segment, SegmentSource, TileId, TileMap, Vec2,
+    geometry::cast_ray_segment,
 };
 
 fn v(x: f32, y: f32) -> Vec2 {
@@ -67,6 +67,9 @@ fn key_of(hit: &RayHit) -> Key {
     match hit.source {
         SegmentSource::Tile { segment, .. } => Key::Tile(segment.cell, segment.index),
         SegmentSource::Temporary { index, .. } => Key::Temporary(index),
+        // The brute force lists tile and temporary segments only: a hit on anything else
+        // is one it cannot check.
+        other => panic!("a segment source the brute force does not list: {other:?}"),
     }
 }
 
@@ -79,7 +82,7 @@ fn solve_f64(ray: &Ray, segment: &Segment) -> Option<f32> {
     let w = a - o;
     let sign = 1.0f64.copysign(den);
     let (den, tn, sn) = (den * sign, w.perp_dot(e) * sign, w.perp_dot(d) * sign);
-    let crossing = den > f64::from(tileslide::PARALLEL_TOLERANCE) * e.length_squared();
+    let crossing = den > f64::from(tileslide::geometry::PARALLEL_TOLERANCE) * e.length_squared();
     let inside = crossing && tn >= 0.0 && tn <= den && sn >= 0.0 && sn <= den;
     inside.then(|| (tn / den) as f32)
 }
@@ -100,7 +103,7 @@ fn required(ray: &Ray, segment: &Segment, eps: f64) -> bool {
     let err_den = c * d.length() * e.length();
     let err_tn = c * w.length() * e.length();
     let err_sn = c * w.length() * d.length();
-    let threshold = f64::from(tileslide::PARALLEL_TOLERANCE) * e.length_squared();
+    let threshold = f64::from(tileslide::geometry::PARALLEL_TOLERANCE) * e.length_squared();
     den > threshold * (1.0 + 1e-5) + err_den
         && tn > err_tn
         && den - tn > err_tn + err_den
@@ -109,9 +112,9 @@ fn required(ray: &Ray, segment: &Segment, eps: f64) -> bool {
 }
 
 /// Every hit of a brute-force test of every active and temporary segment that the filter
-/// lets the ray hit (`RayFilter::accepts`), by
+/// lets the ray hit (`QueryFilter::accepts`), by
 /// `cast_ray_segment` for an ordinary ray and by the `f64` kernel for any other.
-fn brute_hits(map: &TileMap, ray: &Ray, filter: &RayFilter) -> Vec<BruteHit> {
+fn brute_hits(map: &TileMap, ray: &Ray, filter: &QueryFilter) -> Vec<BruteHit> {
     let wide = !ordinary(map, ray);
     let eps = if wide {
         f64::EPSILON
@@ -151,7 +154,7 @@ fn brute_hits(map: &TileMap, ray: &Ray, filter: &RayFilter) -> Vec<BruteHit> {
 /// Checks one ray: the casts agree bit for bit, every hit is sane and is a brute-force hit
 /// at the very same `t`, and every hit the brute force requires is found (so `cast_ray`'s
 /// hit, the first of them all, is the nearest).
-fn check(map: &TileMap, ray: Ray, filter: &RayFilter) -> Result<(), TestCaseError> {
+fn check(map: &TileMap, ray: Ray, filter: &QueryFilter) -> Result<(), TestCaseError> {
     let single = map.cast_ray(ray, filter);
     let all = map.cast_ray_all(ray, filter);
     let batch = map.cast_rays(&[ray], filter);
@@ -218,17 +221,17 @@ fn finite_ray_whose_grid_length_overflows_does_not_panic_and_hits_the_wall() {
     // fraction NaN, and the walk ran off the map (index out of bounds in `fast_walk`).
     let map = ascii::parse("...\n...\n..#", "open.txt", 0.5).unwrap();
     let ray = Ray::between(v(0.2565, 0.2605), v(0.5565, 3.4e38));
-    check(&map, ray, &RayFilter::default()).unwrap();
+    check(&map, ray, &QueryFilter::default()).unwrap();
     // Straight up the middle column the ray leaves the map without a hit; through the
     // solid cell's column it hits its floor.
     let up = Ray {
         origin: v(1.25, 0.25),
         delta: v(1e-30, 3.4e38),
     };
-    let hit = map.cast_ray(up, &RayFilter::default()).unwrap();
+    let hit = map.cast_ray(up, &QueryFilter::default()).unwrap();
     assert_eq!(hit.normal, v(0.0, -1.0));
     assert_eq!(hit.point.y, 1.0);
-    check(&map, up, &RayFilter::default()).unwrap();
+    check(&map, up, &QueryFilter::default()).unwrap();
 }
 
 #[test]
@@ -238,18 +241,18 @@ fn cast_ray_all_never_reports_nan_far_out() {
     let map = ascii::parse("####\n#..#\n####", "box.txt", 1.0).unwrap();
     for scale in [1e19f32, 1e25, 1e27, 1e30, 1e35, 1.5e38] {
         let ray = Ray::between(v(-scale, -scale * 0.5), v(scale, scale * 0.5 + 1.0));
-        check(&map, ray, &RayFilter::default()).unwrap();
+        check(&map, ray, &QueryFilter::default()).unwrap();
         check(
             &map,
             ray,
-            &RayFilter {
+            &QueryFilter {
                 faces: Faces::Both,
-                ..RayFilter::default()
+                ..QueryFilter::default()
             },
         )
         .unwrap();
         let back = Ray::between(ray.end(), ray.origin);
-        check(&map, back, &RayFilter::default()).unwrap();
+        check(&map, back, &QueryFilter::default()).unwrap();
     }
 }
 
@@ -267,7 +270,7 @@ fn subnormal_t_agrees_between_casts() {
             origin: v(2.0 - gap, 1.5),
             delta: v(length, length * 1e-3),
         };
-        check(&map, ray, &RayFilter::default()).unwrap();
+        check(&map, ray, &QueryFilter::default()).unwrap();
     }
     // Subnormal t on an ordinary ray: a start a subnormal distance before the map's left
     // border (a wall at x = 0), on a ray 2³¹ cells long.
@@ -277,10 +280,10 @@ fn subnormal_t_agrees_between_casts() {
             origin: v(-gap, 1.5),
             delta: v(2f32.powi(31), 3.0),
         };
-        check(&map, ray, &RayFilter::default()).unwrap();
+        check(&map, ray, &QueryFilter::default()).unwrap();
         // The wall is hit; `t` (gap / 2³¹) rounds to 0 or a subnormal, so the point is the
         // origin, within the gap of the wall.
-        let hit = map.cast_ray(ray, &RayFilter::default()).unwrap();
+        let hit = map.cast_ray(ray, &QueryFilter::default()).unwrap();
         assert_eq!(hit.normal, v(-1.0, 0.0), "gap {gap}");
         assert!(
             hit.t <= gap && hit.point.x.abs() <= gap,
@@ -300,7 +303,7 @@ fn ray_from_millions_of_cells_away_agrees_between_casts() {
                 origin: target - dir * far,
                 delta: dir * (far * 2.0),
             };
-            check(&map, ray, &RayFilter::default()).unwrap();
+            check(&map, ray, &QueryFilter::default()).unwrap();
         }
     }
 }
@@ -372,14 +375,14 @@ fn map_and_rays<R: Strategy<Value = Ray>>(
 }
 
 /// Front faces only, or `Faces::Both` when `both`.
-fn front_or_both(both: bool) -> RayFilter {
+fn front_or_both(both: bool) -> QueryFilter {
     if both {
-        RayFilter {
+        QueryFilter {
             faces: Faces::Both,
-            ..RayFilter::default()
+            ..QueryFilter::default()
         }
     } else {
-        RayFilter::default()
+        QueryFilter::default()
     }
 }
 
@@ -409,7 +412,8 @@ fn circle_cast_of_any_finite_length_stops_at_the_wall() {
     let map = ascii::parse("....#", "wall.txt", 0.5).unwrap();
     for length in [10.0f32, 1e8, 1e20, 1e30, 3.4e38] {
         let hit = map
-            .cast_circle(v(0.5, 0.25), 0.1, v(length, 0.0), &RayFilter::default())
+            .cast_circle(v(0.5, 0.25), 0.1, v(length, 0.0), &QueryFilter::default())
+            .unwrap()
             .unwrap_or_else(|| panic!("length {length}: no hit"));
         assert_eq!(hit.normal, v(-1.0, 0.0), "length {length}");
         assert!(
@@ -423,9 +427,13 @@ fn circle_cast_of_any_finite_length_stops_at_the_wall() {
     }
     // A motion longer than 2^27 along an axis is swept as its exact scaling by a power of
     // two down to 2^27: the answer is that one's, with `t` scaled back.
-    let filter = RayFilter::default();
-    let short = map.cast_circle(v(0.5, 0.25), 0.1, v(2f32.powi(27), 0.0), &filter);
-    let long = map.cast_circle(v(0.5, 0.25), 0.1, v(2f32.powi(90), 0.0), &filter);
+    let filter = QueryFilter::default();
+    let short = map
+        .cast_circle(v(0.5, 0.25), 0.1, v(2f32.powi(27), 0.0), &filter)
+        .unwrap();
+    let long = map
+        .cast_circle(v(0.5, 0.25), 0.1, v(2f32.powi(90), 0.0), &filter)
+        .unwrap();
     let (short, long) = (short.unwrap(), long.unwrap());
     assert_eq!(short.t * 2f32.powi(-63), long.t);
     assert_eq!(
@@ -485,7 +493,7 @@ fn grazing_ray(map: &TileMap) -> impl Strategy<Value = Ray> + use<> {
 fn check_first_hit_is_cast_rays(
     map: &TileMap,
     ray: Ray,
-    filter: &RayFilter,
+    filter: &QueryFilter,
 ) -> Result<(), TestCaseError> {
     let single = map.cast_ray(ray, filter);
     let all = map.cast_ray_all(ray, filter);
@@ -572,10 +580,10 @@ fn a_long_ray_a_hair_beside_a_grid_line_lists_every_floor_it_crosses() {
         origin: Vec2::new(-5.960_464_5e-8, 1.0),
         delta: Vec2::new(1.0, 268_435_460.0),
     };
-    let hit = map.cast_ray(ray, &RayFilter::default());
+    let hit = map.cast_ray(ray, &QueryFilter::default());
     let hit = hit.expect("the ray crosses the top of cell (6, 0)");
     assert_eq!((hit.normal, hit.point.y), (Vec2::new(0.0, -1.0), 12.25));
-    let all = map.cast_ray_all(ray, &RayFilter::default());
+    let all = map.cast_ray_all(ray, &QueryFilter::default());
     assert_eq!(all.first().map(|h| h.point), Some(hit.point));
     let floors: Vec<(f32, Option<(u32, u32)>)> = all
         .iter()

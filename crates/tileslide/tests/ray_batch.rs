@@ -11,10 +11,10 @@
 
 mod generators;
 
-use generators::{ray_filter, tile_chars, tile_map};
+use generators::{query_filter, tile_chars, tile_map};
 use proptest::prelude::*;
 use tileslide::io::ascii;
-use tileslide::{Owner, Ray, RayFilter, RayHit, Segment, SegmentFlags, TemporarySegment, Vec2};
+use tileslide::{Owner, QueryFilter, Ray, RayHit, Segment, SegmentFlags, TemporarySegment, Vec2};
 
 /// Every bit of an answer, so that `-0.0` and `0.0` (equal as floats) count as different.
 fn bits(hit: &Option<RayHit>) -> Option<(Vec<u32>, String)> {
@@ -71,7 +71,7 @@ proptest! {
         )),
         cell in 0usize..CELLS.len(),
         origin in 0usize..ORIGINS.len(),
-        filter in ray_filter(),
+        filter in query_filter(),
         temporary in any::<bool>(),
     ) {
         let (cell, origin) = (CELLS[cell], Vec2::from(ORIGINS[origin]));
@@ -124,7 +124,7 @@ fn rays_the_fast_walk_declines_get_the_single_answer() {
         // border hits a wall.)
         Ray::between(v(1.3, 3.6), v(9.7, 0.2)),
     ];
-    let filter = RayFilter::default();
+    let filter = QueryFilter::default();
     let batch = map.cast_rays(&rays, &filter);
     for (ray, answer) in rays.iter().zip(&batch) {
         assert_eq!(bits(answer), bits(&map.cast_ray(*ray, &filter)), "{ray:?}");
@@ -153,7 +153,7 @@ fn many_rays_fill_many_lanes_and_the_buffer_is_reused() {
             }
         })
         .collect();
-    let filter = RayFilter::default();
+    let filter = QueryFilter::default();
     let mut out = Vec::new();
     map.cast_rays_into(&rays, &filter, &mut out);
     assert_eq!(out.len(), rays.len());

@@ -11,7 +11,7 @@ use std::f32::consts::FRAC_1_SQRT_2;
 use std::sync::Arc;
 
 use tileslide::io::ascii;
-use tileslide::{Cell, Faces, Ray, RayFilter, RayHit, SegmentFlags, TileMap, Vec2};
+use tileslide::{Cell, Faces, QueryFilter, Ray, RayHit, SegmentFlags, TileMap, Vec2};
 
 /// A map drawn as text (see `drawn`).
 fn map(drawing: &str) -> TileMap {
@@ -26,8 +26,8 @@ fn ray(x0: f32, y0: f32, x1: f32, y1: f32) -> Ray {
     Ray::between(v(x0, y0), v(x1, y1))
 }
 
-fn front() -> RayFilter {
-    RayFilter::default()
+fn front() -> QueryFilter {
+    QueryFilter::default()
 }
 
 #[track_caller]
@@ -36,7 +36,7 @@ fn assert_near(got: Vec2, want: Vec2) {
 }
 
 #[track_caller]
-fn hit(map: &TileMap, r: Ray, filter: &RayFilter) -> RayHit {
+fn hit(map: &TileMap, r: Ray, filter: &QueryFilter) -> RayHit {
     map.cast_ray(r, filter)
         .unwrap_or_else(|| panic!("expected a hit for {r:?} with {filter:?}"))
 }
@@ -208,7 +208,7 @@ fn ray_down_onto_a_floor_seam_hits_the_top_face_never_an_interior_edge() {
     ");
     for x in 1..8 {
         let r = ray(x as f32, 0.25, x as f32, 1.75);
-        for filter in [front(), RayFilter::both_sides()] {
+        for filter in [front(), QueryFilter::both_sides()] {
             let h = hit(&m, r, &filter);
             assert_eq!(h.normal, UP, "seam at x = {x}, {filter:?}");
             assert_near(h.point, v(x as f32, 1.0));
@@ -258,7 +258,7 @@ fn ray_inside_a_floor_meets_no_interior_seam() {
     let r = ray(0.5, 0.5, 7.0, 0.5);
     assert!(m.cast_ray(r, &front()).is_none());
     // Seen from inside, only the far end of the floor is there.
-    let all = m.cast_ray_all(r, &RayFilter::both_sides());
+    let all = m.cast_ray_all(r, &QueryFilter::both_sides());
     assert_eq!(all.len(), 1, "{all:?}");
     assert_near(all[0].point, v(6.0, 0.5));
     assert_eq!(all[0].normal, RIGHT);
@@ -428,7 +428,7 @@ fn ray_running_along_the_top_of_a_floor_is_not_stopped_by_it() {
         ######
         ......
     ");
-    for filter in [front(), RayFilter::both_sides()] {
+    for filter in [front(), QueryFilter::both_sides()] {
         assert!(m.cast_ray(ray(0.5, 1.0, 5.5, 1.0), &filter).is_none());
         assert!(m.cast_ray(ray(5.5, 1.0, 0.5, 1.0), &filter).is_none());
         // Along the bottom too.
@@ -496,7 +496,7 @@ fn one_way_platform_blocks_from_below_with_both_sides() {
     let h = hit(
         &platform(),
         ray(2.5, 2.5, 2.5, 0.5),
-        &RayFilter::both_sides(),
+        &QueryFilter::both_sides(),
     );
     assert_near(h.point, v(2.5, 1.0));
     // The normal is the segment's own, not flipped towards the ray.
@@ -528,12 +528,12 @@ fn direction_filter_counts_only_faces_opposing_its_direction() {
     assert_near(wall.point, v(2.0, 1.1));
     // Against "down": only faces whose normal opposes (0, 1) count, so the wall is ignored
     // and the ray reaches the floor's top face.
-    let floor = hit(&m, r, &RayFilter::against(DOWN));
+    let floor = hit(&m, r, &QueryFilter::against(DOWN));
     assert_eq!(floor.normal, UP);
     assert_near(floor.point, v(4.25, 2.0));
-    assert_eq!(m.cast_ray(r, &RayFilter::against(DOWN)).unwrap().t, 0.75);
+    assert_eq!(m.cast_ray(r, &QueryFilter::against(DOWN)).unwrap().t, 0.75);
     // Against the zero direction no face counts.
-    assert!(m.cast_ray(r, &RayFilter::against(Vec2::ZERO)).is_none());
+    assert!(m.cast_ray(r, &QueryFilter::against(Vec2::ZERO)).is_none());
 }
 
 #[test]
@@ -542,12 +542,12 @@ fn direction_filter_uses_its_own_direction_not_the_rays() {
     // "down" counts the platform's upward face whichever way the ray moves.
     let r = ray(2.5, 2.5, 2.5, 0.5);
     assert!(platform().cast_ray(r, &front()).is_none());
-    let h = hit(&platform(), r, &RayFilter::against(DOWN));
+    let h = hit(&platform(), r, &QueryFilter::against(DOWN));
     assert_near(h.point, v(2.5, 1.0));
     assert_eq!(h.normal, UP);
-    let f = RayFilter {
+    let f = QueryFilter {
         faces: Faces::Against(DOWN),
-        ..RayFilter::default()
+        ..QueryFilter::default()
     };
     assert_eq!(platform().cast_ray(r, &f), Some(h));
 }
@@ -580,7 +580,7 @@ fn one_way_mask_ignores_solid_tiles() {
     let h = hit(
         &m,
         r,
-        &RayFilter::both_sides().with_mask(SegmentFlags::ONE_WAY),
+        &QueryFilter::both_sides().with_mask(SegmentFlags::ONE_WAY),
     );
     assert_near(h.point, v(1.5, 3.0));
     assert_eq!(h.flags, SegmentFlags::ONE_WAY);
@@ -597,7 +597,7 @@ fn mask_of_a_flag_no_tile_has_hits_nothing() {
     assert!(
         m.cast_ray(
             ray(1.5, 0.5, 1.5, 2.5),
-            &RayFilter::both_sides().with_mask(mask)
+            &QueryFilter::both_sides().with_mask(mask)
         )
         .is_none()
     );
@@ -639,7 +639,7 @@ fn cast_ray_all_returns_every_hit_sorted_by_t() {
     assert!(all.windows(2).all(|w| w[0].t <= w[1].t));
     assert_eq!(all[0], m.cast_ray(r, &front()).unwrap());
     // Both sides adds the floor's bottom face, seen from behind.
-    let all = m.cast_ray_all(r, &RayFilter::both_sides());
+    let all = m.cast_ray_all(r, &QueryFilter::both_sides());
     let ys: Vec<f32> = all.iter().map(|h| h.point.y).collect();
     assert_ys(&ys, &[1.0, 3.0, 5.0, 6.0]);
     // Reversed, from below: only the floor's bottom face is a front face.
@@ -673,7 +673,11 @@ fn zero_length_ray_hits_nothing_even_on_a_surface() {
             origin: p,
             delta: Vec2::ZERO,
         };
-        for filter in [front(), RayFilter::both_sides(), RayFilter::against(DOWN)] {
+        for filter in [
+            front(),
+            QueryFilter::both_sides(),
+            QueryFilter::against(DOWN),
+        ] {
             assert!(m.cast_ray(r, &filter).is_none(), "{p:?} {filter:?}");
             assert!(m.cast_ray_all(r, &filter).is_empty(), "{p:?} {filter:?}");
         }
@@ -705,7 +709,7 @@ fn nan_or_infinite_ray_hits_nothing() {
         },
     ];
     for r in bad {
-        for filter in [front(), RayFilter::both_sides()] {
+        for filter in [front(), QueryFilter::both_sides()] {
             assert!(m.cast_ray(r, &filter).is_none(), "{r:?}");
             assert!(m.cast_ray_all(r, &filter).is_empty(), "{r:?}");
         }
@@ -731,7 +735,7 @@ fn ray_starting_on_a_face_is_stopped_at_t_zero_with_both_sides() {
         ...
         ###
     ");
-    let h = hit(&m, ray(1.5, 1.0, 1.5, 0.0), &RayFilter::both_sides());
+    let h = hit(&m, ray(1.5, 1.0, 1.5, 0.0), &QueryFilter::both_sides());
     assert_eq!(h.t, 0.0);
     assert_near(h.point, v(1.5, 1.0));
     assert_eq!(h.normal, UP);
@@ -765,7 +769,7 @@ fn ray_starting_outside_the_map_hits_its_border() {
     assert_eq!(h.normal, DOWN);
     // Passing beside the map entirely.
     assert!(
-        m.cast_ray(ray(-1.0, -1.0, 5.0, -1.0), &RayFilter::both_sides())
+        m.cast_ray(ray(-1.0, -1.0, 5.0, -1.0), &QueryFilter::both_sides())
             .is_none()
     );
 }
@@ -884,6 +888,9 @@ fn ray_ending_exactly_on_a_floor_hits_it_with_a_non_dyadic_origin() {
     // The floor's top is y = 2.58 (as the map stores it); the ray ends exactly there.
     let r = ray(0.5, top.a.y - 0.5, 0.5, top.a.y);
     assert_eq!(r.end().y, top.a.y);
-    assert_eq!(tileslide::cast_ray_segment(&r, &top).unwrap().t, 1.0);
+    assert_eq!(
+        tileslide::geometry::cast_ray_segment(&r, &top).unwrap().t,
+        1.0
+    );
     assert_eq!(hit(&m, r, &front()).t, 1.0);
 }

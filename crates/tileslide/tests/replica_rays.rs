@@ -10,7 +10,7 @@ use std::sync::Arc;
 
 use replica_support::{RawGrid, RawTile, TILE, data_dir, raw_tile_set, read};
 use tileslide::io::replica;
-use tileslide::{Cell, Ray, RayFilter, RayHit, SegmentFlags, TileId, TileMap, Vec2};
+use tileslide::{Cell, QueryFilter, Ray, RayHit, SegmentFlags, TileId, TileMap, Vec2};
 
 /// The levels every ray test runs on (at least three, of different worlds).
 const LEVELS: [&str; 5] = [
@@ -98,7 +98,7 @@ fn assert_floor_hit(level: &Level, col: u32, row: u32) {
     let ray = Ray::between(v(x, top + 16.0), v(x, top - 16.0));
     let hit = level
         .map
-        .cast_ray(ray, &RayFilter::default())
+        .cast_ray(ray, &QueryFilter::default())
         .unwrap_or_else(|| panic!("{}: no hit on floor ({col}, {row})", level.name));
     let at = format!("{} floor ({col}, {row})", level.name);
     assert_eq!(hit.point, v(x, top), "{at}");
@@ -121,7 +121,7 @@ fn level_1_1_island_ray_down_onto_floor_at_cell_5_1_hits_y_64() {
         .map
         .cast_ray(
             Ray::between(v(176.0, 80.0), v(176.0, 48.0)),
-            &RayFilter::default(),
+            &QueryFilter::default(),
         )
         .unwrap();
     assert_eq!(hit.point, v(176.0, 64.0));
@@ -163,7 +163,7 @@ fn long_ray_down_an_empty_column_hits_the_floor_at_its_bottom() {
             let top = TILE * (row + 1) as f32;
             let start = TILE * (row + 1 + empty_above) as f32 - 1.0;
             let ray = Ray::between(v(x, start), v(x, top - 16.0));
-            let hit = level.map.cast_ray(ray, &RayFilter::default()).unwrap();
+            let hit = level.map.cast_ray(ray, &QueryFilter::default()).unwrap();
             let at = format!("{} column {col}", level.name);
             assert!((hit.point.y - top).abs() < 1e-3, "{at}: {}", hit.point);
             assert_eq!(hit.point.x, x, "{at}");
@@ -189,7 +189,7 @@ fn assert_ramp_hits(level: &Level, id: u8, surface: fn(f32) -> f32, normal: Vec2
             let at = format!("{} tile {id} at ({col}, {row}), x {lx}", level.name);
             let hit = level
                 .map
-                .cast_ray(ray, &RayFilter::default())
+                .cast_ray(ray, &QueryFilter::default())
                 .unwrap_or_else(|| panic!("{at}: no hit"));
             let expected = base + surface(lx);
             assert!(
@@ -244,7 +244,7 @@ fn horizontal_direction_filter_ignores_floors_that_the_default_filter_hits() {
             let ray = Ray::between(corner + v(4.0, 44.0), corner + v(28.0, 12.0));
             let at = format!("{} floor ({col}, {row})", level.name);
 
-            let hit = level.map.cast_ray(ray, &RayFilter::default()).unwrap();
+            let hit = level.map.cast_ray(ray, &QueryFilter::default()).unwrap();
             assert_eq!(hit.point, corner + v(13.0, 32.0), "{at}");
             assert_eq!(hit.t, 0.375, "{at}");
             assert_eq!(hit.normal, v(0.0, 1.0), "{at}");
@@ -252,11 +252,11 @@ fn horizontal_direction_filter_ignores_floors_that_the_default_filter_hits() {
             // Replica Island's horizontal pass: only faces opposing +x count; the floor's
             // normal (0, 1) is perpendicular to it, so it is ignored, and so are the tile's
             // right and bottom edges, which face along or away from +x.
-            let horizontal = RayFilter::against(Vec2::X);
+            let horizontal = QueryFilter::against(Vec2::X);
             assert_eq!(level.map.cast_ray(ray, &horizontal), None, "{at}");
 
             // The vertical pass (moving down) sees the floor again.
-            let vertical = RayFilter::against(Vec2::NEG_Y);
+            let vertical = QueryFilter::against(Vec2::NEG_Y);
             assert_eq!(level.map.cast_ray(ray, &vertical), Some(hit), "{at}");
         }
     }
@@ -286,19 +286,19 @@ fn horizontal_ray_into_a_wall_hits_its_face_and_floor_only_filter_ignores_it() {
 
             let hit = level
                 .map
-                .cast_ray(ray, &RayFilter::against(Vec2::X))
+                .cast_ray(ray, &QueryFilter::against(Vec2::X))
                 .unwrap();
             assert_eq!(hit.point, v(x, y), "{at}");
             assert_eq!(hit.normal, v(-1.0, 0.0), "{at}");
             assert_eq!(cell_of(&hit), (col, row), "{at}");
             assert_eq!(
-                level.map.cast_ray(ray, &RayFilter::default()),
+                level.map.cast_ray(ray, &QueryFilter::default()),
                 Some(hit),
                 "{at}"
             );
             // A filter that only lets floors through (faces opposing a downward move).
             assert_eq!(
-                level.map.cast_ray(ray, &RayFilter::against(Vec2::NEG_Y)),
+                level.map.cast_ray(ray, &QueryFilter::against(Vec2::NEG_Y)),
                 None,
                 "{at}"
             );
@@ -329,7 +329,7 @@ fn ray_up_into_a_ceiling_hits_its_bottom_edge_exactly() {
                 .map
                 .cast_ray(
                     Ray::between(v(x, y - 16.0), v(x, y + 16.0)),
-                    &RayFilter::default(),
+                    &QueryFilter::default(),
                 )
                 .unwrap();
             let at = format!("{} ceiling ({col}, {row})", level.name);

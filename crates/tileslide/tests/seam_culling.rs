@@ -14,7 +14,7 @@ use generators::{rows, tile_chars};
 use proptest::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{
-    ActiveSegment, Cell, Ray, RayFilter, Segment, SegmentFlags, SegmentRef, TileId, TileMap,
+    ActiveSegment, Cell, QueryFilter, Ray, Segment, SegmentFlags, SegmentRef, TileId, TileMap,
     TileSet, TileShape, Vec2,
 };
 
@@ -142,14 +142,14 @@ fn half_height_neighbour_leaves_only_the_uncovered_part_active() {
     let h = m
         .cast_ray(
             Ray::between(v(1.75, 0.25), v(0.5, 0.25)),
-            &RayFilter::default(),
+            &QueryFilter::default(),
         )
         .unwrap();
     assert!(h.point.distance(v(1.0, 0.25)) < 1e-6, "{h:?}");
     assert_eq!(h.normal, RIGHT);
     let all = m.cast_ray_all(
         Ray::between(v(1.75, 0.75), v(0.25, 0.75)),
-        &RayFilter::both_sides(),
+        &QueryFilter::both_sides(),
     );
     assert!(all.is_empty(), "{all:?}");
 }

@@ -7,7 +7,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use proptest::prelude::*;
-use tileslide::{Segment, Vec2, sweep_box_segment};
+use tileslide::{Segment, Vec2, geometry::EndCaps, geometry::sweep_box_segment};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)
@@ -163,7 +163,17 @@ fn agrees(case: Case, tol: f64) -> Result<bool, TestCaseError> {
         segment: (a, b, n),
         caps,
     } = case;
-    let got = sweep_box_segment(c, half, m, &Segment::new(a, b), n, caps);
+    let got = sweep_box_segment(
+        c,
+        half,
+        m,
+        &Segment::new(a, b),
+        n,
+        EndCaps {
+            a: caps[0],
+            b: caps[1],
+        },
+    );
     let slack = 1e-4_f64.max(4.0 * tol);
     match reference(case, tol) {
         Expected::Unclear => return Ok(false),
@@ -280,7 +290,7 @@ proptest! {
         ];
         let hits: Vec<_> = faces
             .iter()
-            .filter_map(|&(a, b, n)| sweep_box_segment(c, half, m, &Segment::new(a, b), n, [true; 2]))
+            .filter_map(|&(a, b, n)| sweep_box_segment(c, half, m, &Segment::new(a, b), n, EndCaps::BOTH))
             .collect();
         let first = hits.iter().map(|h| h.t).fold(f32::INFINITY, f32::min);
         let normals: Vec<Vec2> = hits.iter().filter(|h| h.t == first).map(|h| h.normal).collect();
@@ -351,7 +361,7 @@ fn first_contacts(
     let first = |faces: [(Segment, Vec2); 2]| {
         let mut best: Option<(f32, Vec2)> = None;
         for (segment, normal) in faces {
-            if let Some(hit) = sweep_box_segment(c, half, m, &segment, normal, [true; 2])
+            if let Some(hit) = sweep_box_segment(c, half, m, &segment, normal, EndCaps::BOTH)
                 && best.is_none_or(|(t, _)| hit.t < t)
             {
                 best = Some((hit.t, hit.normal));
@@ -377,7 +387,7 @@ fn a_box_running_into_a_blocks_corner_gets_the_blocks_side_level_or_dipping_in_e
         assert_eq!(hits, [side; 2], "box at {center} moving {motion}");
         // The block's top alone does not claim the contact with its normal.
         let (top, n) = block_faces()[0];
-        let hit = sweep_box_segment(center, half, motion, &top, n, [true; 2]);
+        let hit = sweep_box_segment(center, half, motion, &top, n, EndCaps::BOTH);
         assert!(hit.is_none_or(|h| h.normal == Vec2::NEG_X), "{hit:?}");
     }
 }
@@ -403,12 +413,12 @@ fn a_box_flush_with_a_blocks_top_passes_over_its_corner_moving_level() {
     let [(top, up), (side, left)] = block_faces();
     // The top still is not met (the motion runs along it)...
     assert_eq!(
-        sweep_box_segment(center, half, motion, &top, up, [true; 2]),
+        sweep_box_segment(center, half, motion, &top, up, EndCaps::BOTH),
         None
     );
     // ...and the left side's end point, under the box's bottom, is not a contact either.
     assert_eq!(
-        sweep_box_segment(center, half, motion, &side, left, [true; 2]),
+        sweep_box_segment(center, half, motion, &side, left, EndCaps::BOTH),
         None
     );
 }
@@ -439,7 +449,7 @@ fn a_box_walking_along_a_floor_into_a_ramps_foot_meets_the_ramp() {
         v(4.0, 0.0),
         &ramp,
         n,
-        [false, true],
+        EndCaps { a: false, b: true },
     );
     let hit = hit.expect("the ramp's face");
     assert!((hit.t - 0.5).abs() < 1e-6, "{hit:?}");

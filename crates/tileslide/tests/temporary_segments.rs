@@ -8,8 +8,8 @@
 
 use tileslide::io::ascii;
 use tileslide::{
-    MapError, Owner, Ray, RayFilter, RayHit, Segment, SegmentFlags, SegmentSource, TemporaryError,
-    TemporarySegment, TileMap, Vec2,
+    MapError, Owner, QueryFilter, Ray, RayHit, Segment, SegmentFlags, SegmentSource,
+    TemporaryError, TemporarySegment, TileMap, Vec2,
 };
 
 fn v(x: f32, y: f32) -> Vec2 {
@@ -44,7 +44,8 @@ fn along() -> Ray {
 fn owner_of(hit: &RayHit) -> Option<Owner> {
     match hit.source {
         SegmentSource::Temporary { owner, .. } => Some(owner),
-        SegmentSource::Tile { .. } => None,
+        // Tile segments, and any other source, have no owner.
+        _ => None,
     }
 }
 
@@ -52,11 +53,11 @@ fn owner_of(hit: &RayHit) -> Option<Owner> {
 fn temporary_segment_in_front_of_a_wall_is_hit_first() {
     let mut m = corridor();
     assert_near(
-        m.cast_ray(along(), &RayFilter::default()).unwrap().point,
+        m.cast_ray(along(), &QueryFilter::default()).unwrap().point,
         v(6.0, 1.5),
     );
     m.add_temporary(door(3.0, 7)).unwrap();
-    let hit = m.cast_ray(along(), &RayFilter::default()).unwrap();
+    let hit = m.cast_ray(along(), &QueryFilter::default()).unwrap();
     assert_near(hit.point, v(3.0, 1.5));
     assert_eq!(hit.normal, v(-1.0, 0.0));
     assert_eq!(hit.flags, SegmentFlags::SOLID);
@@ -76,11 +77,11 @@ fn temporary_segment_in_front_of_a_wall_is_hit_first() {
 fn temporary_segment_behind_a_wall_is_not_the_nearest_hit() {
     let mut m = corridor();
     m.add_temporary(door(6.5, 7)).unwrap();
-    let hit = m.cast_ray(along(), &RayFilter::default()).unwrap();
+    let hit = m.cast_ray(along(), &QueryFilter::default()).unwrap();
     assert_near(hit.point, v(6.0, 1.5));
     assert_eq!(owner_of(&hit), None);
     // cast_ray_all sees both, wall first.
-    let all = m.cast_ray_all(along(), &RayFilter::default());
+    let all = m.cast_ray_all(along(), &QueryFilter::default());
     assert_eq!(all.len(), 2);
     assert_eq!(owner_of(&all[0]), None);
     assert_eq!(owner_of(&all[1]), Some(Owner(7)));
@@ -92,19 +93,19 @@ fn temporary_segment_is_excluded_for_its_owner() {
     m.add_temporary(door(3.0, 7)).unwrap();
     m.add_temporary(door(4.0, 8)).unwrap();
     let hit = m
-        .cast_ray(along(), &RayFilter::default().excluding(Owner(7)))
+        .cast_ray(along(), &QueryFilter::default().excluding(Owner(7)))
         .unwrap();
     assert_eq!(owner_of(&hit), Some(Owner(8)));
     let hit = m
-        .cast_ray(along(), &RayFilter::default().excluding(Owner(8)))
+        .cast_ray(along(), &QueryFilter::default().excluding(Owner(8)))
         .unwrap();
     assert_eq!(owner_of(&hit), Some(Owner(7)));
     // Excluding someone else changes nothing.
     let hit = m
-        .cast_ray(along(), &RayFilter::default().excluding(Owner(99)))
+        .cast_ray(along(), &QueryFilter::default().excluding(Owner(99)))
         .unwrap();
     assert_eq!(owner_of(&hit), Some(Owner(7)));
-    let all = m.cast_ray_all(along(), &RayFilter::default().excluding(Owner(7)));
+    let all = m.cast_ray_all(along(), &QueryFilter::default().excluding(Owner(7)));
     assert!(all.iter().all(|h| owner_of(h) != Some(Owner(7))));
     assert_eq!(all.len(), 2);
 }
@@ -117,12 +118,12 @@ fn cleared_temporary_segments_are_gone() {
     m.clear_temporaries_of(Owner(7));
     assert_eq!(m.temporaries().len(), 1);
     assert_eq!(
-        owner_of(&m.cast_ray(along(), &RayFilter::default()).unwrap()),
+        owner_of(&m.cast_ray(along(), &QueryFilter::default()).unwrap()),
         Some(Owner(8))
     );
     m.clear_temporaries();
     assert!(m.temporaries().is_empty());
-    let hit = m.cast_ray(along(), &RayFilter::default()).unwrap();
+    let hit = m.cast_ray(along(), &QueryFilter::default()).unwrap();
     assert_eq!(owner_of(&hit), None);
     assert_near(hit.point, v(6.0, 1.5));
 }
@@ -139,14 +140,17 @@ fn temporary_segment_outside_the_map_is_still_hit() {
     };
     m.add_temporary(platform).unwrap();
     let down = Ray::between(v(-15.0, -8.0), v(-15.0, -2.0));
-    let hit = m.cast_ray(down, &RayFilter::default()).unwrap();
+    let hit = m.cast_ray(down, &QueryFilter::default()).unwrap();
     assert_eq!(hit.t, 0.5);
     assert_eq!(owner_of(&hit), Some(Owner(1)));
-    assert_eq!(m.cast_ray_all(down, &RayFilter::default()).len(), 1);
+    assert_eq!(m.cast_ray_all(down, &QueryFilter::default()).len(), 1);
     // From below, a one-way temporary lets the ray through, like a `=` tile.
     assert!(
-        m.cast_ray(Ray::between(down.end(), down.origin), &RayFilter::default())
-            .is_none()
+        m.cast_ray(
+            Ray::between(down.end(), down.origin),
+            &QueryFilter::default()
+        )
+        .is_none()
     );
 }
 
@@ -156,20 +160,20 @@ fn temporary_segments_follow_the_face_and_mask_rules() {
     m.add_temporary(door(3.0, 7)).unwrap();
     // From the far side, the door's back face: ignored by default, hit with both sides.
     let back = Ray::between(v(5.5, 1.5), v(0.5, 1.5));
-    assert!(m.cast_ray(back, &RayFilter::default()).is_none());
-    let hit = m.cast_ray(back, &RayFilter::both_sides()).unwrap();
+    assert!(m.cast_ray(back, &QueryFilter::default()).is_none());
+    let hit = m.cast_ray(back, &QueryFilter::both_sides()).unwrap();
     assert_eq!(owner_of(&hit), Some(Owner(7)));
     // A mask without SOLID skips it (and the wall).
-    let one_way = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
+    let one_way = QueryFilter::default().with_mask(SegmentFlags::ONE_WAY);
     assert!(m.cast_ray(along(), &one_way).is_none());
     // The direction filter applies to it too.
     assert!(
-        m.cast_ray(along(), &RayFilter::against(v(0.0, 1.0)))
+        m.cast_ray(along(), &QueryFilter::against(v(0.0, 1.0)))
             .is_none()
     );
     assert_eq!(
         owner_of(
-            &m.cast_ray(along(), &RayFilter::against(v(1.0, 0.0)))
+            &m.cast_ray(along(), &QueryFilter::against(v(1.0, 0.0)))
                 .unwrap()
         ),
         Some(Owner(7))
@@ -181,7 +185,7 @@ fn temporary_segment_on_a_tile_face_wins_the_tie() {
     // Documented: on equal t, temporary segments come first.
     let mut m = corridor();
     m.add_temporary(door(6.0, 3)).unwrap();
-    let hit = m.cast_ray(along(), &RayFilter::default()).unwrap();
+    let hit = m.cast_ray(along(), &QueryFilter::default()).unwrap();
     assert_near(hit.point, v(6.0, 1.5));
     assert_eq!(owner_of(&hit), Some(Owner(3)));
 }
@@ -194,7 +198,7 @@ fn temporary_normal_is_normalised_when_added() {
     m.add_temporary(d).unwrap();
     assert_eq!(m.temporaries()[0].normal, v(-1.0, 0.0));
     assert_eq!(
-        m.cast_ray(along(), &RayFilter::default()).unwrap().normal,
+        m.cast_ray(along(), &QueryFilter::default()).unwrap().normal,
         v(-1.0, 0.0)
     );
 }
@@ -265,7 +269,7 @@ fn huge_but_finite_normal_is_normalised_not_zeroed() {
 #[test]
 fn temporary_segment_beyond_max_coord_is_refused_naming_the_point() {
     let mut m = corridor();
-    let far = tileslide::MAX_COORD * 2.0;
+    let far = tileslide::limits::MAX_COORD * 2.0;
     for (a, b) in [
         (v(3.0, 1.0), v(far, 1.0)),
         (v(-far, 1.0), v(3.0, 1.0)),
@@ -273,7 +277,7 @@ fn temporary_segment_beyond_max_coord_is_refused_naming_the_point() {
     ] {
         let mut bad = door(3.0, 8);
         bad.segment = Segment::new(a, b);
-        let p = if a.x.abs().max(a.y.abs()) > tileslide::MAX_COORD {
+        let p = if a.x.abs().max(a.y.abs()) > tileslide::limits::MAX_COORD {
             a
         } else {
             b
@@ -293,10 +297,13 @@ fn temporary_segment_beyond_max_coord_is_refused_naming_the_point() {
     assert!(m.temporaries().is_empty(), "nothing refused is kept");
     // At MAX_COORD exactly it is accepted, and a ray from afar along it hits it.
     let mut edge = door(3.0, 8);
-    edge.segment = Segment::new(v(tileslide::MAX_COORD, -1.0), v(tileslide::MAX_COORD, 4.0));
+    edge.segment = Segment::new(
+        v(tileslide::limits::MAX_COORD, -1.0),
+        v(tileslide::limits::MAX_COORD, 4.0),
+    );
     m.add_temporary(edge).unwrap();
     let ray = Ray::between(v(0.5, 1.5), v(3e38, 1.5));
-    let hits = m.cast_ray_all(ray, &RayFilter::default());
+    let hits = m.cast_ray_all(ray, &QueryFilter::default());
     assert!(
         hits.iter().any(|h| owner_of(h) == Some(Owner(8))),
         "{hits:?}"

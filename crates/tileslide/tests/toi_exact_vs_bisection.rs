@@ -18,7 +18,10 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use proptest::prelude::*;
-use tileslide::{Segment, SweepHit, Vec2, sweep_circle_circle, sweep_circle_segment};
+use tileslide::{
+    Segment, Vec2, geometry::EndCaps, geometry::SweepHit, geometry::sweep_circle_circle,
+    geometry::sweep_circle_segment,
+};
 
 fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)
@@ -143,7 +146,7 @@ proptest! {
             (radius - wall.distance_squared_to(p).sqrt()).min(front)
         };
         prop_assume!(depth(start) < -SLACK);
-        let exact = sweep_circle_segment(start, radius, motion, &wall, normal, [true; 2]);
+        let exact = sweep_circle_segment(start, radius, motion, &wall, normal, EndCaps::BOTH);
         compare(start, motion, radius, halvings, depth, exact)?;
     }
 }
@@ -162,12 +165,12 @@ fn bisection_passes_through_a_thin_wall_that_the_exact_sweep_stops_at() {
     // A move to x = 6: clear at its end, so the bisection sees nothing.
     let through = v(4.0, 0.0);
     assert_eq!(bisect(4, |t| inside(start + through * t)), None);
-    let hit = sweep_circle_segment(start, radius, through, &face, normal, [true; 2]).unwrap();
+    let hit = sweep_circle_segment(start, radius, through, &face, normal, EndCaps::BOTH).unwrap();
     assert!((start + through * hit.t).x <= 4.0 - radius + 1e-6);
     // A move to x = 4, into the wall: the bisection stops up to 1/16 of the move short.
     let into = v(2.0, 0.0);
     let t = bisect(4, |t| inside(start + into * t)).unwrap();
-    let hit = sweep_circle_segment(start, radius, into, &face, normal, [true; 2]).unwrap();
+    let hit = sweep_circle_segment(start, radius, into, &face, normal, EndCaps::BOTH).unwrap();
     assert!(
         t <= hit.t && hit.t - t <= 1.0 / 16.0,
         "bisection {t}, exact {}",

@@ -33,7 +33,7 @@ pub use tileslide_broad::TileslideBroad;
 
 use std::time::Instant;
 
-use tileslide::Broadphase;
+use tileslide::broadphase::PairMethod;
 use tileslide_scenes::{BroadCircle, broad_pairs_reference, scene_broad, update_broad};
 
 /// Every contender of `tileslide bench broad`, empty, in report order: tileslide's grid and
@@ -41,8 +41,8 @@ use tileslide_scenes::{BroadCircle, broad_pairs_reference, scene_broad, update_b
 #[must_use]
 pub fn contenders() -> Vec<Box<dyn BroadContender>> {
     vec![
-        Box::new(TileslideBroad::new(Broadphase::UniformGrid)),
-        Box::new(TileslideBroad::new(Broadphase::SweepAndPrune)),
+        Box::new(TileslideBroad::new(PairMethod::UniformGrid)),
+        Box::new(TileslideBroad::new(PairMethod::SweepAndPrune)),
         Box::new(ParryBvhBroad::new()),
         Box::new(RapierBroad::new()),
     ]

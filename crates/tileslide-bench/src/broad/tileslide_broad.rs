@@ -1,18 +1,18 @@
-//! tileslide's contenders: its [`PairFinder`] with each [`Broadphase`], fed the circles'
+//! tileslide's contenders: its [`PairFinder`] with each [`PairMethod`], fed the circles'
 //! boxes every update.
 
-use tileslide::{Aabb, Broadphase, PairFinder};
+use tileslide::{Aabb, broadphase::PairFinder, broadphase::PairMethod};
 use tileslide_scenes::{BroadCircle, broad_boxes};
 
 use super::{BroadContender, normalized_pairs};
 
-/// tileslide's [`PairFinder`] with one [`Broadphase`]: every update converts the circles to
+/// tileslide's [`PairFinder`] with one [`PairMethod`]: every update converts the circles to
 /// boxes ([`broad_boxes`], the same f32 boxes every contender uses) and asks the finder for
 /// every overlapping pair. The finder keeps what it can between updates (its buffers, and the
-/// sweep order of [`Broadphase::SweepAndPrune`]); nothing else is carried over.
+/// sweep order of [`PairMethod::SweepAndPrune`]); nothing else is carried over.
 #[derive(Clone, Debug)]
 pub struct TileslideBroad {
-    kind: Broadphase,
+    kind: PairMethod,
     finder: PairFinder,
     /// Scratch: the circles' boxes, refilled every update.
     boxes: Vec<Aabb>,
@@ -23,7 +23,7 @@ pub struct TileslideBroad {
 impl TileslideBroad {
     /// An empty contender using `kind`, to be [built](BroadContender::build).
     #[must_use]
-    pub fn new(kind: Broadphase) -> Self {
+    pub fn new(kind: PairMethod) -> Self {
         Self {
             kind,
             finder: PairFinder::default(),
@@ -34,10 +34,12 @@ impl TileslideBroad {
 
     /// The name a contender using `kind` is reported under.
     #[must_use]
-    pub fn name_of(kind: Broadphase) -> &'static str {
+    pub fn name_of(kind: PairMethod) -> &'static str {
         match kind {
-            Broadphase::UniformGrid => "tileslide-grid",
-            Broadphase::SweepAndPrune => "tileslide-sap",
+            PairMethod::UniformGrid => "tileslide-grid",
+            PairMethod::SweepAndPrune => "tileslide-sap",
+            // A method added to tileslide after this benchmark was written.
+            _ => "tileslide",
         }
     }
 }

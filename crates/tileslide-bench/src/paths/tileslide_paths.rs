@@ -1,5 +1,6 @@
-//! tileslide's contender: [`NavGrid::find_path`] on its own copy of the scene's grid.
+//! tileslide's contender: [`NavGrid::find_path`] on the scene's grid.
 
+#[cfg(doc)]
 use tileslide::NavGrid;
 
 use super::{PathContender, PathQuery, PathScene, PathsError};
@@ -9,8 +10,6 @@ use super::{PathContender, PathQuery, PathScene, PathsError};
 /// checked with the map's circle cast), as a game calls it.
 #[derive(Clone, Debug)]
 pub struct TileslidePaths {
-    /// A copy of the scene's grid: `find_path` needs it mutable for its search scratch.
-    nav: NavGrid,
     radius: f32,
 }
 
@@ -18,11 +17,10 @@ impl TileslidePaths {
     /// The name it is reported under.
     pub const NAME: &'static str = "tileslide";
 
-    /// The contender for `scene`, with a copy of its navigation grid.
+    /// The contender for `scene`, searching its navigation grid.
     #[must_use]
     pub fn new(scene: &PathScene) -> Self {
         Self {
-            nav: scene.nav().clone(),
             radius: scene.nav().max_radius(),
         }
     }
@@ -39,8 +37,8 @@ impl PathContender for TileslidePaths {
     }
 
     fn find(&mut self, scene: &PathScene, query: &PathQuery) -> Result<Option<f32>, PathsError> {
-        Ok(self
-            .nav
+        Ok(scene
+            .nav()
             .find_path(scene.map(), query.from, query.to, self.radius)?
             .map(|path| path.length()))
     }

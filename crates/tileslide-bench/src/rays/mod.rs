@@ -24,7 +24,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use parry2d::query::Ray as ParryRay;
-use tileslide::{Ray, RayFilter, RayHit, TileMap};
+use tileslide::{QueryFilter, Ray, RayHit, TileMap};
 use tileslide_scenes::{Scene, SceneRay, TileMapError, scene_rays};
 
 use crate::parry_vectors::to_parry;
@@ -159,7 +159,7 @@ pub fn run_rays(
         .collect();
 
     let batch: Vec<Option<f32>> = map
-        .cast_rays(&ours, &RayFilter::default())
+        .cast_rays(&ours, &QueryFilter::default())
         .iter()
         .zip(&rays)
         .map(|(hit, ray)| hit.map(|h| h.t * ray.length))
@@ -214,12 +214,12 @@ pub fn run_rays(
 
 #[inline(never)]
 fn cast_tileslide(map: &TileMap, ray: Ray) -> Option<f32> {
-    map.cast_ray(ray, &RayFilter::default()).map(|h| h.t)
+    map.cast_ray(ray, &QueryFilter::default()).map(|h| h.t)
 }
 
 #[inline(never)]
 fn pass_tileslide(map: &TileMap, rays: &[Ray], hits: &mut Vec<Option<RayHit>>) -> f32 {
-    let filter = RayFilter::default();
+    let filter = QueryFilter::default();
     let mut sum = 0.0;
     for block in rays.chunks(RAYS_PER_CALL) {
         map.cast_rays_into(block, &filter, hits);
@@ -230,7 +230,7 @@ fn pass_tileslide(map: &TileMap, rays: &[Ray], hits: &mut Vec<Option<RayHit>>) -
 
 #[inline(never)]
 fn pass_tileslide_single(map: &TileMap, rays: &[Ray]) -> f32 {
-    let filter = RayFilter::default();
+    let filter = QueryFilter::default();
     let mut sum = 0.0;
     for ray in rays {
         if let Some(hit) = map.cast_ray(*ray, &filter) {

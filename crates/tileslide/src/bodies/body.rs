@@ -5,6 +5,7 @@ use glam::Vec2;
 
 use super::error::BodyError;
 use crate::geometry::{Circle, MAX_COORD, in_range};
+use crate::owner::Owner;
 use crate::tiles::SegmentFlags;
 
 /// A body's shape: circles at fixed offsets from the body's position (a compound body, for
@@ -24,9 +25,31 @@ use crate::tiles::SegmentFlags;
 /// assert!(BodyShape::circle(0.0).is_err());
 /// # Ok::<(), tileslide::BodyError>(())
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Debug, PartialEq)]
+// Read through `compound`, so a saved shape is checked as a built one is.
+#[cfg_attr(
+    feature = "serde",
+    serde(try_from = "Vec<Circle>", into = "Vec<Circle>")
+)]
 pub struct BodyShape {
     circles: Vec<Circle>,
+}
+
+impl TryFrom<Vec<Circle>> for BodyShape {
+    type Error = BodyError;
+
+    /// [`BodyShape::compound`] of the circles.
+    fn try_from(circles: Vec<Circle>) -> Result<Self, BodyError> {
+        Self::compound(circles)
+    }
+}
+
+impl From<BodyShape> for Vec<Circle> {
+    /// The shape's circles, offsets from the body's position.
+    fn from(shape: BodyShape) -> Self {
+        shape.circles
+    }
 }
 
 impl BodyShape {
@@ -99,6 +122,7 @@ impl BodyShape {
 /// assert!(ghost.collides(&ghost));
 /// assert!(hero.collides(&hero));
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BodyFilter {
     /// The groups the body belongs to (bits).
@@ -131,12 +155,13 @@ impl BodyFilter {
 /// Everything needed to add a body.
 ///
 /// ```
-/// # use tileslide::{BodyDesc, BodyFilter, BodyShape, Vec2};
-/// let desc = BodyDesc::new(Vec2::new(3.5, 2.5), BodyShape::circle(0.3)?).with_user_data(42);
-/// assert_eq!(desc.user_data, 42);
+/// # use tileslide::{BodyDesc, BodyFilter, BodyShape, Owner, Vec2};
+/// let desc = BodyDesc::new(Vec2::new(3.5, 2.5), BodyShape::circle(0.3)?).with_owner(Owner(42));
+/// assert_eq!(desc.owner, Owner(42));
 /// assert_eq!(desc.filter, BodyFilter::default());
 /// # Ok::<(), tileslide::BodyError>(())
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Debug, PartialEq)]
 pub struct BodyDesc {
     /// Where the body is.
@@ -145,19 +170,19 @@ pub struct BodyDesc {
     pub shape: BodyShape,
     /// What it collides with.
     pub filter: BodyFilter,
-    /// The caller's data (an entity id, say); tileslide never reads it.
-    pub user_data: u64,
+    /// The caller's entity; tileslide never reads it.
+    pub owner: Owner,
 }
 
 impl BodyDesc {
-    /// A body at `position` with `shape`, the default filter and user data 0.
+    /// A body at `position` with `shape`, the default filter and owner 0.
     #[must_use]
     pub fn new(position: Vec2, shape: BodyShape) -> Self {
         Self {
             position,
             shape,
             filter: BodyFilter::default(),
-            user_data: 0,
+            owner: Owner(0),
         }
     }
 
@@ -167,10 +192,10 @@ impl BodyDesc {
         Self { filter, ..self }
     }
 
-    /// The same, with `user_data`.
+    /// The same, with `owner`.
     #[must_use]
-    pub fn with_user_data(self, user_data: u64) -> Self {
-        Self { user_data, ..self }
+    pub fn with_owner(self, owner: Owner) -> Self {
+        Self { owner, ..self }
     }
 }
 
@@ -180,7 +205,7 @@ pub struct Body {
     pub(super) position: Vec2,
     pub(super) shape: BodyShape,
     pub(super) filter: BodyFilter,
-    pub(super) user_data: u64,
+    pub(super) owner: Owner,
     /// The move the caller proposed for this step.
     pub(super) proposed: Vec2,
     /// The move `resolve` settled on (the proposed one until then).
@@ -194,7 +219,7 @@ impl Body {
             position: desc.position,
             shape: desc.shape,
             filter: desc.filter,
-            user_data: desc.user_data,
+            owner: desc.owner,
             proposed: Vec2::ZERO,
             resolved: Vec2::ZERO,
         }
@@ -218,10 +243,10 @@ impl Body {
         self.filter
     }
 
-    /// The caller's data.
+    /// The caller's entity.
     #[must_use]
-    pub fn user_data(&self) -> u64 {
-        self.user_data
+    pub fn owner(&self) -> Owner {
+        self.owner
     }
 
     /// The move proposed for this step (zero: the body is an obstacle this step).

@@ -2,11 +2,13 @@
 //! gap), and what it reports.
 
 use super::error::BodyError;
-use crate::broadphase::Broadphase;
+use crate::broadphase::PairMethod;
 use crate::geometry::MAX_COORD;
 
 /// What happens to the blocked part of a move.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum SlideMode {
     /// The write-up's rule: the blocked remainder keeps its full length and is redirected
     /// along the contact tangent, to the side its projection points. The default.
@@ -33,6 +35,7 @@ pub enum SlideMode {
 /// let negative = ResolveConfig { gap: -1.0, ..pixels };
 /// assert_eq!(negative.validate(), Err(BodyError::BadConfig { field: "gap", value: -1.0 }));
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ResolveConfig {
     /// Slide rule.
@@ -42,7 +45,7 @@ pub struct ResolveConfig {
     /// [`Self::MAX_PASSES`].
     pub passes: u32,
     /// Pair finding.
-    pub broadphase: Broadphase,
+    pub broadphase: PairMethod,
     /// Separation that moving bodies keep from each other and from walls, in map units.
     /// Bodies stop between one half and one times this far from contact, so rounding never
     /// leaves them overlapping. Default `1e-3`, a thousandth of a cell of side 1: scale it
@@ -90,19 +93,20 @@ impl Default for ResolveConfig {
         Self {
             slide: SlideMode::FullLength,
             passes: 4,
-            broadphase: Broadphase::UniformGrid,
+            broadphase: PairMethod::UniformGrid,
             gap: 1e-3,
         }
     }
 }
 
 /// What a [`resolve`](crate::Bodies::resolve) did.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ResolveReport {
     /// Bodies with a non-zero proposed move.
     pub moving: usize,
-    /// Contacts met (each sweep that stopped at something counts once).
-    pub contacts: usize,
+    /// How many contacts were met (each sweep that stopped at something counts once).
+    pub contact_count: usize,
     /// Bodies whose remainder was still blocked after the last pass, and was cut at its
     /// first contact.
     pub cut_short: usize,

@@ -8,6 +8,7 @@ use crate::geometry::MAX_COORD;
 
 /// Errors from [`Bodies`](crate::Bodies) calls, body shapes and resolve settings.
 #[derive(Clone, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum BodyError {
     /// The handle's body was removed.
     #[error("stale body handle (slot {}, generation {}): the body was removed", .0.index, .0.generation)]

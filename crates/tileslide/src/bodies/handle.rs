@@ -3,6 +3,7 @@
 /// A body's handle. Handles are generational: once a body is removed its handle is stale
 /// for good, even after its slot is reused, and every call with it returns
 /// [`BodyError::StaleHandle`](crate::BodyError::StaleHandle).
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct BodyHandle {
     pub(super) index: u32,

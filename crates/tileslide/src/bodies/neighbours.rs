@@ -26,7 +26,7 @@
 //! all-pairs search would give; the nearest contact is chosen by time and then by index,
 //! so the order changes no result.
 
-use crate::broadphase::{Broadphase, PairFinder};
+use crate::broadphase::{PairFinder, PairMethod};
 use crate::geometry::{Aabb, Circle};
 
 /// How far the boxes the candidates are found for reach past the reach boxes, in cells.
@@ -47,7 +47,7 @@ pub(super) struct Neighbours {
     /// The grown boxes the rows were found for, and with which broadphase; `None` once
     /// forgotten.
     grown: Vec<Aabb>,
-    found_with: Option<Broadphase>,
+    found_with: Option<PairMethod>,
 }
 
 impl Neighbours {
@@ -63,7 +63,7 @@ impl Neighbours {
     /// smaller cell side, the unit of the margin.
     pub fn update(
         &mut self,
-        kind: Broadphase,
+        kind: PairMethod,
         reach: &[Circle],
         boxes: &[Aabb],
         cell: f32,
@@ -140,7 +140,7 @@ mod tests {
     /// both rows, whichever broadphase found the candidates.
     #[test]
     fn rows_are_exactly_the_overlapping_pairs_call_after_call() {
-        for kind in [Broadphase::UniformGrid, Broadphase::SweepAndPrune] {
+        for kind in [PairMethod::UniformGrid, PairMethod::SweepAndPrune] {
             let mut state = 0x1234_5678_9abc_def0_u64;
             let mut rand = || {
                 state = state
@@ -192,7 +192,7 @@ mod tests {
         let boxes = discs.map(|d| d.aabb());
         let mut neighbours = Neighbours::default();
         neighbours.update(
-            Broadphase::UniformGrid,
+            PairMethod::UniformGrid,
             &discs,
             &boxes,
             1.0,
@@ -203,7 +203,7 @@ mod tests {
         // The same boxes, but the bodies no longer collide: only a forgotten list knows.
         neighbours.forget();
         neighbours.update(
-            Broadphase::UniformGrid,
+            PairMethod::UniformGrid,
             &discs,
             &boxes,
             1.0,

@@ -133,7 +133,7 @@ impl Resolver {
             let end = self.position[b];
             body.resolved = end - start;
             report.moving += 1;
-            let contacts = report.contacts - before.contacts;
+            let contacts = report.contact_count - before.contact_count;
             let cut_short = report.cut_short > before.cut_short;
             self.settled
                 .remember(b, start, motion, end, contacts, cut_short);
@@ -247,7 +247,7 @@ impl Resolver {
                 self.position[bi] += remaining;
                 return;
             };
-            report.contacts += 1;
+            report.contact_count += 1;
             // A safe part shorter than a fraction of the gap is not taken: rounding the
             // position can lose one coordinate of so small a step (at x = 232 the float
             // spacing is 1.5e-5) and keep the other, and a body pressed into a wall and a

@@ -9,6 +9,7 @@ use super::error::BodyError;
 use super::handle::BodyHandle;
 use super::resolver::Resolver;
 use crate::geometry::in_range;
+use crate::owner::Owner;
 use crate::tiles::TileMap;
 
 #[derive(Clone, Debug)]
@@ -89,7 +90,7 @@ impl Bodies {
     ///
     /// # Errors
     /// [`BodyError::NonFinite`] for a non-finite position, [`BodyError::OutOfRange`] for
-    /// one beyond [`MAX_COORD`](crate::MAX_COORD), [`BodyError::TooMany`] when every slot
+    /// one beyond [`MAX_COORD`](crate::limits::MAX_COORD), [`BodyError::TooMany`] when every slot
     /// is taken.
     pub fn add(&mut self, desc: BodyDesc) -> Result<BodyHandle, BodyError> {
         check_position(desc.position)?;
@@ -198,14 +199,14 @@ impl Bodies {
     /// slide around it).
     ///
     /// The move's end point (the body's position plus the move) must be within
-    /// [`MAX_COORD`](crate::MAX_COORD), so no move is longer than `2√2 · MAX_COORD` and no
+    /// [`MAX_COORD`](crate::limits::MAX_COORD), so no move is longer than `2√2 · MAX_COORD` and no
     /// arithmetic of the resolve overflows. Bodies stay within `MAX_COORD` for good:
     /// `resolve` stops a body rather than slide it past (see [`resolve`](Self::resolve)).
     ///
     /// # Errors
     /// [`BodyError::StaleHandle`], [`BodyError::NonFinite`] for a NaN or infinite move, or
     /// [`BodyError::OutOfRange`] for a move whose end point is beyond
-    /// [`MAX_COORD`](crate::MAX_COORD); the body's move is then unchanged.
+    /// [`MAX_COORD`](crate::limits::MAX_COORD); the body's move is then unchanged.
     pub fn propose(&mut self, handle: BodyHandle, motion: Vec2) -> Result<(), BodyError> {
         finite("move", motion)?;
         let body = self.get_mut(handle)?;
@@ -219,7 +220,7 @@ impl Bodies {
     ///
     /// # Errors
     /// [`BodyError::StaleHandle`], [`BodyError::NonFinite`] for a non-finite position, or
-    /// [`BodyError::OutOfRange`] for a position beyond [`MAX_COORD`](crate::MAX_COORD) or
+    /// [`BodyError::OutOfRange`] for a position beyond [`MAX_COORD`](crate::limits::MAX_COORD) or
     /// one from which the proposed move would end beyond it; the body is then where it was.
     pub fn set_position(&mut self, handle: BodyHandle, position: Vec2) -> Result<(), BodyError> {
         check_position(position)?;
@@ -239,12 +240,12 @@ impl Bodies {
         Ok(())
     }
 
-    /// Changes a body's user data.
+    /// Changes a body's owner.
     ///
     /// # Errors
     /// [`BodyError::StaleHandle`].
-    pub fn set_user_data(&mut self, handle: BodyHandle, user_data: u64) -> Result<(), BodyError> {
-        self.get_mut(handle)?.user_data = user_data;
+    pub fn set_owner(&mut self, handle: BodyHandle, owner: Owner) -> Result<(), BodyError> {
+        self.get_mut(handle)?.owner = owner;
         Ok(())
     }
 
@@ -261,7 +262,7 @@ impl Bodies {
     /// changing a filter or the settings, or passing another map makes the next call resolve
     /// every moving body again.
     ///
-    /// Every body stays within [`MAX_COORD`](crate::MAX_COORD): positions and the end
+    /// Every body stays within [`MAX_COORD`](crate::limits::MAX_COORD): positions and the end
     /// points of proposed moves are refused beyond it, and a slide that would end beyond it
     /// is not taken (the body stops at the contact, as with
     /// [`SlideMode::Stop`](crate::SlideMode::Stop)).
@@ -299,7 +300,7 @@ fn finite(what: &'static str, value: Vec2) -> Result<(), BodyError> {
     }
 }
 
-/// A body's position: finite and within [`MAX_COORD`](crate::MAX_COORD).
+/// A body's position: finite and within [`MAX_COORD`](crate::limits::MAX_COORD).
 fn check_position(position: Vec2) -> Result<(), BodyError> {
     finite("position", position)?;
     in_range(position)
@@ -311,7 +312,7 @@ fn check_position(position: Vec2) -> Result<(), BodyError> {
 }
 
 /// Where a body at `position` ends after a (finite) `motion`: within
-/// [`MAX_COORD`](crate::MAX_COORD).
+/// [`MAX_COORD`](crate::limits::MAX_COORD).
 fn check_end(position: Vec2, motion: Vec2) -> Result<(), BodyError> {
     let end = position + motion;
     in_range(end).then_some(()).ok_or(BodyError::OutOfRange {

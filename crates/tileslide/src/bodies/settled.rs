@@ -101,7 +101,7 @@ impl Settled {
         let stays = m.stayed && !self.disturbed[b] && m.start == start && m.motion == motion;
         if stays {
             report.moving += 1;
-            report.contacts += m.contacts as usize;
+            report.contact_count += m.contacts as usize;
             report.cut_short += usize::from(m.cut_short);
         }
         stays
@@ -176,7 +176,7 @@ mod tests {
         assert!(settled.stays(1, positions[1], push, &mut report));
         let counted = ResolveReport {
             moving: 2,
-            contacts: 4,
+            contact_count: 4,
             cut_short: 1,
         };
         assert_eq!(report, counted);

@@ -1,13 +1,18 @@
-//! Broadphase: the pairs of boxes that overlap (closed boxes: touching counts), each once,
-//! found with a uniform grid or by sweep and prune. Both are checked against the all-pairs
+//! The broadphase: every pair of boxes that overlap (closed boxes: touching counts), each
+//! once. A [`PairFinder`] keeps its buffers between calls; a [`PairMethod`] chooses how it
+//! looks: a uniform grid or sweep and prune. Both are checked against the all-pairs
 //! reference by model tests, call after call on moving boxes.
 //!
-//! [`Bodies`](crate::Bodies) feeds it the regions its circles can reach during a step, and
-//! the hit volumes their objects' swept bounding circles, so a pair that can meet is never
-//! missed.
+//! The crate uses it for its own pairs: [`Bodies`](crate::Bodies) feeds it the regions its
+//! circles can reach during a step (choosing the method with
+//! [`ResolveConfig::broadphase`](crate::ResolveConfig::broadphase)), and
+//! [`HitWorld`](crate::HitWorld) its objects' swept bounding circles, so a pair that can meet
+//! is never missed. A game calls it directly only for pairs of its own: its entities'
+//! boxes, say, to find which may interact.
 //!
 //! ```
-//! use tileslide::{Aabb, Broadphase, PairFinder, Vec2};
+//! use tileslide::broadphase::{PairFinder, PairMethod};
+//! use tileslide::{Aabb, Vec2};
 //! let boxes = [
 //!     Aabb::from_corners(Vec2::new(0.0, 0.0), Vec2::new(1.0, 1.0)),
 //!     Aabb::from_corners(Vec2::new(1.0, 0.5), Vec2::new(2.0, 1.5)), // touches the first
@@ -15,7 +20,7 @@
 //! ];
 //! let mut finder = PairFinder::default();
 //! let mut pairs = Vec::new();
-//! finder.find(Broadphase::SweepAndPrune, &boxes, &mut pairs);
+//! finder.find(PairMethod::SweepAndPrune, &boxes, &mut pairs);
 //! assert_eq!(pairs, [(0, 1)]);
 //! ```
 
@@ -31,10 +36,12 @@ use crate::geometry::Aabb;
 use grid::GridPairs;
 use sweep::SweepPairs;
 
-/// Which broadphase finds the pairs of boxes: bodies that may meet during a step, objects
-/// whose hit volumes may touch.
+/// How a [`PairFinder`] finds the pairs of boxes: bodies that may meet during a step,
+/// objects whose hit volumes may touch.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Broadphase {
+#[non_exhaustive]
+pub enum PairMethod {
     /// A uniform grid sized to the largest box: the right choice when boxes are of similar
     /// size. The default.
     #[default]
@@ -63,10 +70,10 @@ impl PairFinder {
     /// `±f32::MAX`: the boxes are only compared, and the grid's and bands' sizes are
     /// computed so that no overflow can lose a pair), and a few boxes far from the others
     /// cost no more than near ones.
-    pub fn find(&mut self, kind: Broadphase, boxes: &[Aabb], pairs: &mut Vec<(u32, u32)>) {
-        match kind {
-            Broadphase::UniformGrid => self.grid.find(boxes, pairs),
-            Broadphase::SweepAndPrune => self.sweep.find(boxes, pairs),
+    pub fn find(&mut self, method: PairMethod, boxes: &[Aabb], pairs: &mut Vec<(u32, u32)>) {
+        match method {
+            PairMethod::UniformGrid => self.grid.find(boxes, pairs),
+            PairMethod::SweepAndPrune => self.sweep.find(boxes, pairs),
         }
     }
 }
@@ -198,7 +205,7 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
-    const KINDS: [Broadphase; 2] = [Broadphase::UniformGrid, Broadphase::SweepAndPrune];
+    const KINDS: [PairMethod; 2] = [PairMethod::UniformGrid, PairMethod::SweepAndPrune];
 
     fn brute(boxes: &[Aabb]) -> Vec<(u32, u32)> {
         let mut out = Vec::new();
@@ -213,7 +220,7 @@ mod tests {
     }
 
     /// The pairs `finder` finds, checked to be `(i, j)` with `i < j`, sorted.
-    fn found(finder: &mut PairFinder, kind: Broadphase, boxes: &[Aabb]) -> Vec<(u32, u32)> {
+    fn found(finder: &mut PairFinder, kind: PairMethod, boxes: &[Aabb]) -> Vec<(u32, u32)> {
         let mut pairs = vec![(7, 7)]; // `find` appends: what is there stays.
         finder.find(kind, boxes, &mut pairs);
         assert_eq!(pairs.remove(0), (7, 7));
@@ -297,7 +304,7 @@ mod tests {
         fn boxes_of_any_finite_coordinates_match_all_pairs(
             boxes in prop::collection::vec(
                 (
-                    prop_oneof![4 => Just(1.0f32), 1 => Just(crate::MAX_COORD), 1 => Just(1e30f32), 1 => Just(f32::MAX)],
+                    prop_oneof![4 => Just(1.0f32), 1 => Just(crate::limits::MAX_COORD), 1 => Just(1e30f32), 1 => Just(f32::MAX)],
                     -1.0f32..1.0,
                     -1.0f32..1.0,
                     0.0f32..0.5,
@@ -329,7 +336,7 @@ mod tests {
             .map(|i| Aabb::from_center(Vec2::new(i as f32 * 0.7, 0.0), Vec2::splat(0.4)))
             .collect();
         assert_eq!(
-            found(&mut finder, Broadphase::SweepAndPrune, &boxes),
+            found(&mut finder, PairMethod::SweepAndPrune, &boxes),
             brute(&boxes)
         );
         // Reverse the row: the kept order is now fully wrong, and must still give the truth.
@@ -337,7 +344,7 @@ mod tests {
             *b = Aabb::from_center(Vec2::new(50.0 - i as f32 * 0.7, 0.0), Vec2::splat(0.4));
         }
         assert_eq!(
-            found(&mut finder, Broadphase::SweepAndPrune, &boxes),
+            found(&mut finder, PairMethod::SweepAndPrune, &boxes),
             brute(&boxes)
         );
     }

@@ -12,12 +12,13 @@ use super::contact::{Contact, Contacts, Surface};
 use super::platform::Riding;
 use super::{CharacterShape, ControllerError};
 use crate::geometry::{Aabb, MAX_COORD, Segment, SweepHit, in_range};
-use crate::query::{Capsule, RayFilter, SegmentSource, Wall};
+use crate::query::{Capsule, QueryFilter, SegmentSource, Wall};
 use crate::tiles::{ActiveSegment, Owner, SegmentFlags, TileMap};
 
 /// How a character moves: slope limit, ground snapping, the gap it keeps from surfaces.
 /// Distances are in map units; the defaults suit maps with cells of size 1 (scale them with
 /// the cell size, e.g. ×32 for Replica Island's pixels).
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ControllerConfig {
     /// The steepest walkable slope, in degrees from level: steeper surfaces are walls.
@@ -74,6 +75,7 @@ impl ControllerConfig {
 }
 
 /// Requests for one move.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct MoveOptions {
     /// Fall through one-way platforms during this move (hold it for as many moves as it
@@ -113,6 +115,13 @@ pub struct MoveOptions {
 /// Every part of a move is an exact sweep (see [`sweep_circle_segment`] and
 /// [`sweep_box_segment`]), so no speed passes through a wall.
 ///
+/// The character has no velocity of its own: gravity, jumps, coyote time and variable
+/// jump height are the game's rules, kept in the game's velocity.
+/// [`move_and_slide`](Self::move_and_slide) moves by that velocity × dt and takes out of it
+/// what the surfaces touched stopped (landing zeroes the fall, a ceiling the rise, a wall
+/// the speed into it), the part every game would otherwise write
+/// ([`clip_velocity`](Self::clip_velocity) alone, for a displacement made otherwise).
+///
 /// ```
 /// use tileslide::{Character, CharacterShape, ControllerConfig, MoveOptions, Vec2, io::ascii};
 /// let map = ascii::parse("\
@@ -134,8 +143,8 @@ pub struct MoveOptions {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 ///
-/// [`sweep_circle_segment`]: crate::sweep_circle_segment
-/// [`sweep_box_segment`]: crate::sweep_box_segment
+/// [`sweep_circle_segment`]: crate::geometry::sweep_circle_segment
+/// [`sweep_box_segment`]: crate::geometry::sweep_box_segment
 #[derive(Clone, Debug)]
 pub struct Character {
     /// The shape's centre, in world coordinates.
@@ -648,7 +657,7 @@ impl Character {
         );
         let region = Aabb::from_corners(start.min.min(end.min), start.max.max(end.max))
             .expand(self.config.skin);
-        let mut filter = RayFilter::default().with_mask(self.config.mask);
+        let mut filter = QueryFilter::default().with_mask(self.config.mask);
         filter.exclude_owner = exclude;
         self.walls.clear();
         map.walls_in(&region, &filter, &mut self.walls);

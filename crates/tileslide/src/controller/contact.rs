@@ -6,6 +6,7 @@ use crate::query::SegmentSource;
 use crate::tiles::SegmentFlags;
 
 /// One surface a character touched, and what it is.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Contact {
     /// The surface's unit normal at the contact, pointing towards the character (for a
@@ -21,6 +22,7 @@ pub struct Contact {
 /// The surfaces a character touched during one move, by kind. Each holds the last contact
 /// of its kind in the move, except `ground`, which is the ground under the character at
 /// the end of the move (or `None` when it is in the air).
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Contacts {
     /// Walkable ground under the character after the move: a surface whose slope is within

@@ -10,6 +10,7 @@ mod character;
 mod contact;
 mod platform;
 mod shape;
+mod velocity;
 
 pub use character::{Character, ControllerConfig, MoveOptions};
 pub use contact::{Contact, Contacts};
@@ -19,20 +20,21 @@ use glam::Vec2;
 
 /// A character or its move was given a value it cannot use.
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum ControllerError {
     /// A position, direction or displacement was not finite (or `up` was zero).
     #[error("character {what} must be finite (and `up` non-zero), got {value}")]
     NonFinite {
-        /// Which value: `"position"`, `"up"`, `"displacement"` or `"displacement length"`
-        /// (finite components whose length overflows).
+        /// Which value: `"position"`, `"up"`, `"displacement"`, `"displacement length"`
+        /// (finite components whose length overflows) or `"velocity"`.
         what: &'static str,
         /// The value given.
         value: Vec2,
     },
-    /// A position, or the end point of a move, lies beyond [`MAX_COORD`](crate::MAX_COORD).
+    /// A position, or the end point of a move, lies beyond [`MAX_COORD`](crate::limits::MAX_COORD).
     #[error(
         "character {what} {value} is beyond the coordinate range (±{})",
-        crate::MAX_COORD
+        crate::limits::MAX_COORD
     )]
     OutOfRange {
         /// Which value: `"position"` or `"displacement"` (the move's end point is out of
@@ -42,10 +44,10 @@ pub enum ControllerError {
         value: Vec2,
     },
     /// A shape's size was not positive and finite, or was beyond
-    /// [`MAX_COORD`](crate::MAX_COORD).
+    /// [`MAX_COORD`](crate::limits::MAX_COORD).
     #[error(
         "character shape {what} must be positive and at most {}, got {value}",
-        crate::MAX_COORD
+        crate::limits::MAX_COORD
     )]
     BadShape {
         /// `"radius"` or `"half extents"`.
@@ -53,10 +55,16 @@ pub enum ControllerError {
         /// The value given (a radius in both lanes).
         value: Vec2,
     },
+    /// The time step of [`Character::move_and_slide`] was negative or not finite.
+    #[error("time step dt must be finite and not negative, got {dt}")]
+    BadTimeStep {
+        /// The value given.
+        dt: f32,
+    },
     /// A [`ControllerConfig`] field was out of range.
     #[error(
         "controller config field `{field}` is out of range: {value} (max_slope_degrees in [0, 90), distances in [0, {}], max_slides at least 1)",
-        crate::MAX_COORD
+        crate::limits::MAX_COORD
     )]
     BadConfig {
         /// The field's name.

@@ -3,7 +3,7 @@
 use glam::Vec2;
 
 use super::ControllerError;
-use crate::geometry::{Aabb, SweepHit, in_range, sweep_box_segment};
+use crate::geometry::{Aabb, EndCaps, SweepHit, in_range, sweep_box_segment};
 use crate::query::Capsule;
 
 /// A character's collision shape, centred on its position.
@@ -15,7 +15,9 @@ use crate::query::Capsule;
 /// assert!(CharacterShape::circle(f32::NAN).is_err());
 /// # Ok::<(), tileslide::ControllerError>(())
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum CharacterShape {
     /// A circle of this radius: rolls over corners, and stands on a slope at one point.
     Circle {
@@ -32,13 +34,13 @@ pub enum CharacterShape {
 
 impl CharacterShape {
     /// A circle of `radius`; an error unless it is positive and at most
-    /// [`MAX_COORD`](crate::MAX_COORD).
+    /// [`MAX_COORD`](crate::limits::MAX_COORD).
     pub fn circle(radius: f32) -> Result<Self, ControllerError> {
         Self::Circle { radius }.validated()
     }
 
     /// A box with half extents `half`; an error unless both are positive and at most
-    /// [`MAX_COORD`](crate::MAX_COORD).
+    /// [`MAX_COORD`](crate::limits::MAX_COORD).
     pub fn rect(half: Vec2) -> Result<Self, ControllerError> {
         Self::Rect { half }.validated()
     }
@@ -111,7 +113,7 @@ impl CharacterShape {
                 motion,
                 &capsule.segment,
                 capsule.normal,
-                capsule.caps,
+                EndCaps::from_array(capsule.caps),
             ),
         }
     }

@@ -3,6 +3,7 @@ use glam::Vec2;
 use super::Segment;
 
 /// An axis-aligned box `[min, max]`, closed on every side.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Aabb {
     /// The corner with the smallest coordinates.

@@ -3,6 +3,18 @@ use glam::Vec2;
 use super::{Aabb, Segment};
 
 /// A circle (a disc: the inside counts as part of it).
+///
+/// A plain geometric value, like [`Aabb`], [`Segment`] and [`Ray`](super::Ray): [`new`]
+/// checks nothing and the pair functions answer any values, so hot code builds them freely.
+/// A radius is checked where it enters a system or a query: a body's
+/// [`BodyShape::circle`](crate::BodyShape::circle), a character's
+/// [`CharacterShape::circle`](crate::CharacterShape::circle), a hit
+/// [`Volume::circle`](crate::Volume::circle) and
+/// [`TileMap::cast_circle`](crate::TileMap::cast_circle) refuse one that describes no
+/// circle.
+///
+/// [`new`]: Self::new
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Circle {
     /// Centre.

@@ -6,6 +6,7 @@ use super::Segment;
 ///
 /// Queries report positions along it as `t` in `[0, 1]`: `t = 0` is the origin, `t = 1`
 /// the end point.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {
     /// Where the ray starts (`t = 0`).
@@ -44,6 +45,7 @@ impl Ray {
 }
 
 /// Where a ray meets a segment.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RaySegmentHit {
     /// Fraction along the ray, in `[0, 1]`.
@@ -81,7 +83,8 @@ pub struct RaySegmentHit {
 ///   least 2⁻²⁴ units.
 ///
 /// ```
-/// # use tileslide::{cast_ray_segment, Ray, Segment, Vec2};
+/// # use tileslide::geometry::cast_ray_segment;
+/// # use tileslide::{Ray, Segment, Vec2};
 /// let wall = Segment::new(Vec2::new(2.0, -1.0), Vec2::new(2.0, 1.0));
 /// let hit = cast_ray_segment(&Ray::between(Vec2::ZERO, Vec2::new(4.0, 0.0)), &wall).unwrap();
 /// assert_eq!(hit.t, 0.5);

@@ -3,6 +3,7 @@ use glam::Vec2;
 use super::Aabb;
 
 /// A closed line segment from `a` to `b`.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Segment {
     /// Start point.

@@ -10,7 +10,7 @@ use std::cmp::Ordering;
 
 use glam::{DVec2, Vec2};
 
-use super::Segment;
+use super::{EndCaps, Segment};
 
 /// Relative depth below which a path that touches a circle only grazes it (see
 /// [`sweep_circle_circle`]): about four float roundings of the squared radius.
@@ -83,6 +83,7 @@ pub(super) fn rescaled<const N: usize, const K: usize>(
 }
 
 /// Where a swept circle first touches an obstacle.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SweepHit {
     /// Fraction of the move, in `[0, 1]`, at which the circles touch.
@@ -112,7 +113,8 @@ pub struct SweepHit {
 /// NaN or infinite input hits nothing.
 ///
 /// ```
-/// # use tileslide::{Vec2, sweep_circle_circle};
+/// # use tileslide::geometry::sweep_circle_circle;
+/// # use tileslide::Vec2;
 /// // A circle of radius 1 moving 10 to the right meets one of radius 1 whose centre is 5 away.
 /// let hit = sweep_circle_circle(Vec2::ZERO, Vec2::new(10.0, 0.0), Vec2::new(5.0, 0.0), 2.0).unwrap();
 /// assert_eq!(hit.t, 0.3);
@@ -173,7 +175,7 @@ pub(crate) fn circle_circle(d: Vec2, motion: Vec2, radius_sum: f32) -> Option<Sw
 
 /// Time of impact of a circle of `radius` at `center` moving by `motion` against the front
 /// of `segment`, whose unit `normal` points to its front: the segment's capsule, with a
-/// rounded cap at each end where `caps` says so (`[at a, at b]`).
+/// rounded cap at each end where `caps` says so.
 ///
 /// Back faces never block: a circle whose centre is behind the segment's line (inside the
 /// solid, or below a one-way platform) is not stopped by it, and a cap only counts the
@@ -192,14 +194,15 @@ pub(crate) fn circle_circle(d: Vec2, motion: Vec2, radius_sum: f32) -> Option<Sw
 /// and scaled by a power of two into that range first.
 ///
 /// ```
-/// # use tileslide::{Segment, Vec2, sweep_circle_segment};
+/// # use tileslide::geometry::{EndCaps, sweep_circle_segment};
+/// # use tileslide::{Segment, Vec2};
 /// // A floor along y = 0 facing up; a circle of radius 0.5 falls onto it from y = 3.
 /// let floor = Segment::new(Vec2::new(-5.0, 0.0), Vec2::new(5.0, 0.0));
-/// let hit = sweep_circle_segment(Vec2::new(0.0, 3.0), 0.5, Vec2::new(0.0, -5.0), &floor, Vec2::Y, [true; 2]).unwrap();
+/// let hit = sweep_circle_segment(Vec2::new(0.0, 3.0), 0.5, Vec2::new(0.0, -5.0), &floor, Vec2::Y, EndCaps::BOTH).unwrap();
 /// assert_eq!(hit.t, 0.5);
 /// assert_eq!(hit.normal, Vec2::Y);
 /// // From below, the back face lets it through.
-/// assert!(sweep_circle_segment(Vec2::new(0.0, -3.0), 0.5, Vec2::new(0.0, 5.0), &floor, Vec2::Y, [true; 2]).is_none());
+/// assert!(sweep_circle_segment(Vec2::new(0.0, -3.0), 0.5, Vec2::new(0.0, 5.0), &floor, Vec2::Y, EndCaps::BOTH).is_none());
 /// ```
 #[must_use]
 pub fn sweep_circle_segment(
@@ -208,7 +211,7 @@ pub fn sweep_circle_segment(
     motion: Vec2,
     segment: &Segment,
     normal: Vec2,
-    caps: [bool; 2],
+    caps: EndCaps,
 ) -> Option<SweepHit> {
     let size = largest([center - segment.a, segment.delta(), motion], [radius]);
     // Out of the ordinary sizes the problem is moved to `a` and scaled (see `rescaled`),
@@ -224,12 +227,12 @@ pub fn sweep_circle_segment(
         )?;
         (p, radius, motion, Segment::new(Vec2::ZERO, e))
     };
-    circle_segment(center, radius, motion, &segment, normal, caps)
+    circle_segment(center, radius, motion, &segment, normal, caps.to_array())
 }
 
-/// [`sweep_circle_segment`] in `f32` as written, without the size check: for callers whose
-/// inputs are known to be ordinary. The resolver's bodies are (positions, moves and radii
-/// within [`MAX_COORD`](crate::MAX_COORD), radii positive), so its hot loop runs exactly
+/// [`sweep_circle_segment`] in `f32` as written, without the size check, the caps as
+/// `[a, b]`: for callers whose inputs are known to be ordinary. The resolver's bodies are (positions, moves and radii
+/// within [`MAX_COORD`](crate::limits::MAX_COORD), radii positive), so its hot loop runs exactly
 /// the arithmetic it ran before the check existed.
 #[inline]
 pub(crate) fn circle_segment(
@@ -335,7 +338,7 @@ mod tests {
         assert!(sweep_circle_circle(v(0.5, 0.0), v(f32::NAN, 0.0), Vec2::ZERO, 1.0).is_none());
         let floor = Segment::new(v(-1.0, 0.0), v(1.0, 0.0));
         assert!(
-            sweep_circle_segment(v(0.0, 1.0), 0.5, Vec2::ZERO, &floor, Vec2::Y, [true; 2])
+            sweep_circle_segment(v(0.0, 1.0), 0.5, Vec2::ZERO, &floor, Vec2::Y, EndCaps::BOTH)
                 .is_none()
         );
         assert!(
@@ -345,7 +348,7 @@ mod tests {
                 v(0.0, f32::NAN),
                 &floor,
                 Vec2::Y,
-                [true; 2]
+                EndCaps::BOTH
             )
             .is_none()
         );
@@ -356,12 +359,26 @@ mod tests {
         let floor = Segment::new(v(0.0, 0.0), v(1.0, 0.0));
         // Sliding along the floor at exactly the radius: not approaching, no hit.
         assert!(
-            sweep_circle_segment(v(0.5, 0.5), 0.5, v(2.0, 0.0), &floor, Vec2::Y, [true; 2])
-                .is_none()
+            sweep_circle_segment(
+                v(0.5, 0.5),
+                0.5,
+                v(2.0, 0.0),
+                &floor,
+                Vec2::Y,
+                EndCaps::BOTH
+            )
+            .is_none()
         );
         // Moving diagonally past the end: the cap at b rounds the corner.
-        let hit = sweep_circle_segment(v(2.0, 1.0), 0.5, v(-2.0, -2.0), &floor, Vec2::Y, [true; 2])
-            .unwrap();
+        let hit = sweep_circle_segment(
+            v(2.0, 1.0),
+            0.5,
+            v(-2.0, -2.0),
+            &floor,
+            Vec2::Y,
+            EndCaps::BOTH,
+        )
+        .unwrap();
         let at = v(2.0, 1.0) + v(-2.0, -2.0) * hit.t;
         assert!((at.distance(v(1.0, 0.0)) - 0.5).abs() < 1e-5);
         assert!(hit.normal.x > 0.0 && hit.normal.y > 0.0);
@@ -373,13 +390,20 @@ mod tests {
                 v(-0.9, -0.9),
                 &floor,
                 Vec2::Y,
-                [true, false]
+                EndCaps { a: true, b: false }
             )
             .is_none()
         );
         // Penetrating and pushing in: t = 0.
-        let hit = sweep_circle_segment(v(0.5, 0.25), 0.5, v(0.0, -1.0), &floor, Vec2::Y, [true; 2])
-            .unwrap();
+        let hit = sweep_circle_segment(
+            v(0.5, 0.25),
+            0.5,
+            v(0.0, -1.0),
+            &floor,
+            Vec2::Y,
+            EndCaps::BOTH,
+        )
+        .unwrap();
         assert_eq!(hit.t, 0.0);
         assert_eq!(hit.normal, Vec2::Y);
     }
@@ -431,7 +455,7 @@ mod tests {
             };
             // Once behind the line the test no longer applies: sample only up to there.
             let front_until = if m.y < 0.0 { (cy / -my).min(1.0) } else { 1.0 };
-            match sweep_circle_segment(c, r, m, &seg, Vec2::Y, [true; 2]) {
+            match sweep_circle_segment(c, r, m, &seg, Vec2::Y, EndCaps::BOTH) {
                 Some(hit) => {
                     prop_assert!(min_gap_before(hit.t, gap_at) > -1e-3);
                     prop_assert!(gap_at(hit.t).abs() < 1e-3);

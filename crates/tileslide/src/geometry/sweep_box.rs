@@ -10,7 +10,7 @@
 use glam::Vec2;
 
 use super::sweep::{largest, ordinary, rescaled};
-use super::{Segment, SweepHit};
+use super::{EndCaps, Segment, SweepHit};
 
 /// Relative distance within which a slanted face's support corner reaching the line and
 /// reaching the segment's end are one event (a corner contact): a few roundings of the
@@ -19,8 +19,7 @@ const CORNER_ROUNDING: f32 = 8.0 * f32::EPSILON;
 
 /// Time of impact of an axis-aligned box with half extents `half`, centred at `center` and
 /// moving by `motion`, against the front of `segment`, whose unit `normal` points to its
-/// front; `caps` says at which ends (`[at a, at b]`) the box's sides may catch the segment's
-/// end point.
+/// front; `caps` says at which ends the box's sides may catch the segment's end point.
 ///
 /// The rules are those of [`sweep_circle_segment`](super::sweep_circle_segment): back faces
 /// never block (a box whose centre is behind the segment's line is not stopped by it); the
@@ -66,19 +65,20 @@ const CORNER_ROUNDING: f32 = 8.0 * f32::EPSILON;
 /// hits nothing.
 ///
 /// ```
-/// # use tileslide::{Segment, Vec2, sweep_box_segment};
+/// # use tileslide::geometry::{EndCaps, sweep_box_segment};
+/// # use tileslide::{Segment, Vec2};
 /// // A floor along y = 0 facing up; a 1 × 2 box falls onto it from y = 3 (its bottom at 2).
 /// let floor = Segment::new(Vec2::new(-5.0, 0.0), Vec2::new(5.0, 0.0));
-/// let hit = sweep_box_segment(Vec2::new(0.0, 3.0), Vec2::new(0.5, 1.0), Vec2::new(0.0, -4.0), &floor, Vec2::Y, [true; 2]).unwrap();
+/// let hit = sweep_box_segment(Vec2::new(0.0, 3.0), Vec2::new(0.5, 1.0), Vec2::new(0.0, -4.0), &floor, Vec2::Y, EndCaps::BOTH).unwrap();
 /// assert_eq!(hit.t, 0.5);
 /// assert_eq!(hit.normal, Vec2::Y);
 /// // A box whose edge overhangs the floor's end by less than its half width still lands.
-/// let hit = sweep_box_segment(Vec2::new(5.4, 3.0), Vec2::new(0.5, 1.0), Vec2::new(0.0, -4.0), &floor, Vec2::Y, [true; 2]);
+/// let hit = sweep_box_segment(Vec2::new(5.4, 3.0), Vec2::new(0.5, 1.0), Vec2::new(0.0, -4.0), &floor, Vec2::Y, EndCaps::BOTH);
 /// assert_eq!(hit.map(|h| h.t), Some(0.5));
 /// // A box beside a step (its bottom below the step's top at y = 0, from x = 5) moving right
 /// // and down runs into the step's corner with its side: the side's normal, not the top's.
 /// let step = Segment::new(Vec2::new(5.0, 0.0), Vec2::new(8.0, 0.0));
-/// let hit = sweep_box_segment(Vec2::new(3.0, 0.9), Vec2::new(1.0, 1.0), Vec2::new(2.0, -0.1), &step, Vec2::Y, [true; 2]).unwrap();
+/// let hit = sweep_box_segment(Vec2::new(3.0, 0.9), Vec2::new(1.0, 1.0), Vec2::new(2.0, -0.1), &step, Vec2::Y, EndCaps::BOTH).unwrap();
 /// assert_eq!((hit.t, hit.normal), (0.5, Vec2::NEG_X));
 /// ```
 #[must_use]
@@ -88,7 +88,7 @@ pub fn sweep_box_segment(
     motion: Vec2,
     segment: &Segment,
     normal: Vec2,
-    caps: [bool; 2],
+    caps: EndCaps,
 ) -> Option<SweepHit> {
     let size = largest([center - segment.a, segment.delta(), motion, half], []);
     // Out of the ordinary sizes the problem is moved to `a` and scaled (see `rescaled`),
@@ -114,7 +114,7 @@ pub fn sweep_box_segment(
     if h0 >= 0.0 && vn < 0.0 && len2 > 0.0 {
         best = sweep_box_face(center, half, motion, &segment, normal);
     }
-    for (end, capped) in [(a, caps[0]), (segment.b, caps[1])] {
+    for (end, capped) in [(a, caps.a), (segment.b, caps.b)] {
         if capped
             && let Some(hit) = sweep_box_point(center, half, motion, end)
             && in_front_at(h0, vn, hit.t)
@@ -305,7 +305,7 @@ mod tests {
 
     /// A unit box at `center` falling by `fall` onto a ramp rising to the right (y up) from
     /// (0, 0) to (2, 2), with `caps`.
-    fn drop_on_ramp(center: Vec2, fall: f32, caps: [bool; 2]) -> Option<SweepHit> {
+    fn drop_on_ramp(center: Vec2, fall: f32, caps: EndCaps) -> Option<SweepHit> {
         let ramp = Segment::new(v(0.0, 0.0), v(2.0, 2.0));
         sweep_box_segment(
             center,
@@ -330,7 +330,7 @@ mod tests {
             v(2.0, 0.0),
             &floor(),
             Vec2::Y,
-            [true, true],
+            EndCaps::BOTH,
         );
         assert!(hit.is_none());
         // Pressing into it: t = 0.
@@ -340,7 +340,7 @@ mod tests {
             v(1.0, -1.0),
             &floor(),
             Vec2::Y,
-            [true, true],
+            EndCaps::BOTH,
         );
         assert_eq!(hit.map(|h| h.t), Some(0.0));
     }
@@ -349,7 +349,7 @@ mod tests {
     fn the_corner_of_a_box_lands_on_a_ramp() {
         // A unit box above the ramp's middle falls straight down: its bottom-right corner
         // (1.5, y − 0.5) meets the ramp where y − 0.5 = 1.5.
-        let hit = drop_on_ramp(v(1.0, 5.0), 10.0, [true, true]).unwrap();
+        let hit = drop_on_ramp(v(1.0, 5.0), 10.0, EndCaps::BOTH).unwrap();
         let center = 5.0 - 10.0 * hit.t;
         assert!((center - 2.0).abs() < 1e-5, "{hit:?}");
         assert_eq!(hit.normal, ramp_normal());
@@ -359,17 +359,17 @@ mod tests {
     fn an_end_point_catches_a_box_in_front_of_its_line_only_where_capped() {
         // The top of a ramp ends at (2, 2), capped. A box whose bottom-left corner is
         // right of the end lands on the end point with its bottom side.
-        let hit = drop_on_ramp(v(2.3, 4.0), 4.0, [true, true]).unwrap();
+        let hit = drop_on_ramp(v(2.3, 4.0), 4.0, EndCaps::BOTH).unwrap();
         assert_eq!(hit.normal, Vec2::Y);
         assert!((4.0 - 4.0 * hit.t - 2.5).abs() < 1e-5);
         // Without the cap (the surface continues), the end point does not count.
-        assert!(drop_on_ramp(v(2.6, 4.0), 4.0, [true, false]).is_none());
+        assert!(drop_on_ramp(v(2.6, 4.0), 4.0, EndCaps { a: true, b: false }).is_none());
         // Moving sideways into a one-way floor's end: passes with the centre below its
         // line, is caught by the side with the centre above it.
         let platform = Segment::new(v(0.0, 0.0), v(2.0, 0.0));
         let sideways = |y: f32| {
             let (c, half, m) = (v(-1.0, y), v(0.5, 0.5), v(4.0, 0.0));
-            sweep_box_segment(c, half, m, &platform, Vec2::Y, [true, true])
+            sweep_box_segment(c, half, m, &platform, Vec2::Y, EndCaps::BOTH)
         };
         assert!(sideways(-0.1).is_none());
         let hit = sideways(0.1).unwrap();
@@ -381,10 +381,24 @@ mod tests {
         // The ramp's top end (1, 1) is inside the box; moving down-right onto it: t = 0.
         let ramp = Segment::new(v(0.0, 0.0), v(1.0, 1.0));
         let n = ramp_normal();
-        let hit = sweep_box_segment(v(1.1, 1.3), v(0.5, 0.5), v(0.5, -0.5), &ramp, n, [true; 2]);
+        let hit = sweep_box_segment(
+            v(1.1, 1.3),
+            v(0.5, 0.5),
+            v(0.5, -0.5),
+            &ramp,
+            n,
+            EndCaps::BOTH,
+        );
         assert_eq!(hit.map(|h| h.t), Some(0.0));
         // Moving off it: no contact.
-        let away = sweep_box_segment(v(1.1, 1.3), v(0.5, 0.5), v(0.0, 0.5), &ramp, n, [true; 2]);
+        let away = sweep_box_segment(
+            v(1.1, 1.3),
+            v(0.5, 0.5),
+            v(0.0, 0.5),
+            &ramp,
+            n,
+            EndCaps::BOTH,
+        );
         assert!(away.is_none());
     }
 
@@ -397,7 +411,7 @@ mod tests {
                 v(0.0, 4.0),
                 &floor(),
                 Vec2::Y,
-                [true, true,]
+                EndCaps::BOTH
             )
             .is_none()
         );
@@ -408,7 +422,7 @@ mod tests {
                 v(0.0, 4.0),
                 &floor(),
                 Vec2::Y,
-                [true, true,]
+                EndCaps::BOTH
             )
             .is_none()
         );
@@ -437,7 +451,7 @@ mod tests {
             let (c, half, m) = (v(cx, cy), v(hx, hy), v(mx, my));
             // Start clear of the segment and in front of it.
             prop_assume!(!overlaps(c, half, &s, 0.0) && (c - a).dot(n) > 0.0);
-            let hit = sweep_box_segment(c, half, m, &s, n, [true, true]);
+            let hit = sweep_box_segment(c, half, m, &s, n, EndCaps::BOTH);
             let end = hit.map_or(1.0, |h| h.t);
             for k in 0..=400 {
                 let t = end * k as f32 / 400.0;

@@ -9,6 +9,7 @@ use super::{FlowField, NavGrid};
 
 /// What a navigation call refuses.
 #[derive(Clone, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum NavError {
     /// `max_radius` is not positive and finite, or too large for the cell size.
     #[error("max_radius {max_radius} must be positive, finite and at most {limit} (31 cells)")]
@@ -59,8 +60,8 @@ pub enum NavError {
         /// Its value.
         point: Vec2,
     },
-    /// A point with a coordinate beyond [`MAX_COORD`](crate::MAX_COORD) in magnitude.
-    #[error("the {what} point {point} is beyond the ±{max} coordinate range (MAX_COORD)", max = crate::MAX_COORD)]
+    /// A point with a coordinate beyond [`MAX_COORD`](crate::limits::MAX_COORD) in magnitude.
+    #[error("the {what} point {point} is beyond the ±{max} coordinate range (MAX_COORD)", max = crate::limits::MAX_COORD)]
     OutOfRange {
         /// Which point (`from`, `to`, `goal`, …).
         what: &'static str,
@@ -82,7 +83,7 @@ pub enum NavError {
     OtherMap,
 }
 
-/// Refuses a point that is not finite or lies beyond [`MAX_COORD`](crate::MAX_COORD):
+/// Refuses a point that is not finite or lies beyond [`MAX_COORD`](crate::limits::MAX_COORD):
 /// lattice coordinates of such a point overflow the integers nodes are counted in.
 pub(crate) fn check_point(what: &'static str, point: Vec2) -> Result<(), NavError> {
     if !point.is_finite() {

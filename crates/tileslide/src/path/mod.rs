@@ -55,12 +55,14 @@ mod search;
 mod smooth;
 mod sync;
 
+use std::sync::{Mutex, MutexGuard, PoisonError};
+
 use glam::Vec2;
 
 pub use error::NavError;
 pub(crate) use error::check_point;
 pub use flow::FlowField;
-pub use route::Path;
+pub use route::NavPath;
 pub use sync::NavChange;
 
 use crate::tiles::{MapRevision, SegmentFlags, TileMap};
@@ -93,6 +95,7 @@ pub const NAV_MOVES: [(i32, i32); 8] = lattice::MOVES;
 pub const MAX_NAV_NODES: usize = 1 << 26;
 
 /// How a [`NavGrid`] is built.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NavConfig {
     /// The widest circle the grid serves (map units). Clearances are measured up to this,
@@ -125,16 +128,61 @@ pub(crate) enum End {
     Goal,
 }
 
-/// Navigation data for one map: move clearances on a half-cell lattice and search scratch.
-#[derive(Clone, Debug)]
+/// Navigation data for one map: move clearances on a half-cell lattice, and what the
+/// searches remember between queries.
+///
+/// Queries take `&self`, so one grid serves every agent of a game (and a Bevy resource
+/// read by several systems). Searches on one grid from several threads at once take
+/// turns; a clone of the grid per thread runs them side by side.
+#[derive(Debug)]
 pub struct NavGrid {
     table: Clearance,
     max_radius: f32,
+    /// What searches remember between queries, behind a lock so that a search needs only
+    /// `&self`: it is held for one search, never across calls.
+    memory: Mutex<SearchMemory>,
+    /// The map's revision the grid is caught up with (see [`NavGrid::sync`]).
+    revision: MapRevision,
+}
+
+/// What a grid's searches remember between queries: the search scratch, and the moves and
+/// parts per radius class.
+#[derive(Clone, Debug, Default)]
+struct SearchMemory {
     search: Search,
     /// Moves and parts per radius class, most recently used last.
     classes: Vec<RadiusClass>,
-    /// The map's revision the grid is caught up with (see [`NavGrid::sync`]).
-    revision: MapRevision,
+}
+
+impl SearchMemory {
+    /// The index in `classes` of the radius class `need`, built on first use (the least
+    /// recently used of [`CACHED_CLASSES`] goes first).
+    fn class_in(classes: &mut Vec<RadiusClass>, table: &Clearance, need: u16) -> usize {
+        match classes.iter().position(|c| c.need == need) {
+            Some(k) => {
+                let class = classes.remove(k);
+                classes.push(class);
+            }
+            None => {
+                if classes.len() == CACHED_CLASSES {
+                    classes.remove(0);
+                }
+                classes.push(RadiusClass::build(table, need));
+            }
+        }
+        classes.len() - 1
+    }
+}
+
+impl Clone for NavGrid {
+    fn clone(&self) -> Self {
+        Self {
+            table: self.table.clone(),
+            max_radius: self.max_radius,
+            memory: Mutex::new(self.memory().clone()),
+            revision: self.revision.clone(),
+        }
+    }
 }
 
 impl NavGrid {
@@ -175,10 +223,22 @@ impl NavGrid {
         Ok(Self {
             table: Clearance::build(map, config.max_radius, config.mask),
             max_radius: config.max_radius,
-            search: Search::default(),
-            classes: Vec::new(),
+            memory: Mutex::new(SearchMemory::default()),
             revision: map.revision(),
         })
+    }
+
+    /// The searches' memory. A search that panicked (a bug) leaves it as any search
+    /// leaves it between steps, so a poisoned lock is taken as it is.
+    fn memory(&self) -> MutexGuard<'_, SearchMemory> {
+        self.memory.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+
+    /// The searches' memory, when the grid is borrowed mutably (no lock needed).
+    fn memory_mut(&mut self) -> &mut SearchMemory {
+        self.memory
+            .get_mut()
+            .unwrap_or_else(PoisonError::into_inner)
     }
 
     /// The widest circle this grid serves.
@@ -286,13 +346,17 @@ impl NavGrid {
     /// smoothed into straight runs; `None` when the circle does not fit at either end or
     /// cannot get from one to the other. Every run is clear by the map's circle cast with
     /// `radius`, so a body following it never touches a wall.
+    ///
+    /// The map is asked for because the grid answers only when it is caught up with it
+    /// ([`NavError::Stale`] until [`sync`](Self::sync), [`NavError::OtherMap`] for
+    /// another map): a path is never found on tiles that have changed since.
     pub fn find_path(
-        &mut self,
+        &self,
         map: &TileMap,
         from: Vec2,
         to: Vec2,
         radius: f32,
-    ) -> Result<Option<Path>, NavError> {
+    ) -> Result<Option<NavPath>, NavError> {
         check_point("from", from)?;
         check_point("to", to)?;
         let need = self.check(map, radius)?;
@@ -303,12 +367,13 @@ impl NavGrid {
         }
         // Near ends joined straight: no search needed.
         if self.joins_straight(map, from, to, radius) {
-            return Ok(Some(Path::new(vec![from, to], radius, need)));
+            return Ok(Some(NavPath::new(vec![from, to], radius, need)));
         }
-        let k = self.class(need);
-        let class = &mut self.classes[k];
+        let mut memory = self.memory();
+        let SearchMemory { search, classes } = &mut *memory;
+        let k = SearchMemory::class_in(classes, &self.table, need);
         let lattice = &self.table.lattice;
-        let (parts, landmarks, moves) = class.parts(lattice);
+        let (parts, landmarks, moves) = classes[k].parts(lattice);
         let joined = starts.iter().any(|s| {
             goals
                 .iter()
@@ -317,33 +382,17 @@ impl NavGrid {
         if !joined {
             return Ok(None);
         }
-        let Some(nodes) = self.search.find(lattice, moves, landmarks, &starts, &goals) else {
+        let Some(nodes) = search.find(lattice, moves, landmarks, &starts, &goals) else {
             return Ok(None);
         };
+        drop(memory);
         let lattice = &self.table.lattice;
         let mut points = Vec::with_capacity(nodes.len() + 2);
         points.push(from);
         points.extend(nodes.iter().map(|&n| lattice.position_of(n as usize)));
         points.push(to);
         let smoothed = smooth::smooth(map, &points, radius, &self.table);
-        Ok(Some(Path::new(smoothed, radius, need)))
-    }
-
-    /// The index in `classes` of the radius class `need`, built on first use.
-    fn class(&mut self, need: u16) -> usize {
-        match self.classes.iter().position(|c| c.need == need) {
-            Some(k) => {
-                let class = self.classes.remove(k);
-                self.classes.push(class);
-            }
-            None => {
-                if self.classes.len() == CACHED_CLASSES {
-                    self.classes.remove(0);
-                }
-                self.classes.push(RadiusClass::build(&self.table, need));
-            }
-        }
-        self.classes.len() - 1
+        Ok(Some(NavPath::new(smoothed, radius, need)))
     }
 
     /// Lattice nodes per row and per column (`2 · width + 1`, `2 · height + 1`): a node

@@ -11,16 +11,16 @@ use crate::geometry::Aabb;
 /// A path found by [`NavGrid::find_path`]: straight runs from the start point to the goal
 /// point, each clear for the radius it was found for.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Path {
+pub struct NavPath {
     points: Vec<Vec2>,
     length: f32,
     radius: f32,
-    /// Clearance steps the radius needs (for [`Path::is_affected_by`]).
+    /// Clearance steps the radius needs (for [`NavPath::is_affected_by`]).
     need: u16,
     bounds: Aabb,
 }
 
-impl Path {
+impl NavPath {
     pub(super) fn new(points: Vec<Vec2>, radius: f32, need: u16) -> Self {
         let length = points.windows(2).map(|w| w[0].distance(w[1])).sum();
         let mut bounds = Aabb::from_corners(points[0], points[0]);

@@ -18,7 +18,7 @@
 use glam::Vec2;
 
 use super::clearance::Clearance;
-use crate::query::{Faces, RayFilter};
+use crate::query::{Faces, QueryFilter};
 use crate::tiles::{SegmentFlags, TileMap};
 
 /// Corners turning by less than this (radians) are not cut: a corner of turn θ in place of
@@ -66,12 +66,12 @@ pub(crate) fn is_clear(map: &TileMap, a: Vec2, b: Vec2, radius: f32, table: &Cle
     if a == b {
         return true;
     }
-    let filter = RayFilter {
+    let filter = QueryFilter {
         faces: Faces::Both,
-        ..RayFilter::default()
+        ..QueryFilter::default()
     }
     .with_mask(SegmentFlags(table.mask.0 & !SegmentFlags::ONE_WAY.0));
-    map.cast_circle(a, radius, b - a, &filter).is_none()
+    map.cast_valid_circle(a, radius, b - a, &filter).is_none()
         && (!table.has_one_way() || table.one_way_clearance(map, a, b) >= radius + table.margin)
 }
 
@@ -282,7 +282,7 @@ mod tests {
         .unwrap();
         let r = 0.8;
         let (from, to) = (Vec2::new(2.5, 6.0), Vec2::new(6.0, 2.5));
-        let mut nav = crate::path::NavGrid::new(&map, crate::path::NavConfig::default()).unwrap();
+        let nav = crate::path::NavGrid::new(&map, crate::path::NavConfig::default()).unwrap();
         let path = nav.find_path(&map, from, to, r).unwrap().unwrap();
         let (tangent, arc) = (
             (2.5f32 * 2.5 - r * r).sqrt(),

@@ -2,6 +2,8 @@
 //! the moves near each cell edited since the grid last caught up, and [`NavChange`] says
 //! what that changed, for the paths a game keeps.
 
+use std::sync::PoisonError;
+
 use glam::Vec2;
 
 use super::clearance::{ChangedMove, Clearance};
@@ -42,7 +44,7 @@ impl NavChange {
     }
 
     /// True when the grid was more edits behind the map than the map remembers
-    /// ([`JOURNAL_EDITS`](crate::JOURNAL_EDITS)) and was built anew: which moves changed is
+    /// ([`JOURNAL_EDITS`](crate::limits::JOURNAL_EDITS)) and was built anew: which moves changed is
     /// not known, and every path counts as affected.
     #[must_use]
     pub fn is_rebuild(&self) -> bool {
@@ -78,10 +80,10 @@ impl NavChange {
     }
 
     /// True when some edit changed moves within `bounds` and opened or closed some move for
-    /// a circle needing `need` clearance steps (what [`Path::is_affected_by`] asks, edit by
+    /// a circle needing `need` clearance steps (what [`NavPath::is_affected_by`] asks, edit by
     /// edit, as if the grid had caught up after each).
     ///
-    /// [`Path::is_affected_by`]: super::Path::is_affected_by
+    /// [`NavPath::is_affected_by`]: super::NavPath::is_affected_by
     pub(super) fn affects(&self, bounds: &Aabb, need: u16) -> bool {
         if self.rebuilt {
             return true;
@@ -106,7 +108,7 @@ impl NavGrid {
     ///
     /// Each edited cell costs the same as on any map size: the grid recomputes the moves
     /// near it (see `docs/path.md`), and is then what [`NavGrid::new`] would build. A grid
-    /// more edits behind than the map remembers ([`JOURNAL_EDITS`](crate::JOURNAL_EDITS))
+    /// more edits behind than the map remembers ([`JOURNAL_EDITS`](crate::limits::JOURNAL_EDITS))
     /// is built anew, and the change says so ([`NavChange::is_rebuild`]).
     ///
     /// # Errors
@@ -118,7 +120,7 @@ impl NavGrid {
             Err(JournalError::OtherMap) => return Err(NavError::OtherMap),
             Err(JournalError::Overrun { .. }) => {
                 self.table = Clearance::build(map, self.max_radius, self.table.mask);
-                self.classes.clear();
+                self.memory_mut().classes.clear();
                 change.rebuilt = true;
                 change.region = Some(map.bounds());
             }
@@ -126,7 +128,11 @@ impl NavGrid {
             Ok(cells) => {
                 for cell in cells {
                     let moves = self.table.update_cell(map, cell);
-                    for class in &mut self.classes {
+                    let memory = self
+                        .memory
+                        .get_mut()
+                        .unwrap_or_else(PoisonError::into_inner);
+                    for class in &mut memory.classes {
                         class.apply(&self.table, &moves);
                     }
                     change.push_edit(&self.table.lattice, moves);

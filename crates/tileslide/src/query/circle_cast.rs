@@ -7,11 +7,13 @@
 
 use glam::Vec2;
 
-use super::{Faces, RayFilter, SegmentSource};
-use crate::MAX_COORD;
-use crate::geometry::{Aabb, Segment, SweepHit, circle_segment, in_range, sweep_circle_segment};
+use super::{CastError, Faces, QueryFilter, SegmentSource};
+use crate::geometry::{
+    Aabb, EndCaps, Segment, SweepHit, circle_segment, in_range, sweep_circle_segment,
+};
+use crate::limits::MAX_COORD;
 use crate::tiles::store::{CAP_A, CAP_B, HotSegment};
-use crate::tiles::{SegmentFlags, SegmentRef, TileId, TileMap};
+use crate::tiles::{Owner, SegmentFlags, SegmentRef, TileId, TileMap};
 
 /// The longest motion along an axis that a circle cast sweeps as given: 2²⁷. From a
 /// centre within `MAX_COORD` it reaches past `2·MAX_COORD`, beyond which no circle of
@@ -20,6 +22,7 @@ use crate::tiles::{SegmentFlags, SegmentRef, TileId, TileMap};
 const MAX_CAST_MOTION: f32 = 134_217_728.0;
 
 /// A circle cast's first contact.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CircleHit {
     /// Fraction of the motion, in `[0, 1]`, at which the circle touches the segment.
@@ -44,7 +47,9 @@ pub struct CircleHit {
 pub(crate) struct Capsule {
     pub segment: Segment,
     pub normal: Vec2,
-    /// Rounded cap at `[a, b]`.
+    /// Rounded cap at `[a, b]`: the public sweeps' [`EndCaps`] as an array, which the
+    /// resolver's hot loop has always been compiled with (as `EndCaps` the loop took 0.25 %
+    /// more instructions).
     pub caps: [bool; 2],
 }
 
@@ -81,7 +86,7 @@ impl Capsule {
             motion,
             &self.segment,
             self.normal,
-            self.caps,
+            EndCaps::from_array(self.caps),
         )
     }
 
@@ -147,39 +152,55 @@ impl TileMap {
     /// and that it moves towards, and moves freely when there is none. Its `point` is then
     /// `center − normal·radius`, on the circle's edge, not on the segment.
     ///
-    /// A radius that is zero, negative or NaN, and a NaN or infinite centre, radius or
-    /// motion, hit nothing (`None`).
+    /// A NaN or infinite centre or motion hits nothing (`None`), as a ray does.
+    ///
+    /// # Errors
+    /// [`CastError::InvalidRadius`] for a radius that is zero, negative, NaN or infinite.
     ///
     /// ```
-    /// # use tileslide::{io::ascii, RayFilter, Vec2};
+    /// # use tileslide::{io::ascii, QueryFilter, Vec2};
     /// let map = ascii::parse("\
     /// #####
     /// #...#
     /// #...#
     /// #####", "doc.txt", 1.0)?;
     /// // A circle of radius 0.25 moving right from (1.5, 1.5) touches the wall at x = 4.
-    /// let hit = map.cast_circle(Vec2::new(1.5, 1.5), 0.25, Vec2::new(10.0, 0.0), &RayFilter::default()).unwrap();
+    /// let hit = map.cast_circle(Vec2::new(1.5, 1.5), 0.25, Vec2::new(10.0, 0.0), &QueryFilter::default())?.unwrap();
     /// assert_eq!(hit.center, Vec2::new(3.75, 1.5));
     /// assert_eq!(hit.normal, Vec2::new(-1.0, 0.0));
     /// assert_eq!(hit.point, Vec2::new(4.0, 1.5));
-    /// # Ok::<(), tileslide::io::LoadError>(())
+    /// // A negative radius is a mistake, not a miss.
+    /// assert!(map.cast_circle(Vec2::new(1.5, 1.5), -0.25, Vec2::X, &QueryFilter::default()).is_err());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    #[must_use]
     pub fn cast_circle(
         &self,
         center: Vec2,
         radius: f32,
         motion: Vec2,
-        filter: &RayFilter,
+        filter: &QueryFilter,
+    ) -> Result<Option<CircleHit>, CastError> {
+        if !(radius > 0.0 && radius.is_finite()) {
+            return Err(CastError::InvalidRadius(radius));
+        }
+        Ok(self.cast_valid_circle(center, radius, motion, filter))
+    }
+
+    /// [`cast_circle`](Self::cast_circle) of a circle whose radius is positive and finite.
+    #[inline]
+    pub(crate) fn cast_valid_circle(
+        &self,
+        center: Vec2,
+        radius: f32,
+        motion: Vec2,
+        filter: &QueryFilter,
     ) -> Option<CircleHit> {
-        let ordinary = radius > 0.0
-            && radius <= MAX_COORD
+        let ordinary = radius <= MAX_COORD
             && in_range(center)
             && motion.is_finite()
             && self.is_near(center, radius);
         if !ordinary {
-            let finite = center.is_finite() && radius.is_finite() && motion.is_finite();
-            return if radius > 0.0 && finite {
+            return if center.is_finite() && motion.is_finite() {
                 self.cast_circle_wide(center, radius, motion, filter)
             } else {
                 None
@@ -233,7 +254,7 @@ impl TileMap {
     pub(super) fn first_wall_in(
         &self,
         region: &Aabb,
-        filter: &RayFilter,
+        filter: &QueryFilter,
         sweep: impl Fn(&Capsule) -> Option<SweepHit>,
     ) -> Option<(SweepHit, Wall)> {
         // Visited in place, not collected: a cast allocates nothing.
@@ -257,23 +278,28 @@ impl TileMap {
     /// Appends the temporary segments, then the active segments of the cells (row by row)
     /// that share a point with `region`, that `filter` lets block a moving circle (flag mask,
     /// excluded owner, and for [`Faces::Against`] the direction).
-    pub(crate) fn walls_in(&self, region: &Aabb, filter: &RayFilter, out: &mut Vec<Wall>) {
+    pub(crate) fn walls_in(&self, region: &Aabb, filter: &QueryFilter, out: &mut Vec<Wall>) {
         self.for_each_wall_in(region, filter, |wall| out.push(wall));
     }
 
     /// Calls `f` with each wall [`walls_in`](Self::walls_in) appends, in the same order.
     #[inline]
-    fn for_each_wall_in(&self, region: &Aabb, filter: &RayFilter, mut f: impl FnMut(Wall)) {
-        let keeps = |normal: Vec2, flags: SegmentFlags| {
-            flags.intersects(filter.mask)
-                && match filter.faces {
-                    Faces::Against(dir) => normal.dot(dir) < 0.0,
-                    _ => true,
-                }
+    fn for_each_wall_in(&self, region: &Aabb, filter: &QueryFilter, mut f: impl FnMut(Wall)) {
+        // The sweep itself tells a segment's front from its back (`first_wall_in` sweeps
+        // the back too for `Faces::Both`), so here `Faces::Front` keeps every face and the
+        // filter's one rule decides the rest.
+        let walls = QueryFilter {
+            faces: match filter.faces {
+                Faces::Front => Faces::Both,
+                faces => faces,
+            },
+            ..*filter
+        };
+        let keeps = |normal: Vec2, flags: SegmentFlags, owner: Option<Owner>| {
+            walls.accepts(Vec2::ZERO, normal, flags, owner)
         };
         for (index, tmp) in self.temporaries().iter().enumerate() {
-            if filter.exclude_owner == Some(tmp.owner)
-                || !keeps(tmp.normal, tmp.flags)
+            if !keeps(tmp.normal, tmp.flags, Some(tmp.owner))
                 || !region.overlaps_segment(&tmp.segment)
             {
                 continue;
@@ -289,7 +315,7 @@ impl TileMap {
             });
         }
         self.for_each_segment_in(region, |index, i, s, capsule| {
-            if keeps(s.normal, s.flags) {
+            if keeps(s.normal, s.flags, None) {
                 f(Wall {
                     capsule,
                     flags: s.flags,
@@ -368,12 +394,17 @@ mod tests {
         Vec2::new(x, y)
     }
 
+    /// The cast of a valid radius.
+    fn cast(m: &TileMap, c: Vec2, r: f32, motion: Vec2, filter: &QueryFilter) -> Option<CircleHit> {
+        m.cast_circle(c, r, motion, filter).unwrap()
+    }
+
     #[test]
     fn a_circle_sliding_along_a_floor_of_many_tiles_is_never_stopped() {
         let m = map(TEST_ROOM);
         // Resting on the floor (y = 4, y down) at exactly its radius, moving along it over
         // five seams.
-        let hit = m.cast_circle(v(1.5, 3.75), 0.25, v(6.0, 0.0), &RayFilter::default());
+        let hit = cast(&m, v(1.5, 3.75), 0.25, v(6.0, 0.0), &QueryFilter::default());
         // Only the far wall stops it, not a seam.
         let hit = hit.unwrap();
         assert_eq!(hit.point.x, 7.0);
@@ -388,16 +419,20 @@ mod tests {
 ..##..
 ......");
         // Moving diagonally past the block's top-left corner (2, 2): touches the rounded end.
-        let hit = m
-            .cast_circle(v(0.5, 0.5), 0.25, v(3.0, 3.0), &RayFilter::default())
-            .unwrap();
+        let hit = cast(&m, v(0.5, 0.5), 0.25, v(3.0, 3.0), &QueryFilter::default()).unwrap();
         assert!((hit.point - v(2.0, 2.0)).length() < 1e-5, "{hit:?}");
         assert!(hit.normal.x < 0.0 && hit.normal.y < 0.0);
         // The seam between the block's two tiles on its top face has no cap: a circle
         // moving along the top at its radius is not stopped there.
         assert!(
-            m.cast_circle(v(2.25, 1.75), 0.25, v(1.5, 0.0), &RayFilter::default())
-                .is_none()
+            cast(
+                &m,
+                v(2.25, 1.75),
+                0.25,
+                v(1.5, 0.0),
+                &QueryFilter::default()
+            )
+            .is_none()
         );
     }
 
@@ -408,19 +443,27 @@ mod tests {
 .....#....
 ..........");
         // 1000 cells in one move, straight through the one-cell wall.
-        let hit = m
-            .cast_circle(v(0.5, 1.5), 0.4, v(1000.0, 0.0), &RayFilter::default())
-            .unwrap();
+        let hit = cast(
+            &m,
+            v(0.5, 1.5),
+            0.4,
+            v(1000.0, 0.0),
+            &QueryFilter::default(),
+        )
+        .unwrap();
         assert!((hit.center.x - 4.6).abs() < 1e-3, "{hit:?}");
         // A circle whose centre is inside the solid cell moves out freely.
-        assert!(
-            m.cast_circle(v(5.5, 1.5), 0.4, v(3.0, 0.0), &RayFilter::default())
-                .is_none()
-        );
+        assert!(cast(&m, v(5.5, 1.5), 0.4, v(3.0, 0.0), &QueryFilter::default()).is_none());
         // Unless both faces count.
         assert!(
-            m.cast_circle(v(5.5, 1.5), 0.4, v(3.0, 0.0), &RayFilter::both_sides())
-                .is_some()
+            cast(
+                &m,
+                v(5.5, 1.5),
+                0.4,
+                v(3.0, 0.0),
+                &QueryFilter::both_sides()
+            )
+            .is_some()
         );
     }
 
@@ -430,29 +473,36 @@ mod tests {
 ....
 .==.
 ....");
-        let down = m.cast_circle(v(1.5, 0.2), 0.1, v(0.0, 2.0), &RayFilter::default());
+        let down = cast(&m, v(1.5, 0.2), 0.1, v(0.0, 2.0), &QueryFilter::default());
         assert!((down.unwrap().center.y - 0.9).abs() < 1e-5);
-        assert!(
-            m.cast_circle(v(1.5, 2.5), 0.1, v(0.0, -2.0), &RayFilter::default())
-                .is_none()
-        );
+        assert!(cast(&m, v(1.5, 2.5), 0.1, v(0.0, -2.0), &QueryFilter::default()).is_none());
     }
 
     #[test]
     fn flag_masks_and_bad_input() {
         let m = map(TEST_ROOM);
-        let none = RayFilter::default().with_mask(SegmentFlags::ONE_WAY);
-        assert!(
-            m.cast_circle(v(2.0, 2.0), 0.25, v(9.0, 0.0), &none)
-                .is_none()
-        );
-        for (c, r, mv) in [
-            (v(f32::NAN, 2.0), 0.25, v(9.0, 0.0)),
-            (v(2.0, 2.0), 0.0, v(9.0, 0.0)),
-            (v(2.0, 2.0), -1.0, v(9.0, 0.0)),
-            (v(2.0, 2.0), 0.25, v(f32::INFINITY, 0.0)),
+        let none = QueryFilter::default().with_mask(SegmentFlags::ONE_WAY);
+        assert!(cast(&m, v(2.0, 2.0), 0.25, v(9.0, 0.0), &none).is_none());
+        // Positions and motions are answered as given: a NaN or infinite one hits nothing.
+        for (c, mv) in [
+            (v(f32::NAN, 2.0), v(9.0, 0.0)),
+            (v(2.0, 2.0), v(f32::INFINITY, 0.0)),
+            (v(2.0, f32::NEG_INFINITY), v(9.0, 0.0)),
         ] {
-            assert!(m.cast_circle(c, r, mv, &RayFilter::default()).is_none());
+            assert_eq!(cast(&m, c, 0.25, mv, &QueryFilter::default()), None);
         }
+        // A radius is a size: one that describes no circle is refused, naming it.
+        for r in [0.0, -0.0, -1.0, f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+            let err = m.cast_circle(v(2.0, 2.0), r, v(9.0, 0.0), &QueryFilter::default());
+            assert!(
+                matches!(err, Err(CastError::InvalidRadius(got)) if got.to_bits() == r.to_bits()),
+                "{r}: {err:?}"
+            );
+        }
+        let message = CastError::InvalidRadius(-1.0).to_string();
+        assert!(
+            message.contains("-1") && message.contains("radius"),
+            "{message}"
+        );
     }
 }

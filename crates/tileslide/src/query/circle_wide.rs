@@ -1,5 +1,5 @@
 //! Circle casts that the `f32` sweep of `cast_circle` does not take as given: a centre far
-//! from the map, or a radius beyond [`MAX_COORD`](crate::MAX_COORD).
+//! from the map, or a radius beyond [`MAX_COORD`](crate::limits::MAX_COORD).
 //!
 //! Rounding such a start to `f32` near the map would move the line it travels (at 10⁷ an
 //! `f32` is a whole unit apart from the next, at 10³⁰ about 10²³ units). So the motion is
@@ -9,7 +9,7 @@
 
 use glam::{DVec2, Vec2};
 
-use super::RayFilter;
+use super::QueryFilter;
 use super::circle_cast::{Capsule, CircleHit};
 use crate::geometry::{Aabb, Segment, SweepHit, circle_segment};
 use crate::tiles::TileMap;
@@ -117,7 +117,7 @@ impl TileMap {
         center: Vec2,
         radius: f32,
         motion: Vec2,
-        filter: &RayFilter,
+        filter: &QueryFilter,
     ) -> Option<CircleHit> {
         let r = f64::from(radius);
         let (lo, hi) = self.walls_box();

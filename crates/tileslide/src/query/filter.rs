@@ -2,8 +2,10 @@ use glam::Vec2;
 
 use crate::tiles::{Owner, SegmentFlags};
 
-/// Which faces of a segment a ray can hit.
+/// Which faces of a segment a ray or a cast can hit.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[non_exhaustive]
 pub enum Faces {
     /// Only faces the ray meets head-on: `dot(normal, p1 − p0) < 0` (the default).
     #[default]
@@ -18,16 +20,17 @@ pub enum Faces {
 /// What a query may hit.
 ///
 /// ```
-/// # use tileslide::{Faces, Owner, RayFilter, SegmentFlags, Vec2};
-/// let f = RayFilter::default();
+/// # use tileslide::{Faces, Owner, QueryFilter, SegmentFlags, Vec2};
+/// let f = QueryFilter::default();
 /// assert_eq!(f.faces, Faces::Front);
-/// let floor_only = RayFilter::against(Vec2::new(0.0, 1.0))
+/// let floor_only = QueryFilter::against(Vec2::new(0.0, 1.0))
 ///     .with_mask(SegmentFlags::SOLID)
 ///     .excluding(Owner(7));
 /// assert_eq!(floor_only.exclude_owner, Some(Owner(7)));
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RayFilter {
+pub struct QueryFilter {
     /// Which faces count.
     pub faces: Faces,
     /// A segment counts only if it has at least one of these flags.
@@ -36,7 +39,7 @@ pub struct RayFilter {
     pub exclude_owner: Option<Owner>,
 }
 
-impl Default for RayFilter {
+impl Default for QueryFilter {
     fn default() -> Self {
         Self {
             faces: Faces::Front,
@@ -46,7 +49,7 @@ impl Default for RayFilter {
     }
 }
 
-impl RayFilter {
+impl QueryFilter {
     /// Front faces only, every flag, no owner excluded (same as `default()`).
     #[must_use]
     pub fn front_faces() -> Self {
@@ -96,13 +99,13 @@ impl RayFilter {
     /// their tests hold them to this definition.
     ///
     /// ```
-    /// # use tileslide::{Owner, RayFilter, SegmentFlags, Vec2};
+    /// # use tileslide::{Owner, QueryFilter, SegmentFlags, Vec2};
     /// let right = Vec2::new(1.0, 0.0);
     /// let wall = Vec2::new(-1.0, 0.0); // a wall's face, seen from its left
-    /// let f = RayFilter::default();
+    /// let f = QueryFilter::default();
     /// assert!(f.accepts(right, wall, SegmentFlags::SOLID, None));
     /// assert!(!f.accepts(-right, wall, SegmentFlags::SOLID, None)); // its back
-    /// assert!(RayFilter::both_sides().accepts(-right, wall, SegmentFlags::SOLID, None));
+    /// assert!(QueryFilter::both_sides().accepts(-right, wall, SegmentFlags::SOLID, None));
     /// let door = Some(Owner(7));
     /// assert!(!f.excluding(Owner(7)).accepts(right, wall, SegmentFlags::SOLID, door));
     /// assert!(!f.with_mask(SegmentFlags::ONE_WAY).accepts(right, wall, SegmentFlags::SOLID, None));

@@ -3,7 +3,9 @@ use glam::Vec2;
 use crate::tiles::{Cell, Owner, SegmentFlags, SegmentRef, TileId};
 
 /// Where a segment found by a query comes from.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum SegmentSource {
     /// An active segment of a tile.
     Tile {
@@ -25,6 +27,7 @@ pub enum SegmentSource {
 }
 
 /// A ray's hit on a segment.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RayHit {
     /// Fraction along the ray, in `[0, 1]`.

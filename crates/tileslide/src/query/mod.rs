@@ -3,6 +3,7 @@
 
 mod circle_cast;
 mod circle_wide;
+mod error;
 mod fast_walk;
 mod filter;
 mod hit;
@@ -14,6 +15,7 @@ mod traversal;
 
 pub use circle_cast::CircleHit;
 pub(crate) use circle_cast::{Capsule, Wall};
-pub use filter::{Faces, RayFilter};
+pub use error::CastError;
+pub use filter::{Faces, QueryFilter};
 pub use hit::{RayHit, SegmentSource};
 pub use overlap::SegmentOverlap;

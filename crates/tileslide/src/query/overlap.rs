@@ -1,11 +1,12 @@
 use glam::{DVec2, Vec2};
 
 use super::SegmentSource;
-use crate::MAX_COORD;
 use crate::geometry::{Aabb, Circle, Segment, in_range};
+use crate::limits::MAX_COORD;
 use crate::tiles::{Cell, SegmentFlags, SegmentRef, TileId, TileMap};
 
 /// A segment found by an overlap query.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SegmentOverlap {
     /// The segment, in world coordinates.

@@ -24,7 +24,7 @@ use glam::Vec2;
 use super::fast_walk::WalkStart;
 use super::segment_test::SegmentTest;
 use super::traversal::GridRay;
-use super::{RayFilter, RayHit};
+use super::{QueryFilter, RayHit};
 use crate::geometry::Ray;
 use crate::tiles::face_kind::{KIND_GENERAL, face_index};
 use crate::tiles::{Cell, TileMap};
@@ -129,7 +129,7 @@ impl TileMap {
     /// sight for a crowd, sensor fans, lidar.
     ///
     /// ```
-    /// # use tileslide::{io::ascii, Ray, RayFilter, Vec2};
+    /// # use tileslide::{io::ascii, Ray, QueryFilter, Vec2};
     /// let map = ascii::parse("\
     /// #####
     /// #...#
@@ -138,20 +138,25 @@ impl TileMap {
     ///     Ray::between(Vec2::new(1.5, 1.5), Vec2::new(9.5, 1.5)),
     ///     Ray::between(Vec2::new(2.5, 1.5), Vec2::new(2.6, 1.5)),
     /// ];
-    /// let hits = map.cast_rays(&rays, &RayFilter::default());
+    /// let hits = map.cast_rays(&rays, &QueryFilter::default());
     /// assert_eq!(hits[0].unwrap().point, Vec2::new(4.0, 1.5));
     /// assert!(hits[1].is_none());
     /// # Ok::<(), tileslide::io::LoadError>(())
     /// ```
     #[must_use]
-    pub fn cast_rays(&self, rays: &[Ray], filter: &RayFilter) -> Vec<Option<RayHit>> {
+    pub fn cast_rays(&self, rays: &[Ray], filter: &QueryFilter) -> Vec<Option<RayHit>> {
         let mut out = Vec::with_capacity(rays.len());
         self.cast_rays_into(rays, filter, &mut out);
         out
     }
 
     /// [`cast_rays`](Self::cast_rays) into a buffer the caller reuses (cleared first).
-    pub fn cast_rays_into(&self, rays: &[Ray], filter: &RayFilter, out: &mut Vec<Option<RayHit>>) {
+    pub fn cast_rays_into(
+        &self,
+        rays: &[Ray],
+        filter: &QueryFilter,
+        out: &mut Vec<Option<RayHit>>,
+    ) {
         out.clear();
         if !self.batch_walks(filter) {
             out.extend(rays.iter().map(|&ray| self.cast_ray(ray, filter)));
@@ -174,7 +179,7 @@ impl TileMap {
     /// Whether the batch walk may answer rays under `filter`: temporary segments shorten
     /// each walk, and other filters test face cells segment by segment, both `cast_ray`'s
     /// work.
-    fn batch_walks(&self, filter: &RayFilter) -> bool {
+    fn batch_walks(&self, filter: &QueryFilter) -> bool {
         self.temporaries.is_empty() && SegmentTest::decides_by_faces(filter)
     }
 
@@ -186,7 +191,7 @@ impl TileMap {
     /// portable walk.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,bmi1,bmi2,lzcnt,popcnt")]
-    fn walk_avx2(&self, rays: &[Ray], filter: &RayFilter, out: &mut [Option<RayHit>]) {
+    fn walk_avx2(&self, rays: &[Ray], filter: &QueryFilter, out: &mut [Option<RayHit>]) {
         self.walk::<STEPS_PER_TURN_AVX2>(rays, filter, out);
     }
 
@@ -194,7 +199,7 @@ impl TileMap {
     /// tests that check it answers as `cast_ray` does on machines where `cast_rays` takes
     /// the AVX2 path.
     #[doc(hidden)]
-    pub fn cast_rays_portable(&self, rays: &[Ray], filter: &RayFilter) -> Vec<Option<RayHit>> {
+    pub fn cast_rays_portable(&self, rays: &[Ray], filter: &QueryFilter) -> Vec<Option<RayHit>> {
         if !self.batch_walks(filter) {
             return rays.iter().map(|&ray| self.cast_ray(ray, filter)).collect();
         }
@@ -210,7 +215,7 @@ impl TileMap {
     fn walk<const STEPS: usize>(
         &self,
         rays: &[Ray],
-        filter: &RayFilter,
+        filter: &QueryFilter,
         out: &mut [Option<RayHit>],
     ) {
         let mut walkers = [Group::default(); WALKERS];
@@ -368,7 +373,7 @@ impl TileMap {
     fn answer_face(
         &self,
         ray: Ray,
-        filter: &RayFilter,
+        filter: &QueryFilter,
         group: &Group,
         k: usize,
         slot: &mut Option<RayHit>,

@@ -5,7 +5,7 @@ use glam::{DVec2, Vec2};
 use super::fast_walk::{FastWalk, WalkData, fast_walk};
 use super::segment_test::{SegmentTest, cell_segments};
 use super::traversal::{GridRay, TOUCH_TOLERANCE, walk};
-use super::{RayFilter, RayHit, SegmentSource};
+use super::{QueryFilter, RayHit, SegmentSource};
 use crate::geometry::Ray;
 use crate::geometry::in_range;
 use crate::geometry::ray::{solve, solve_wide};
@@ -38,25 +38,25 @@ impl TileMap {
     ///   map, or whose motion is longer than 2³² or shorter than 2⁻³² cells along an axis,
     ///   is solved in `f64` on the part of it that crosses the map, with no early stop, and
     ///   its hit point is taken on the segment; from an origin beyond
-    ///   [`MAX_COORD`](crate::MAX_COORD) every cell is tested (see `docs/ray-casting.md`).
+    ///   [`MAX_COORD`](crate::limits::MAX_COORD) every cell is tested (see `docs/ray-casting.md`).
     ///
-    /// [`cast_ray_segment`]: crate::cast_ray_segment
+    /// [`cast_ray_segment`]: crate::geometry::cast_ray_segment
     /// [`Faces::Both`]: crate::Faces::Both
     ///
     /// ```
-    /// # use tileslide::{io::ascii, Ray, RayFilter, Vec2};
+    /// # use tileslide::{io::ascii, Ray, QueryFilter, Vec2};
     /// let map = ascii::parse("\
     /// #####
     /// #...#
     /// #####", "doc.txt", 1.0)?;
     /// let ray = Ray::between(Vec2::new(1.5, 1.5), Vec2::new(9.5, 1.5));
-    /// let hit = map.cast_ray(ray, &RayFilter::default()).unwrap();
+    /// let hit = map.cast_ray(ray, &QueryFilter::default()).unwrap();
     /// assert_eq!(hit.point, Vec2::new(4.0, 1.5));
     /// assert_eq!(hit.normal, Vec2::new(-1.0, 0.0));
     /// # Ok::<(), tileslide::io::LoadError>(())
     /// ```
     #[must_use]
-    pub fn cast_ray(&self, ray: Ray, filter: &RayFilter) -> Option<RayHit> {
+    pub fn cast_ray(&self, ray: Ray, filter: &QueryFilter) -> Option<RayHit> {
         let (p0, delta) = (ray.origin, ray.delta);
         let grid = self.grid_ray(p0, delta);
         // (False for a NaN or infinite coordinate too: the wide path answers those.)
@@ -145,14 +145,14 @@ impl TileMap {
     /// the segment's own cell, which the walk of `cast_ray` rightly stops short of), and
     /// listing it first would contradict `cast_ray`.
     #[must_use]
-    pub fn cast_ray_all(&self, ray: Ray, filter: &RayFilter) -> Vec<RayHit> {
+    pub fn cast_ray_all(&self, ray: Ray, filter: &QueryFilter) -> Vec<RayHit> {
         let mut out = Vec::new();
         self.cast_ray_all_into(ray, filter, &mut out);
         out
     }
 
     /// [`cast_ray_all`](Self::cast_ray_all) into a buffer the caller reuses (cleared first).
-    pub fn cast_ray_all_into(&self, ray: Ray, filter: &RayFilter, out: &mut Vec<RayHit>) {
+    pub fn cast_ray_all_into(&self, ray: Ray, filter: &QueryFilter, out: &mut Vec<RayHit>) {
         out.clear();
         // The rule of `cast_ray_all`: its first hit is this one, whatever the other hits'
         // rounding says.
@@ -166,7 +166,7 @@ impl TileMap {
 
     /// Every segment the ray hits, sorted by `t` (ties in the order `cast_ray` meets them),
     /// each once, into the empty `out`: the walk of `cast_ray` without its early stop.
-    fn every_hit(&self, ray: Ray, filter: &RayFilter, out: &mut Vec<RayHit>) {
+    fn every_hit(&self, ray: Ray, filter: &QueryFilter, out: &mut Vec<RayHit>) {
         let (p0, delta) = (ray.origin, ray.delta);
         let grid = self.grid_ray(p0, delta);
         let wide = !grid.is_ordinary();
@@ -226,7 +226,7 @@ impl TileMap {
     /// Every segment it may meet is solved in `f64` (`solve_wide`), with no early stop:
     /// the nearest hit, the first found of equals, in the order `cast_ray_all` lists them.
     #[inline(never)]
-    fn cast_ray_wide(&self, p0: Vec2, delta: Vec2, filter: &RayFilter) -> Option<RayHit> {
+    fn cast_ray_wide(&self, p0: Vec2, delta: Vec2, filter: &QueryFilter) -> Option<RayHit> {
         if !(p0.is_finite() && delta.is_finite()) {
             return None;
         }
@@ -254,7 +254,7 @@ impl TileMap {
     /// Calls `visit` with the index of every cell a finite ray that is not ordinary may
     /// hit a segment in, in walk order (a cell may come more than once).
     ///
-    /// From an origin within [`MAX_COORD`](crate::MAX_COORD), the ray is first clipped in
+    /// From an origin within [`MAX_COORD`](crate::limits::MAX_COORD), the ray is first clipped in
     /// `f64` to the map's rectangle widened by the touch tolerance, where the products of
     /// `f32` values are exact and nothing overflows; the clipped piece, in grid units,
     /// lies within the map (so `f32` holds it as well as any ray inside the map) and is
@@ -458,7 +458,7 @@ impl TileMap {
         &self,
         p0: Vec2,
         delta: Vec2,
-        filter: &RayFilter,
+        filter: &QueryFilter,
         wide: bool,
     ) -> impl Iterator<Item = (usize, f32, Vec2)> {
         self.temporaries

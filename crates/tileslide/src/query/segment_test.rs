@@ -2,7 +2,7 @@
 
 use glam::Vec2;
 
-use super::{Faces, RayFilter};
+use super::{Faces, QueryFilter};
 use crate::geometry::ray::{solve_parts, solve_wide};
 use crate::tiles::SegmentFlags;
 use crate::tiles::store::{HotSegment, NO_SEGMENTS};
@@ -19,7 +19,7 @@ pub(crate) struct SegmentTest {
 }
 
 impl SegmentTest {
-    pub fn new(p0: Vec2, delta: Vec2, filter: &RayFilter) -> Self {
+    pub fn new(p0: Vec2, delta: Vec2, filter: &QueryFilter) -> Self {
         let (face_dir, face_limit) = match filter.face_direction(delta) {
             Some(dir) => (dir, 0.0),
             None => (Vec2::ZERO, 1.0),
@@ -36,7 +36,7 @@ impl SegmentTest {
     /// True when cells of whole-edge solid faces can be decided by the face a ray enters
     /// through: front faces only, and solid segments count (see `fast_walk`).
     #[inline(always)]
-    pub fn decides_by_faces(filter: &RayFilter) -> bool {
+    pub fn decides_by_faces(filter: &QueryFilter) -> bool {
         matches!(filter.faces, Faces::Front) && filter.mask.contains(SegmentFlags::SOLID)
     }
 
@@ -170,16 +170,16 @@ mod tests {
         #![proptest_config(ProptestConfig::with_cases(2_000))]
 
         /// The walks' branch-free filter (`dot(normal, face_dir) < face_limit` and a mask
-        /// test) lets through exactly the segments `RayFilter::accepts` accepts.
+        /// test) lets through exactly the segments `QueryFilter::accepts` accepts.
         #[test]
-        fn the_branch_free_filter_is_ray_filter_accepts(
+        fn the_branch_free_filter_is_query_filter_accepts(
             faces in faces(),
             mask in flags(),
             delta in vector(),
             normal in normal(),
             segment_flags in flags(),
         ) {
-            let filter = RayFilter { faces, mask, exclude_owner: None };
+            let filter = QueryFilter { faces, mask, exclude_owner: None };
             let test = SegmentTest::new(Vec2::ZERO, delta, &filter);
             prop_assert_eq!(
                 test.passes(&segment(normal, segment_flags)),
@@ -197,7 +197,7 @@ mod tests {
             delta in vector(),
             face in 0usize..4,
         ) {
-            let filter = RayFilter { faces, mask, exclude_owner: None };
+            let filter = QueryFilter { faces, mask, exclude_owner: None };
             let normal = [Vec2::X, Vec2::NEG_X, Vec2::Y, Vec2::NEG_Y][face];
             if SegmentTest::decides_by_faces(&filter) {
                 prop_assert_eq!(
@@ -210,11 +210,11 @@ mod tests {
 
     #[test]
     fn a_temporary_segment_of_the_excluded_owner_is_refused_and_a_tiles_is_not() {
-        let filter = RayFilter::both_sides().excluding(Owner(3));
+        let filter = QueryFilter::both_sides().excluding(Owner(3));
         let (delta, normal) = (Vec2::X, Vec2::NEG_X);
         assert!(!filter.accepts(delta, normal, SegmentFlags::SOLID, Some(Owner(3))));
         assert!(filter.accepts(delta, normal, SegmentFlags::SOLID, Some(Owner(4))));
         assert!(filter.accepts(delta, normal, SegmentFlags::SOLID, None));
-        assert!(RayFilter::default().accepts(delta, normal, SegmentFlags::SOLID, Some(Owner(3))));
+        assert!(QueryFilter::default().accepts(delta, normal, SegmentFlags::SOLID, Some(Owner(3))));
     }
 }

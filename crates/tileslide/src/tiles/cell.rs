@@ -2,6 +2,7 @@ use std::fmt;
 
 /// A cell of a [`TileMap`](crate::TileMap): column and row. Cell `(col, row)` covers
 /// `[col·w, (col+1)·w) × [row·h, (row+1)·h)` relative to the map's origin.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Cell {
     /// Column, counted from the map's origin along x.
@@ -25,7 +26,9 @@ impl fmt::Display for Cell {
 }
 
 /// A tile id: the key of a tile shape in a [`TileSet`](crate::TileSet).
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(feature = "serde", serde(transparent))]
 pub struct TileId(pub u32);
 
 impl fmt::Display for TileId {

@@ -10,7 +10,9 @@ use std::ops::{BitAnd, BitOr, BitOrAssign};
 /// assert!(spikes.intersects(SegmentFlags::SOLID));
 /// assert!(!spikes.intersects(SegmentFlags::ONE_WAY));
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "serde", serde(transparent))]
 pub struct SegmentFlags(pub u32);
 
 impl SegmentFlags {

@@ -77,6 +77,7 @@ impl Eq for MapRevision {}
 
 /// Why a map cannot list the edits since a revision.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum JournalError {
     /// The revision is this map's (or its lineage's), but older than the
     /// [`JOURNAL_EDITS`] edits the map remembers: rebuild from the map as it is.

@@ -21,6 +21,7 @@ pub const MAX_CELLS: u64 = 1 << 26;
 /// (`(b − a).perp_dot(normal) <= 0`), whatever direction its tile shape gave it: with y up,
 /// solids are walked counter-clockwise. A resolver telling convex from concave corners can
 /// rely on that.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ActiveSegment {
     /// The segment in world coordinates. A piece of a partly hidden tile segment is shorter

@@ -7,6 +7,7 @@ use super::{Cell, TemporaryError, TileId};
 
 /// Why a map could not be built or edited.
 #[derive(Clone, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum MapError {
     /// Width and height must both be at least 1.
     #[error("map size {width}×{height} is empty")]
@@ -32,12 +33,12 @@ pub enum MapError {
         /// y given.
         y: f32,
     },
-    /// The map would reach past [`MAX_COORD`](crate::MAX_COORD) from the origin: its
+    /// The map would reach past [`MAX_COORD`](crate::limits::MAX_COORD) from the origin: its
     /// corners are where every query and body would compute.
     #[error(
         "map of {width}×{height} cells at ({x}, {y}) reaches ({far_x}, {far_y}), past the \
          ±{max} coordinate range (MAX_COORD)",
-        max = crate::MAX_COORD
+        max = crate::limits::MAX_COORD
     )]
     OutOfRange {
         /// Width given.

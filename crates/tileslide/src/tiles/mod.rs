@@ -21,6 +21,7 @@ mod temporary;
 mod tile_set;
 mod trace;
 
+pub use crate::owner::Owner;
 pub use cell::{Cell, TileId};
 pub use flags::SegmentFlags;
 pub use journal::{JOURNAL_EDITS, JournalError, MapRevision};
@@ -28,5 +29,5 @@ pub use map::{ActiveSegment, MAX_CELLS, TileMap};
 pub use map_error::MapError;
 pub use segment_ref::SegmentRef;
 pub use shape::{MAX_SHAPE_SEGMENTS, ShapeError, TileSegment, TileShape};
-pub use temporary::{Owner, TemporaryError, TemporarySegment};
+pub use temporary::{TemporaryError, TemporarySegment};
 pub use tile_set::{TileSet, TileSetError};

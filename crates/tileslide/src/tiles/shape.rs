@@ -5,6 +5,7 @@ use super::SegmentFlags;
 use crate::geometry::{Ray, Segment, cast_ray_segment, unit_normal};
 
 /// One segment of a tile shape, in tile-local coordinates.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TileSegment {
     /// Start point, tile-local.
@@ -41,6 +42,7 @@ pub const MAX_SHAPE_SEGMENTS: usize = 4096;
 
 /// Why a tile shape was refused.
 #[derive(Clone, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum ShapeError {
     /// A coordinate or normal component is NaN or infinite.
     #[error("segment {segment} has a non-finite coordinate or normal")]

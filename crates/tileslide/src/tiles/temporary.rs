@@ -3,14 +3,12 @@ use thiserror::Error;
 
 use super::{MapError, SegmentFlags, TileMap};
 use crate::geometry::{Segment, in_range, unit_normal};
-
-/// Who submitted a temporary segment: any number the game uses for its objects.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Owner(pub u64);
+use crate::owner::Owner;
 
 /// A segment that is part of the world only until it is cleared: a moving platform's top, a
 /// door. Queries treat it like a tile segment, except that it knows who owns it (so the
 /// owner's own casts can skip it) and how fast it moves (so a rider can be carried).
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TemporarySegment {
     /// The segment, in world coordinates.
@@ -27,6 +25,7 @@ pub struct TemporarySegment {
 
 /// Why a temporary segment was refused.
 #[derive(Clone, Copy, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum TemporaryError {
     /// A coordinate, normal or velocity component is NaN or infinite.
     #[error("temporary segment of owner {} has a non-finite coordinate, normal or velocity", .0.0)]
@@ -37,13 +36,13 @@ pub enum TemporaryError {
     /// The normal is the zero vector.
     #[error("temporary segment of owner {} has a zero normal", .0.0)]
     ZeroNormal(Owner),
-    /// An end point lies beyond [`MAX_COORD`](crate::MAX_COORD): every query computes with
+    /// An end point lies beyond [`MAX_COORD`](crate::limits::MAX_COORD): every query computes with
     /// the segment, and promises its answers within that range only.
     #[error(
         "temporary segment of owner {} has end point ({x}, {y}), past the ±{max} coordinate \
          range (MAX_COORD)",
         owner.0,
-        max = crate::MAX_COORD
+        max = crate::limits::MAX_COORD
     )]
     OutOfRange {
         /// Who submitted it.
@@ -56,7 +55,7 @@ pub enum TemporaryError {
 }
 
 impl TemporarySegment {
-    /// Checks the segment (finite, within [`MAX_COORD`](crate::MAX_COORD), not a point, a
+    /// Checks the segment (finite, within [`MAX_COORD`](crate::limits::MAX_COORD), not a point, a
     /// non-zero normal) and normalises its normal.
     pub(crate) fn validated(mut self) -> Result<Self, TemporaryError> {
         let id = self.owner;

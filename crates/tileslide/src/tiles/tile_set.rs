@@ -7,6 +7,7 @@ use super::{ShapeError, TileId, TileShape};
 
 /// Why a tile set refused a tile or a size.
 #[derive(Clone, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum TileSetError {
     /// The tile size must be positive and finite on both axes.
     #[error("tile size {w}×{h} is not positive and finite")]

@@ -18,7 +18,9 @@ use std::ops::{BitAnd, BitOr, BitOrAssign};
 /// assert!(HitTypes::ANY.matches(FREEZE) && FREEZE.matches(HitTypes::ANY));
 /// assert_eq!(HitTypes::ANY & coin, coin); // what a hit of "any" on a coin deals
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "serde", serde(transparent))]
 pub struct HitTypes(u32);
 
 impl HitTypes {

@@ -13,12 +13,14 @@ use super::HitTypes;
 use crate::geometry::{Aabb, Circle, MAX_COORD, Segment, in_range};
 
 /// A volume's shape in object-local coordinates.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum VolumeShape {
     /// A disc (radius ≥ 0).
     Circle(Circle),
-    /// An axis-aligned box.
-    Box(Aabb),
+    /// An axis-aligned rectangle (`min ≤ max`).
+    Rect(Aabb),
 }
 
 /// An attack or vulnerability volume: a shape and the hit types it deals or accepts.
@@ -26,9 +28,11 @@ pub enum VolumeShape {
 /// ```
 /// use tileslide::{HitTypes, Vec2, Volume};
 /// let fist = Volume::circle(Vec2::new(1.5, 1.0), 0.25, HitTypes::HIT)?;
-/// let body = Volume::rect(Vec2::ZERO, Vec2::new(1.0, 2.0), HitTypes::ANY)?;
+/// // 1 wide and 2 tall, from the object's position: centre (0.5, 1), half extents (0.5, 1).
+/// let body = Volume::rect(Vec2::new(0.5, 1.0), Vec2::new(0.5, 1.0), HitTypes::ANY)?;
 /// # Ok::<(), tileslide::VolumeError>(())
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Volume {
     /// The shape, in object-local coordinates.
@@ -39,6 +43,7 @@ pub struct Volume {
 
 /// A volume that cannot be used.
 #[derive(Clone, Copy, Debug, Error, PartialEq)]
+#[non_exhaustive]
 pub enum VolumeError {
     /// A coordinate or radius is NaN or infinite.
     #[error("volume has a non-finite {what}: ({x}, {y})")]
@@ -53,8 +58,9 @@ pub enum VolumeError {
     /// A coordinate or radius beyond [`MAX_COORD`].
     #[error("{what} ({x}, {y}) is out of range: each coordinate must be at most {max} in magnitude", max = MAX_COORD)]
     OutOfRange {
-        /// Which value: a volume's `"center"`, `"radius"`, `"min"` or `"max"`, or a hit
-        /// object's `"position"`, `"start"` (its position less its motion) or `"size"`.
+        /// Which value: a volume's `"center"`, `"radius"`, `"half extents"`, `"min"` or
+        /// `"max"`, or a hit object's `"position"`, `"start"` (its position less its motion)
+        /// or `"size"`.
         what: &'static str,
         /// The value (a radius has `y = 0`).
         x: f32,
@@ -64,9 +70,17 @@ pub enum VolumeError {
     /// A circle with a negative radius.
     #[error("volume circle has a negative radius {0}")]
     NegativeRadius(f32),
-    /// A box whose `min` is not below its `max` on both axes.
-    #[error("volume box has min ({min_x}, {min_y}) above max ({max_x}, {max_y})")]
-    InvertedBox {
+    /// A rectangle with a negative half extent.
+    #[error("volume rect has negative half extents ({x}, {y})")]
+    NegativeHalfExtents {
+        /// Half the width.
+        x: f32,
+        /// Half the height.
+        y: f32,
+    },
+    /// A rectangle whose `min` is not below its `max` on both axes.
+    #[error("volume rect has min ({min_x}, {min_y}) above max ({max_x}, {max_y})")]
+    InvertedRect {
         /// `min.x`.
         min_x: f32,
         /// `min.y`.
@@ -105,14 +119,28 @@ impl Volume {
         Ok(volume)
     }
 
-    /// The box from `min` to `max` (object-local, `min ≤ max`).
+    /// The rectangle centred at `center` (object-local) with half extents `half` ≥ 0 (half
+    /// the width, half the height), as [`CharacterShape::rect`](crate::CharacterShape::rect)
+    /// takes them. A caller holding corners can build
+    /// `VolumeShape::Rect(Aabb { min, max })` and [`check`](Self::check) it.
     ///
     /// # Errors
-    /// [`VolumeError::NonFinite`], [`VolumeError::OutOfRange`] (beyond [`MAX_COORD`]) or
-    /// [`VolumeError::InvertedBox`].
-    pub fn rect(min: Vec2, max: Vec2, hit: HitTypes) -> Result<Self, VolumeError> {
+    /// [`VolumeError::NonFinite`], [`VolumeError::OutOfRange`] (a centre, half extents or
+    /// corner beyond [`MAX_COORD`]) or [`VolumeError::NegativeHalfExtents`].
+    pub fn rect(center: Vec2, half: Vec2, hit: HitTypes) -> Result<Self, VolumeError> {
+        check_range("center", center)?;
+        check_range("half extents", half)?;
+        if !half.cmpge(Vec2::ZERO).all() {
+            return Err(VolumeError::NegativeHalfExtents {
+                x: half.x,
+                y: half.y,
+            });
+        }
         let volume = Self {
-            shape: VolumeShape::Box(Aabb { min, max }),
+            shape: VolumeShape::Rect(Aabb {
+                min: center - half,
+                max: center + half,
+            }),
             hit,
         };
         volume.check()?;
@@ -135,11 +163,11 @@ impl Volume {
                     return Err(VolumeError::NegativeRadius(radius));
                 }
             }
-            VolumeShape::Box(Aabb { min, max }) => {
+            VolumeShape::Rect(Aabb { min, max }) => {
                 check_range("min", min)?;
                 check_range("max", max)?;
                 if !min.cmple(max).all() {
-                    return Err(VolumeError::InvertedBox {
+                    return Err(VolumeError::InvertedRect {
                         min_x: min.x,
                         min_y: min.y,
                         max_x: max.x,
@@ -154,6 +182,7 @@ impl Volume {
 
 /// Which way an object faces: a volume is mirrored about the middle of the object's size on
 /// each flipped axis (Replica Island: `x → width − x` when facing left).
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Facing {
     /// Mirror x (facing left, for a game whose volumes are drawn facing right).
@@ -166,7 +195,7 @@ pub struct Facing {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Placed {
     Circle { center: Vec2, radius: f32 },
-    Box(Aabb),
+    Rect(Aabb),
 }
 
 impl Placed {
@@ -182,7 +211,7 @@ impl Placed {
                     ),
                 radius: c.radius,
             },
-            VolumeShape::Box(b) => {
+            VolumeShape::Rect(b) => {
                 let (x0, x1) = if facing.flip_x {
                     (size.x - b.max.x, size.x - b.min.x)
                 } else {
@@ -193,7 +222,7 @@ impl Placed {
                 } else {
                     (b.min.y, b.max.y)
                 };
-                Placed::Box(Aabb {
+                Placed::Rect(Aabb {
                     min: position + Vec2::new(x0, y0),
                     max: position + Vec2::new(x1, y1),
                 })
@@ -208,7 +237,7 @@ impl Placed {
                 min: center - Vec2::splat(radius),
                 max: center + Vec2::splat(radius),
             },
-            Placed::Box(b) => b,
+            Placed::Rect(b) => b,
         }
     }
 
@@ -216,7 +245,7 @@ impl Placed {
     pub fn reach_from(&self, p: Vec2) -> f32 {
         match *self {
             Placed::Circle { center, radius } => center.distance(p) + radius,
-            Placed::Box(b) => (b.min - p).abs().max((b.max - p).abs()).length(),
+            Placed::Rect(b) => (b.min - p).abs().max((b.max - p).abs()).length(),
         }
     }
 
@@ -236,14 +265,14 @@ impl Placed {
                 let reach = radius + r;
                 Segment::new(center, center + motion).distance_squared_to(c) <= reach * reach
             }
-            (Placed::Circle { center, radius }, Placed::Box(b)) => {
+            (Placed::Circle { center, radius }, Placed::Rect(b)) => {
                 circle_path_meets_box(center, motion, radius, &b)
             }
-            (Placed::Box(b), Placed::Circle { center, radius }) => {
+            (Placed::Rect(b), Placed::Circle { center, radius }) => {
                 // In the box's frame the circle moves the other way.
                 circle_path_meets_box(center, -motion, radius, &b)
             }
-            (Placed::Box(a), Placed::Box(b)) => {
+            (Placed::Rect(a), Placed::Rect(b)) => {
                 // Minkowski difference: the centre of `a` against `b` grown by `a`'s half
                 // size; its path as a slab test.
                 let half = (a.max - a.min) * 0.5;
@@ -315,7 +344,7 @@ mod tests {
     }
 
     fn rect(x0: f32, y0: f32, x1: f32, y1: f32) -> Placed {
-        Placed::Box(Aabb {
+        Placed::Rect(Aabb {
             min: Vec2::new(x0, y0),
             max: Vec2::new(x1, y1),
         })
@@ -367,7 +396,7 @@ mod tests {
             Placed::new(&fist, at, size, left),
             circle(10.25, 21.0, 0.25)
         );
-        let blade = VolumeShape::Box(Aabb {
+        let blade = VolumeShape::Rect(Aabb {
             min: Vec2::new(1.5, 0.5),
             max: Vec2::new(2.5, 1.0),
         });
@@ -396,8 +425,26 @@ mod tests {
             Err(VolumeError::NonFinite { what: "center", .. })
         ));
         assert!(matches!(
-            Volume::rect(Vec2::ONE, Vec2::ZERO, HitTypes::HIT),
-            Err(VolumeError::InvertedBox { .. })
+            Volume::rect(Vec2::ONE, Vec2::new(0.5, -0.5), HitTypes::HIT),
+            Err(VolumeError::NegativeHalfExtents { .. })
+        ));
+        assert!(matches!(
+            Volume::rect(Vec2::ONE, Vec2::NAN, HitTypes::HIT),
+            Err(VolumeError::NonFinite {
+                what: "half extents",
+                ..
+            })
+        ));
+        let inside_out = Volume {
+            shape: VolumeShape::Rect(Aabb {
+                min: Vec2::ONE,
+                max: Vec2::ZERO,
+            }),
+            hit: HitTypes::HIT,
+        };
+        assert!(matches!(
+            inside_out.check(),
+            Err(VolumeError::InvertedRect { .. })
         ));
     }
 }

@@ -7,14 +7,16 @@ use glam::Vec2;
 
 use super::HitTypes;
 use super::volume::{Facing, Placed, Volume, VolumeError, check_range};
-use crate::broadphase::{Broadphase, PairFinder};
+use crate::broadphase::{PairFinder, PairMethod};
 use crate::geometry::{Aabb, Circle};
+use crate::owner::Owner;
 
 /// An object registered for one frame: where it is, how it faces, and who it is.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HitObject {
-    /// The game's id for it (stable across frames: "hit once per swing" keys on it).
-    pub key: u64,
+    /// The caller's entity (stable across frames: "hit once per swing" remembers it).
+    pub owner: Owner,
     /// Its position at the end of the frame (its volumes' local origin).
     pub position: Vec2,
     /// How far it moved during the frame: its volumes are tested along the whole move, so
@@ -34,12 +36,12 @@ pub struct HitObject {
 }
 
 impl HitObject {
-    /// An object of `key` at `position` of `size`: still, facing right and up, team 0, no
+    /// An object of `owner` at `position` of `size`: still, facing right and up, team 0, no
     /// swing.
     #[must_use]
-    pub fn new(key: u64, position: Vec2, size: Vec2) -> Self {
+    pub fn new(owner: Owner, position: Vec2, size: Vec2) -> Self {
         Self {
-            key,
+            owner,
             position,
             motion: Vec2::ZERO,
             size,
@@ -52,7 +54,7 @@ impl HitObject {
 
     /// Whether the object can be registered with its volumes: its position, where it
     /// starts the frame (`position − motion`) and its size finite and within
-    /// [`MAX_COORD`](crate::MAX_COORD), so that placing and sweeping its volumes cannot
+    /// [`MAX_COORD`](crate::limits::MAX_COORD), so that placing and sweeping its volumes cannot
     /// overflow. [`HitWorld::register`] refuses an object this refuses.
     ///
     /// # Errors
@@ -73,11 +75,14 @@ impl HitObject {
 }
 
 /// An object's index in the frame's registrations.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(feature = "serde", serde(transparent))]
 pub struct ObjectId(pub u32);
 
 /// One hit: an attack volume of `attacker` met a vulnerability volume of `victim` that
 /// accepts its type.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct HitEvent {
     /// Who hit.
@@ -139,14 +144,14 @@ struct Entry {
 /// registration order, then `i` hitting `j` before `j` hitting `i`.
 ///
 /// ```
-/// use tileslide::{HitObject, HitTypes, HitWorld, TeamRule, Vec2, Volume};
+/// use tileslide::{HitObject, HitTypes, HitWorld, Owner, TeamRule, Vec2, Volume};
 /// let mut world = HitWorld::new();
 /// world.begin_frame();
-/// let hero = HitObject { team: 1, ..HitObject::new(1, Vec2::ZERO, Vec2::new(1.0, 2.0)) };
+/// let hero = HitObject { team: 1, ..HitObject::new(Owner(1), Vec2::ZERO, Vec2::new(1.0, 2.0)) };
 /// let fist = [Volume::circle(Vec2::new(1.3, 1.0), 0.3, HitTypes::HIT)?];
-/// let body = [Volume::rect(Vec2::ZERO, Vec2::new(1.0, 2.0), HitTypes::ANY)?];
+/// let body = [Volume::rect(Vec2::new(0.5, 1.0), Vec2::new(0.5, 1.0), HitTypes::ANY)?];
 /// let hero = world.register(hero, &fist, &body)?;
-/// let slime = HitObject::new(2, Vec2::new(1.5, 0.0), Vec2::ONE);
+/// let slime = HitObject::new(Owner(2), Vec2::new(1.5, 0.0), Vec2::ONE);
 /// let slime = world.register(slime, &[], &body[..1])?;
 /// let hits = world.detect(&mut TeamRule);
 /// assert_eq!(hits.len(), 1);
@@ -157,7 +162,7 @@ struct Entry {
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct HitWorld {
-    broadphase: Broadphase,
+    broadphase: PairMethod,
     entries: Vec<Entry>,
     attack: Vec<Volume>,
     vulnerable: Vec<Volume>,
@@ -165,8 +170,8 @@ pub struct HitWorld {
     boxes: Vec<Aabb>,
     pairs: Vec<(u32, u32)>,
     events: Vec<HitEvent>,
-    /// Accepted hits per swing: `(swing, victim key)`.
-    swung: HashSet<(u64, u64)>,
+    /// Accepted hits per swing: `(swing, victim owner)`.
+    swung: HashSet<(u64, Owner)>,
     /// Swings registered this frame and the last.
     swings_now: HashSet<u64>,
     swings_before: HashSet<u64>,
@@ -176,12 +181,12 @@ impl HitWorld {
     /// An empty world using sweep and prune on x, as Replica Island does.
     #[must_use]
     pub fn new() -> Self {
-        Self::with_broadphase(Broadphase::SweepAndPrune)
+        Self::with_broadphase(PairMethod::SweepAndPrune)
     }
 
     /// An empty world using `broadphase` (the results are the same either way).
     #[must_use]
-    pub fn with_broadphase(broadphase: Broadphase) -> Self {
+    pub fn with_broadphase(broadphase: PairMethod) -> Self {
         Self {
             broadphase,
             ..Self::default()
@@ -209,7 +214,7 @@ impl HitWorld {
     /// What [`HitObject::check`] or [`Volume::check`] says of the object or of its first
     /// bad volume (a NaN, infinite or out-of-range position, start, size, centre or
     /// corner); the world is unchanged. So every pair test computes within a few times
-    /// [`MAX_COORD`](crate::MAX_COORD), where nothing overflows (a box at 3·10³⁸ once
+    /// [`MAX_COORD`](crate::limits::MAX_COORD), where nothing overflows (a box at 3·10³⁸ once
     /// missed a box it lay in, its centre overflowing to infinity).
     pub fn register(
         &mut self,
@@ -319,7 +324,7 @@ impl HitWorld {
     fn hit(&mut self, a: u32, v: u32, rule: &mut impl HitRule) {
         let (ea, ev) = (&self.entries[a as usize], &self.entries[v as usize]);
         if let Some(swing) = ea.object.swing
-            && self.swung.contains(&(swing, ev.object.key))
+            && self.swung.contains(&(swing, ev.object.owner))
         {
             return;
         }
@@ -340,7 +345,7 @@ impl HitWorld {
         };
         let accepted = rule.accept(&ea.object, &ev.object, hit_type);
         if accepted && let Some(swing) = ea.object.swing {
-            self.swung.insert((swing, ev.object.key));
+            self.swung.insert((swing, ev.object.owner));
         }
         self.events.push(HitEvent {
             attacker: ObjectId(a),

@@ -1,5 +1,5 @@
 //! Generators shared by the property tests: random maps of `io::ascii` tiles on any cell size
-//! and origin, and random ray filters. A test that draws inside a case seeds
+//! and origin, and random query filters. A test that draws inside a case seeds
 //! `tileslide_scenes::SplitMix64` from a value proptest chose, so a failing case replays.
 
 // Each test uses a different part of this module.
@@ -10,7 +10,9 @@ use std::sync::Arc;
 use proptest::prelude::*;
 use proptest::strategy::Union;
 use tileslide::io::ascii;
-use tileslide::{Faces, Owner, RayFilter, Segment, SegmentFlags, TemporarySegment, TileMap, Vec2};
+use tileslide::{
+    Faces, Owner, QueryFilter, Segment, SegmentFlags, TemporarySegment, TileMap, Vec2,
+};
 
 /// The map of `chars`, ASCII tile characters row by row, `width` to a row (`width > 0`),
 /// with cells `cell` map units wide and its top-left corner at `origin`.
@@ -81,10 +83,10 @@ pub fn varied_tile_chars(len: usize) -> impl Strategy<Value = Vec<char>> {
     })
 }
 
-/// Any ray filter: front faces, both faces or faces against a direction (small integer
+/// Any query filter: front faces, both faces or faces against a direction (small integer
 /// components, the zero vector included), every flag or one, and no owner or one of the
 /// first three excluded.
-pub fn ray_filter() -> impl Strategy<Value = RayFilter> {
+pub fn query_filter() -> impl Strategy<Value = QueryFilter> {
     let faces = prop_oneof![
         3 => Just(Faces::Front),
         2 => Just(Faces::Both),
@@ -97,7 +99,7 @@ pub fn ray_filter() -> impl Strategy<Value = RayFilter> {
         1 => Just(SegmentFlags::ONE_WAY),
     ];
     let exclude = prop_oneof![Just(None), (0u64..3).prop_map(|o| Some(Owner(o)))];
-    (faces, mask, exclude).prop_map(|(faces, mask, exclude_owner)| RayFilter {
+    (faces, mask, exclude).prop_map(|(faces, mask, exclude_owner)| QueryFilter {
         faces,
         mask,
         exclude_owner,

@@ -6,7 +6,7 @@ use glam::Vec2;
 use super::{Character, MoveOptions, end_point, nearest_end};
 use crate::controller::CharacterShape;
 use crate::geometry::Aabb;
-use crate::query::{RayFilter, Wall};
+use crate::query::{QueryFilter, Wall};
 use crate::tiles::TileMap;
 
 /// How many halvings [`Character::edge`] makes of a walk's leg to find where the ground
@@ -122,7 +122,7 @@ impl Character {
             a.max.max(b.max).max(c.max.max(d.max)),
         )
         .expand(self.config.skin);
-        let filter = RayFilter::default().with_mask(self.config.mask);
+        let filter = QueryFilter::default().with_mask(self.config.mask);
         self.walls.clear();
         map.walls_in(&region, &filter, &mut self.walls);
         let width = self.shape.support(self.side);
