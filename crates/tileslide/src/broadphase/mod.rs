@@ -304,7 +304,7 @@ mod tests {
         fn boxes_of_any_finite_coordinates_match_all_pairs(
             boxes in prop::collection::vec(
                 (
-                    prop_oneof![4 => Just(1.0f32), 1 => Just(crate::limits::MAX_COORD), 1 => Just(1e30f32), 1 => Just(f32::MAX)],
+                    prop_oneof![4 => Just(1.0f32), 1 => Just(crate::geometry::MAX_COORD), 1 => Just(1e30f32), 1 => Just(f32::MAX)],
                     -1.0f32..1.0,
                     -1.0f32..1.0,
                     0.0f32..0.5,

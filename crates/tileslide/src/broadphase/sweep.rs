@@ -350,7 +350,7 @@ mod tests {
         };
         for far in [
             glam::Vec2::new(0.0, 1.0e6),
-            glam::Vec2::splat(crate::limits::MAX_COORD),
+            glam::Vec2::splat(crate::geometry::MAX_COORD),
         ] {
             let mut boxes: Vec<Aabb> = (0..9)
                 .map(|i| unit((i % 3) as f32 * 0.5, (i / 3) as f32 * 0.5))

@@ -34,7 +34,7 @@ pub enum ControllerError {
     /// A position, or the end point of a move, lies beyond [`MAX_COORD`](crate::limits::MAX_COORD).
     #[error(
         "character {what} {value} is beyond the coordinate range (±{})",
-        crate::limits::MAX_COORD
+        crate::geometry::MAX_COORD
     )]
     OutOfRange {
         /// Which value: `"position"` or `"displacement"` (the move's end point is out of
@@ -47,7 +47,7 @@ pub enum ControllerError {
     /// [`MAX_COORD`](crate::limits::MAX_COORD).
     #[error(
         "character shape {what} must be positive and at most {}, got {value}",
-        crate::limits::MAX_COORD
+        crate::geometry::MAX_COORD
     )]
     BadShape {
         /// `"radius"` or `"half extents"`.
@@ -64,7 +64,7 @@ pub enum ControllerError {
     /// A [`ControllerConfig`] field was out of range.
     #[error(
         "controller config field `{field}` is out of range: {value} (max_slope_degrees in [0, 90), distances in [0, {}], max_slides at least 1)",
-        crate::limits::MAX_COORD
+        crate::geometry::MAX_COORD
     )]
     BadConfig {
         /// The field's name.

@@ -61,7 +61,7 @@ pub enum NavError {
         point: Vec2,
     },
     /// A point with a coordinate beyond [`MAX_COORD`](crate::limits::MAX_COORD) in magnitude.
-    #[error("the {what} point {point} is beyond the ±{max} coordinate range (MAX_COORD)", max = crate::limits::MAX_COORD)]
+    #[error("the {what} point {point} is beyond the ±{max} coordinate range (MAX_COORD)", max = crate::geometry::MAX_COORD)]
     OutOfRange {
         /// Which point (`from`, `to`, `goal`, …).
         what: &'static str,

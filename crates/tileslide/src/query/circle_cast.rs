@@ -9,9 +9,8 @@ use glam::Vec2;
 
 use super::{CastError, Faces, QueryFilter, SegmentSource};
 use crate::geometry::{
-    Aabb, EndCaps, Segment, SweepHit, circle_segment, in_range, sweep_circle_segment,
+    Aabb, EndCaps, MAX_COORD, Segment, SweepHit, circle_segment, in_range, sweep_circle_segment,
 };
-use crate::limits::MAX_COORD;
 use crate::tiles::store::{CAP_A, CAP_B, HotSegment};
 use crate::tiles::{Owner, SegmentFlags, SegmentRef, TileId, TileMap};
 

@@ -1,8 +1,7 @@
 use glam::{DVec2, Vec2};
 
 use super::SegmentSource;
-use crate::geometry::{Aabb, Circle, Segment, in_range};
-use crate::limits::MAX_COORD;
+use crate::geometry::{Aabb, Circle, MAX_COORD, Segment, in_range};
 use crate::tiles::{Cell, SegmentFlags, SegmentRef, TileId, TileMap};
 
 /// A segment found by an overlap query.

@@ -38,7 +38,7 @@ pub enum MapError {
     #[error(
         "map of {width}×{height} cells at ({x}, {y}) reaches ({far_x}, {far_y}), past the \
          ±{max} coordinate range (MAX_COORD)",
-        max = crate::limits::MAX_COORD
+        max = crate::geometry::MAX_COORD
     )]
     OutOfRange {
         /// Width given.

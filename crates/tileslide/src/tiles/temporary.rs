@@ -42,7 +42,7 @@ pub enum TemporaryError {
         "temporary segment of owner {} has end point ({x}, {y}), past the ±{max} coordinate \
          range (MAX_COORD)",
         owner.0,
-        max = crate::limits::MAX_COORD
+        max = crate::geometry::MAX_COORD
     )]
     OutOfRange {
         /// Who submitted it.

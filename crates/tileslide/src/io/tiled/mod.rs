@@ -113,7 +113,7 @@ impl Default for TiledOptions {
     fn default() -> Self {
         Self {
             layer: None,
-            max_cells: crate::limits::MAX_CELLS,
+            max_cells: crate::tiles::MAX_CELLS,
             max_chunk_spread: 64,
         }
     }
@@ -145,13 +145,13 @@ impl TiledOptions {
 
     /// The cell bound in force: [`max_cells`](Self::max_cells), at most `MAX_CELLS`.
     fn cell_bound(&self) -> u64 {
-        self.max_cells.min(crate::limits::MAX_CELLS)
+        self.max_cells.min(crate::tiles::MAX_CELLS)
     }
 }
 
 /// How errors name the cell bound `limit`, and how to raise it.
 fn cell_limit(limit: u64) -> String {
-    if limit >= crate::limits::MAX_CELLS {
+    if limit >= crate::tiles::MAX_CELLS {
         format!("{limit} cells")
     } else {
         format!("{limit} cells (`TiledOptions::max_cells`; raise it to load this map)")
