@@ -1,0 +1,45 @@
+#!/bin/sh
+# Builds web/pkg/: the ES module tileslide.js, its tileslide_bg.wasm and the TypeScript
+# types tileslide.d.ts, from crates/tileslide-wasm. Installs what it needs and lacks: the
+# wasm32 target (through rustup) and wasm-bindgen-cli at the exact version of the
+# wasm-bindgen crate (the two must match).
+set -eu
+
+cd "$(dirname "$0")"
+root=..
+
+if ! command -v cargo >/dev/null 2>&1 && [ -f "${CARGO_HOME:-$HOME/.cargo}/env" ]; then
+    . "${CARGO_HOME:-$HOME/.cargo}/env"
+fi
+
+# The version Cargo.lock pins for the crate.
+want=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/[^0-9.]/, ""); print; exit }' "$root/Cargo.lock")
+if [ -z "$want" ]; then
+    echo "error: Cargo.lock names no wasm-bindgen version" >&2
+    exit 1
+fi
+
+if ! rustup target list --installed | grep -qx wasm32-unknown-unknown; then
+    echo "installing the wasm32-unknown-unknown target (rustup)" >&2
+    rustup target add wasm32-unknown-unknown
+fi
+
+have=$(wasm-bindgen --version 2>/dev/null | awk '{ print $2 }' || true)
+if [ "$have" != "$want" ]; then
+    echo "installing wasm-bindgen-cli $want (found: ${have:-none})" >&2
+    cargo install wasm-bindgen-cli --version "$want"
+fi
+
+cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
+    -p tileslide-wasm
+target_dir=$(cargo metadata --manifest-path "$root/Cargo.toml" --format-version 1 --no-deps \
+    | sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')
+rm -rf pkg
+# --weak-refs: objects the garbage collector drops free their wasm memory through a
+# FinalizationRegistry, as well as through .free().
+wasm-bindgen --target web --weak-refs --out-dir pkg --out-name tileslide \
+    "$target_dir/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
+
+size=$(wc -c < pkg/tileslide_bg.wasm)
+gzipped=$(gzip -9 -c pkg/tileslide_bg.wasm | wc -c)
+echo "web/pkg: tileslide_bg.wasm $size bytes, $gzipped gzipped"
