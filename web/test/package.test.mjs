@@ -142,6 +142,24 @@ test("a Tiled map with an embedded tile set loads from its text", () => {
   map.free();
 });
 
+test("a Tiled map's external tile set is given by name, as text or bytes", () => {
+  const example = (name) => here("../../examples/maps/" + name);
+  const tmj = readFileSync(example("cave.tmj"), "utf8");
+  const tmx = readFileSync(example("cave.tmx"), "utf8");
+  const fromText = TileMap.fromTiled(tmj, "cave.tmj", { "tiles.tsj": readFileSync(example("tiles.tsj"), "utf8") });
+  const fromBytes = TileMap.fromTiled(tmx, "cave.tmx", new Map([["tiles.tsx", new Uint8Array(readFileSync(example("tiles.tsx")))]]));
+  assert.equal(fromText.width, 30);
+  const rays = checksumRays().map((v) => v * 16);
+  assert.deepEqual(fromText.castRays(rays), fromBytes.castRays(rays));
+  assert.ok(Array.from(fromText.castRays(rays)).some((v) => !Number.isNaN(v)));
+  // Without it, the error names the file the map asks for.
+  assert.throws(() => TileMap.fromTiled(tmj, "cave.tmj", { "walls.tsj": "{}" }), /tiles\.tsj/);
+  assert.throws(() => TileMap.fromTiled(tmj, "cave.tmj", { "tiles.tsj": 5 }), /files\["tiles\.tsj"\]/);
+  assert.throws(() => TileMap.fromTiled(tmj, "cave.tmj", 7), /files/);
+  fromText.free();
+  fromBytes.free();
+});
+
 const replica = here("../../../shared/data/replica-island/");
 test("a Replica Island level loads from its bytes", { skip: !existsSync(replica) && !process.env.CI && "no ../shared/data/replica-island" }, () => {
   const map = TileMap.fromReplicaIsland(

@@ -172,6 +172,7 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
                     .limits
                     .max_chunk_spread
                     .unwrap_or(defaults.max_chunk_spread),
+                ..defaults
             };
             tiled::load(&args.map, &options)?.map
         }

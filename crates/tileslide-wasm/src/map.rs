@@ -55,10 +55,15 @@ impl TileMap {
     }
 
     /// A Tiled map from its `.tmj` (JSON) or `.tmx` (XML) text, told apart by the text
-    /// itself; `name` names it in errors. Its tile sets must be embedded.
+    /// itself; `name` names it in errors. `files` gives its external tile sets (`.tsj`,
+    /// `.tsx`) and templates by the name the map writes them with: an object or a `Map` of
+    /// names to text or `Uint8Array`s.
     #[wasm_bindgen(js_name = fromTiled)]
-    pub fn from_tiled(text: &str, name: &str) -> Result<TileMap, JsError> {
-        let options = tiled::TiledOptions::default();
+    pub fn from_tiled(text: &str, name: &str, files: Option<JsValue>) -> Result<TileMap, JsError> {
+        let mut options = tiled::TiledOptions::default();
+        for (file, bytes) in external_files(files)? {
+            options = options.with_file(file, bytes);
+        }
         let level = if text.trim_start().starts_with('<') {
             tiled::parse_tmx(text, name, &options)
         } else {
@@ -156,6 +161,44 @@ fn whole(what: &str, value: f64) -> Result<u32, JsError> {
             u32::MAX
         )))
     }
+}
+
+/// The `(name, bytes)` of `fromTiled`'s `files`: an object or a `Map` of names to text or
+/// `Uint8Array`s (`undefined` or `null`: none).
+fn external_files(files: Option<JsValue>) -> Result<Vec<(String, Vec<u8>)>, JsError> {
+    let Some(files) = files.filter(|f| !f.is_undefined() && !f.is_null()) else {
+        return Ok(Vec::new());
+    };
+    let entries: Array = if let Some(map) = files.dyn_ref::<js_sys::Map>() {
+        Array::from(&map.entries())
+    } else if files.is_object() {
+        Object::entries(files.unchecked_ref())
+    } else {
+        return Err(error(
+            "fromTiled: `files` must be an object or a Map of names to text or Uint8Arrays",
+        ));
+    };
+    entries
+        .iter()
+        .map(|entry| {
+            let pair = Array::from(&entry);
+            let name = pair
+                .get(0)
+                .as_string()
+                .ok_or_else(|| error("fromTiled: every name in `files` must be a string"))?;
+            let value = pair.get(1);
+            let bytes = if let Some(text) = value.as_string() {
+                text.into_bytes()
+            } else if let Some(array) = value.dyn_ref::<js_sys::Uint8Array>() {
+                array.to_vec()
+            } else {
+                return Err(error(format!(
+                    "fromTiled: files[\"{name}\"] must be text or a Uint8Array"
+                )));
+            };
+            Ok((name, bytes))
+        })
+        .collect()
 }
 
 /// The query filter an options object asks for (`undefined` or `null`: front faces).

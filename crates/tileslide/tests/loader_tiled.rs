@@ -187,6 +187,35 @@ fn the_cave_in_tmx_and_tmj_is_the_same_map() {
 }
 
 #[test]
+fn external_tile_sets_given_in_memory_load_as_from_disk() {
+    // A game in the browser has no disk: the map's text and its tile set's bytes.
+    for (map, set) in [("cave.tmj", "tiles.tsj"), ("cave.tmx", "tiles.tsx")] {
+        let text = std::fs::read_to_string(example(map)).unwrap();
+        let options = TiledOptions::default().with_file(set, std::fs::read(example(set)).unwrap());
+        let from_memory = if map.ends_with(".tmj") {
+            tiled::parse_tmj(&text, map, &options)
+        } else {
+            tiled::parse_tmx(&text, map, &options)
+        }
+        .unwrap();
+        assert_same_tiled(&from_memory, &load(&example(map)));
+        // Once files are given, a file they lack is an error naming both.
+        let other = TiledOptions::default().with_file("walls.tsj", b"{}".to_vec());
+        let e = if map.ends_with(".tmj") {
+            tiled::parse_tmj(&text, map, &other)
+        } else {
+            tiled::parse_tmx(&text, map, &other)
+        }
+        .unwrap_err();
+        assert_eq!(e.io_error_kind(), Some(std::io::ErrorKind::NotFound), "{e}");
+        assert!(
+            e.to_string().contains(set) && e.to_string().contains("walls.tsj"),
+            "{e}"
+        );
+    }
+}
+
+#[test]
 fn the_dungeon_in_tmx_and_tmj_is_the_same_map() {
     // Infinite, chunks in base64+zlib (.tmx) and base64+gzip (.tmj), an external tile set
     // and an embedded one, the layers inside a group.

@@ -47,6 +47,7 @@
 
 mod build;
 mod document;
+mod files;
 mod flip;
 mod objects;
 mod placement;
@@ -62,6 +63,7 @@ mod xml_walker;
 use std::collections::BTreeMap;
 use std::path::Path;
 
+pub use files::TiledFiles;
 pub use flip::Flip;
 pub use objects::{MapObject, ObjectLayer, ObjectShape};
 pub use properties::{Properties, PropertyValue};
@@ -103,6 +105,10 @@ pub struct TiledOptions {
     /// cells apart) cost memory for every empty cell between them; the default, 64,
     /// refuses such a map and loads any whose chunks cover a 64th of their extent.
     pub max_chunk_spread: u64,
+    /// The map's external files (tile sets, templates) given in memory, by the name the map
+    /// writes them with (relative to it): a game in the browser has no disk to read them
+    /// from. Empty (the default): they are read from disk beside the map.
+    pub files: TiledFiles,
 }
 
 /// Cells an infinite layer's bounding box may span whatever its chunks hold (about 16 MB of
@@ -115,6 +121,7 @@ impl Default for TiledOptions {
             layer: None,
             max_cells: crate::tiles::MAX_CELLS,
             max_chunk_spread: 64,
+            files: TiledFiles::new(),
         }
     }
 }
@@ -140,6 +147,15 @@ impl TiledOptions {
     #[must_use]
     pub fn with_max_chunk_spread(mut self, spread: u64) -> Self {
         self.max_chunk_spread = spread;
+        self
+    }
+
+    /// These options with the external file `name` (as the map writes it, relative to the
+    /// map) given as `bytes`, read instead of the disk; once one file is given, every
+    /// external file must be.
+    #[must_use]
+    pub fn with_file(mut self, name: impl Into<String>, bytes: impl Into<Vec<u8>>) -> Self {
+        self.files.insert(name.into(), bytes.into());
         self
     }
 
@@ -243,7 +259,7 @@ pub fn parse_tmx(
     options: &TiledOptions,
 ) -> Result<TiledMap, LoadError> {
     let path = path.as_ref();
-    let doc = tmx::parse(strip_bom(text), path, options.cell_bound())?;
+    let doc = tmx::parse(strip_bom(text), path, options.cell_bound(), &options.files)?;
     build::build(doc, options, path)
 }
 
@@ -280,7 +296,7 @@ pub fn parse_tmj(
     options: &TiledOptions,
 ) -> Result<TiledMap, LoadError> {
     let path = path.as_ref();
-    let doc = tmj::parse(strip_bom(text), path, options.cell_bound())?;
+    let doc = tmj::parse(strip_bom(text), path, options.cell_bound(), &options.files)?;
     build::build(doc, options, path)
 }
 

@@ -11,6 +11,7 @@ use glam::Vec2;
 use serde::de;
 
 use super::document::{Chunk, Document, LayerCells, TileDoc, TileLayerDoc, TileSetDoc};
+use super::files::{TiledFiles, read_external};
 use super::objects::ObjectLayer;
 use super::tile_data::{self, Encoding, count_error};
 use super::tmj_schema::{JsonData, JsonKind, JsonLayer, JsonMap, JsonTileSet, object, properties};
@@ -77,7 +78,12 @@ fn json_error(text: &str, path: &Path, e: serde_json::Error) -> LoadError {
 }
 
 /// Parses a `.tmj` map's text; `path` names it and locates its external tile sets.
-pub(super) fn parse(text: &str, path: &Path, max_cells: u64) -> Result<Document, LoadError> {
+pub(super) fn parse(
+    text: &str,
+    path: &Path,
+    max_cells: u64,
+    files: &TiledFiles,
+) -> Result<Document, LoadError> {
     let json: JsonMap = match serde_json::from_str(text) {
         Ok(json) => json,
         // Valid JSON that fails as a map is most likely some other JSON: say so rather
@@ -110,7 +116,7 @@ pub(super) fn parse(text: &str, path: &Path, max_cells: u64) -> Result<Document,
     }
     let mut tile_sets = Vec::with_capacity(json.tilesets.len());
     for (i, set) in json.tilesets.iter().enumerate() {
-        tile_sets.push(tile_set(set, path, &format!("tilesets[{i}]"))?);
+        tile_sets.push(tile_set(set, path, &format!("tilesets[{i}]"), files)?);
     }
     let mut walk = LayerWalk {
         path,
@@ -204,7 +210,12 @@ fn check_grid(
 }
 
 /// A map's tile set entry: embedded, or loaded from its `.tsj`/`.tsx` file.
-fn tile_set(set: &JsonTileSet, map_path: &Path, field: &str) -> Result<TileSetDoc, LoadError> {
+fn tile_set(
+    set: &JsonTileSet,
+    map_path: &Path,
+    field: &str,
+    files: &TiledFiles,
+) -> Result<TileSetDoc, LoadError> {
     let Some(first_gid) = set.firstgid else {
         return Err(missing(map_path, field, "firstgid"));
     };
@@ -225,9 +236,9 @@ fn tile_set(set: &JsonTileSet, map_path: &Path, field: &str) -> Result<TileSetDo
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
     if extension.as_deref() == Some("tsx") {
-        return tmx::load_tile_set(&file, map_path, Location::File, first_gid);
+        return tmx::load_tile_set(&file, map_path, Location::File, first_gid, files);
     }
-    let bytes = std::fs::read(&file).map_err(|source| {
+    let bytes = read_external(&file, map_path, files).map_err(|source| {
         let kind = LoadErrorKind::Io {
             referenced: Some(file.clone()),
             source,

@@ -8,6 +8,7 @@ use glam::Vec2;
 
 use super::Flip;
 use super::document::{Document, TileDoc, TileLayerDoc, TileSetDoc};
+use super::files::{TiledFiles, read_external};
 use super::objects::{MapObject, ObjectLayer, ObjectShape};
 use super::properties::{Properties, PropertyValue};
 use super::tmx_scan::{self, ScannedLayer};
@@ -27,16 +28,19 @@ pub(super) struct GuardedReader {
     references: Vec<(PathBuf, Location)>,
     /// The first problem found.
     pub failure: Option<LoadError>,
+    /// External files given in memory (empty: read from disk).
+    files: TiledFiles,
 }
 
 impl GuardedReader {
     /// A reader for files that `referrer` refers to.
-    pub fn new(referrer: &Path) -> Self {
+    pub fn new(referrer: &Path, files: &TiledFiles) -> Self {
         Self {
             map: None,
             referrer: referrer.to_path_buf(),
             references: Vec::new(),
             failure: None,
+            files: files.clone(),
         }
     }
 
@@ -46,7 +50,7 @@ impl GuardedReader {
     }
 
     fn read_external(&self, path: &Path) -> Result<Vec<u8>, LoadError> {
-        let bytes = std::fs::read(path).map_err(|source| {
+        let bytes = read_external(path, &self.referrer, &self.files).map_err(|source| {
             let location = match self.references.iter().find(|(p, _)| p == path) {
                 Some((_, location)) => *location,
                 None => Location::File,
@@ -97,10 +101,15 @@ fn refused(path: &Path, e: ::tiled::Error) -> LoadError {
 }
 
 /// Parses a `.tmx` map's text; `path` names it and locates its external files.
-pub(super) fn parse(text: &str, path: &Path, max_cells: u64) -> Result<Document, LoadError> {
+pub(super) fn parse(
+    text: &str,
+    path: &Path,
+    max_cells: u64,
+    files: &TiledFiles,
+) -> Result<Document, LoadError> {
     let scan = tmx_scan::scan_map(text, path, max_cells)?;
     let dir = path.parent().unwrap_or(Path::new(""));
-    let mut reader = GuardedReader::new(path);
+    let mut reader = GuardedReader::new(path, files);
     reader.map = Some((path.to_path_buf(), text.as_bytes().to_vec()));
     for r in &scan.tile_sets {
         if let Some(source) = &r.source {
@@ -155,8 +164,9 @@ pub(super) fn load_tile_set(
     referrer: &Path,
     location: Location,
     first_gid: u32,
+    files: &TiledFiles,
 ) -> Result<TileSetDoc, LoadError> {
-    let mut reader = GuardedReader::new(referrer);
+    let mut reader = GuardedReader::new(referrer, files);
     reader.add_reference(path.to_path_buf(), location);
     let mut loader = ::tiled::Loader::with_reader(reader);
     let loaded = loader.load_tsx_tileset(path);
