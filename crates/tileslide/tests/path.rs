@@ -657,8 +657,9 @@ fn a_crowd_following_a_flow_field_reaches_the_goal_without_overlapping_or_sticki
 }
 
 /// Regression (FlowField): the resolver keeps bodies between r + gap/2 and r + gap from
-/// walls (`ResolveConfig::gap`, 1e-3 cell), but `FlowField::direction` (and `distance`,
-/// and `NavGrid::fits`) need r + the grid's margin (also 1e-3 cell): a body pushed against
+/// walls (`ResolveConfig::gap`, 1e-3 units on these unit cells), but
+/// `FlowField::direction` (and `distance`, and `NavGrid::fits`) need r + the grid's margin
+/// (also 1e-3 cell): a body pushed against
 /// a wall gets no direction, proposes no move and stays there for good, a plug for others.
 #[test]
 fn a_body_the_resolver_left_against_a_wall_still_gets_a_flow_direction() {
