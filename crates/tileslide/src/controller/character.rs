@@ -804,7 +804,7 @@ impl Character {
 }
 
 /// `value`, or an error naming it (`what`) when it is not finite.
-fn finite(what: &'static str, value: Vec2) -> Result<Vec2, ControllerError> {
+pub(super) fn finite(what: &'static str, value: Vec2) -> Result<Vec2, ControllerError> {
     if value.is_finite() {
         Ok(value)
     } else {

@@ -8,6 +8,7 @@
 
 use glam::Vec2;
 
+use super::character::finite;
 use super::{Character, Contacts, ControllerError, MoveOptions};
 use crate::tiles::TileMap;
 
@@ -110,12 +111,7 @@ impl Character {
         dt: f32,
         options: MoveOptions,
     ) -> Result<Contacts, ControllerError> {
-        if !velocity.is_finite() {
-            return Err(ControllerError::NonFinite {
-                what: "velocity",
-                value: *velocity,
-            });
-        }
+        finite("velocity", *velocity)?;
         if !(dt.is_finite() && dt >= 0.0) {
             return Err(ControllerError::BadTimeStep { dt });
         }
