@@ -85,6 +85,7 @@ pub use events::Event;
 pub use explore::Explored;
 pub use game::Game;
 pub use keeper::{DIG_COST, MAX_CREATURES, creature_cost};
+pub use layout::Ground;
 pub use level::Level;
 pub use orders::{LoggedOrder, Order, OrderError};
 pub use outcome::Outcome;
