@@ -36,7 +36,10 @@ fn a_played_game_of_seed_1_has_the_hash_the_node_test_asserts() {
     for _ in 0..600 {
         game.step().unwrap();
     }
-    assert_eq!(format!("{:016x}", game.state_hash()), PLAYED_SEED_1_600_STEPS);
+    assert_eq!(
+        format!("{:016x}", game.state_hash()),
+        PLAYED_SEED_1_600_STEPS
+    );
 }
 
 #[test]
