@@ -132,18 +132,16 @@ pub fn box_coords(lines: &tileslide::DebugLines) -> Vec<f32> {
     })
 }
 
-/// Each item's kind and owner, as the typed arrays hold them.
-fn kinds_and_owners<T>(
-    items: &[T],
-    tag: impl Fn(&T) -> (tileslide::DebugKind, tileslide::Owner),
-) -> (Uint8Array, Float64Array) {
-    let kinds: Vec<u8> = items.iter().map(|i| tag(i).0 as u8).collect();
-    // Owners are ids a game picks; past 2⁵³ a JavaScript number rounds them.
-    let owners: Vec<f64> = items.iter().map(|i| tag(i).1.0 as f64).collect();
-    (
-        Uint8Array::from(kinds.as_slice()),
-        Float64Array::from(owners.as_slice()),
-    )
+/// Each item's kind, as a byte.
+fn kinds<T>(items: &[T], kind: impl Fn(&T) -> tileslide::DebugKind) -> Uint8Array {
+    let bytes: Vec<u8> = items.iter().map(|i| kind(i) as u8).collect();
+    Uint8Array::from(bytes.as_slice())
+}
+
+/// Each item's owner, as a JavaScript number (ids a game picks; past 2⁵³ they round).
+fn owners<T>(items: &[T], owner: impl Fn(&T) -> tileslide::Owner) -> Float64Array {
+    let numbers: Vec<f64> = items.iter().map(|i| owner(i).0 as f64).collect();
+    Float64Array::from(numbers.as_slice())
 }
 
 #[wasm_bindgen]
@@ -206,13 +204,13 @@ impl DebugLines {
     /// The segments' kinds.
     #[wasm_bindgen(getter, js_name = segmentKinds)]
     pub fn segment_kinds(&self) -> Uint8Array {
-        kinds_and_owners(self.lines.segments(), |s| (s.kind, s.owner)).0
+        kinds(self.lines.segments(), |s| s.kind)
     }
 
     /// The segments' owners.
     #[wasm_bindgen(getter, js_name = segmentOwners)]
     pub fn segment_owners(&self) -> Float64Array {
-        kinds_and_owners(self.lines.segments(), |s| (s.kind, s.owner)).1
+        owners(self.lines.segments(), |s| s.owner)
     }
 
     /// The circles: `x, y, r` each.
@@ -224,13 +222,13 @@ impl DebugLines {
     /// The circles' kinds.
     #[wasm_bindgen(getter, js_name = circleKinds)]
     pub fn circle_kinds(&self) -> Uint8Array {
-        kinds_and_owners(self.lines.circles(), |c| (c.kind, c.owner)).0
+        kinds(self.lines.circles(), |c| c.kind)
     }
 
     /// The circles' owners.
     #[wasm_bindgen(getter, js_name = circleOwners)]
     pub fn circle_owners(&self) -> Float64Array {
-        kinds_and_owners(self.lines.circles(), |c| (c.kind, c.owner)).1
+        owners(self.lines.circles(), |c| c.owner)
     }
 
     /// The points: `x, y` each.
@@ -242,13 +240,13 @@ impl DebugLines {
     /// The points' kinds.
     #[wasm_bindgen(getter, js_name = pointKinds)]
     pub fn point_kinds(&self) -> Uint8Array {
-        kinds_and_owners(self.lines.points(), |p| (p.kind, p.owner)).0
+        kinds(self.lines.points(), |p| p.kind)
     }
 
     /// The points' owners.
     #[wasm_bindgen(getter, js_name = pointOwners)]
     pub fn point_owners(&self) -> Float64Array {
-        kinds_and_owners(self.lines.points(), |p| (p.kind, p.owner)).1
+        owners(self.lines.points(), |p| p.owner)
     }
 
     /// The boxes: `minX, minY, maxX, maxY` each.
@@ -260,13 +258,13 @@ impl DebugLines {
     /// The boxes' kinds.
     #[wasm_bindgen(getter, js_name = boxKinds)]
     pub fn box_kinds(&self) -> Uint8Array {
-        kinds_and_owners(self.lines.boxes(), |b| (b.kind, b.owner)).0
+        kinds(self.lines.boxes(), |b| b.kind)
     }
 
     /// The boxes' owners.
     #[wasm_bindgen(getter, js_name = boxOwners)]
     pub fn box_owners(&self) -> Float64Array {
-        kinds_and_owners(self.lines.boxes(), |b| (b.kind, b.owner)).1
+        owners(self.lines.boxes(), |b| b.owner)
     }
 }
 

@@ -117,7 +117,19 @@ impl TileMap {
         };
         let corner = self.cell_corner(cell);
         let eps_length = seam_tolerance(self.cell_size());
+        // Culling keeps a shape's order, so the pieces of one tile segment are usually one
+        // run, found by binary search: a traced shape of thousands of segments then costs
+        // thousands of steps, not millions. (Whole-face cells are reordered; they have at
+        // most four segments and are scanned.)
+        let sorted = hot.windows(2).all(|w| w[0].source <= w[1].source);
         for (index, s) in shape.segments().iter().enumerate() {
+            let run = if sorted {
+                let lo = hot.partition_point(|h| usize::from(h.source) < index);
+                let hi = hot.partition_point(|h| usize::from(h.source) <= index);
+                &hot[lo..hi]
+            } else {
+                hot
+            };
             let (a, b) = (corner + s.a, corner + s.b);
             let d = b - a;
             let length = d.length();
@@ -125,18 +137,18 @@ impl TileMap {
                 continue;
             }
             let eps = eps_length / length;
-            // Where an active piece starts and ends along a → b, as fractions, and the end
-            // point at its far end.
+            // Where an active piece starts and ends along a → b, as fractions, and its end
+            // points in that order (a hidden piece ends exactly where an active one starts).
             let along = |p: Vec2| (p - a).dot(d) / (length * length);
-            let pieces = hot
+            let pieces = run
                 .iter()
                 .filter(|h| usize::from(h.source) == index)
                 .map(|h| {
                     let (ta, tb) = (along(h.a), along(h.b()));
                     if ta <= tb {
-                        (ta, tb, h.b())
+                        (ta, tb, h.a, h.b())
                     } else {
-                        (tb, ta, h.a)
+                        (tb, ta, h.b(), h.a)
                     }
                 });
             let mut push = |p: Vec2, q: Vec2| {
@@ -151,13 +163,12 @@ impl TileMap {
             loop {
                 let next = pieces
                     .clone()
-                    .filter(|&(_, t1, _)| t1 > covered + eps)
+                    .filter(|&(_, t1, _, _)| t1 > covered + eps)
                     .min_by(|x, y| x.0.total_cmp(&y.0));
                 match next {
-                    Some((t0, t1, end)) => {
+                    Some((t0, t1, start, end)) => {
                         if t0 > covered + eps {
-                            let to = a + d * t0;
-                            push(from, to);
+                            push(from, start);
                         }
                         covered = t1;
                         from = end;
