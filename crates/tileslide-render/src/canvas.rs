@@ -1,7 +1,8 @@
 //! The map drawn once: solid material, active segments and their normals, ready for any
 //! number of pictures on top.
 
-use tileslide::{Cell, DebugKind, DebugKinds, DebugLines, SegmentFlags, TileMap, Vec2};
+use tileslide::debug::DebugKinds;
+use tileslide::{Cell, DebugKind, DebugLines, SegmentFlags, TileMap, Vec2};
 use tiny_skia::{Path, PathBuilder, Pixmap};
 
 use crate::lines::draw_segments;

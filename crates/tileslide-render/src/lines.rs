@@ -1,7 +1,8 @@
 //! Debug lines drawn in their kinds' colours: the one way the canvas draws the map and a
 //! picture draws what the core's `debug_lines` methods give.
 
-use tileslide::{DebugBox, DebugCircle, DebugKind, DebugKinds, DebugPoint, DebugSegment, Vec2};
+use tileslide::debug::{DebugBox, DebugCircle, DebugKinds, DebugPoint, DebugSegment};
+use tileslide::{DebugKind, Vec2};
 
 use crate::pen::Pen;
 use crate::view::{NORMAL_WIDTH, View};

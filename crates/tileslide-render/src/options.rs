@@ -1,6 +1,7 @@
 //! How a map is turned into pixels: scale, which way is up, colours.
 
-use tileslide::{DebugKind, DebugKinds};
+use tileslide::DebugKind;
+use tileslide::debug::DebugKinds;
 
 use crate::Style;
 
@@ -81,7 +82,7 @@ impl RenderOptions {
     /// assert!(options.layers.contains(DebugKind::HiddenSegment));
     /// ```
     #[must_use]
-    pub fn with_layers(self, layers: tileslide::DebugKinds) -> Self {
+    pub fn with_layers(self, layers: DebugKinds) -> Self {
         Self { layers, ..self }
     }
 

@@ -1,8 +1,9 @@
 //! What to draw over the map in one picture: bodies, rays, paths, volumes, hit events.
 
+use tileslide::debug::DebugKinds;
 use tileslide::{
-    Aabb, Bodies, Cell, Circle, DebugKinds, DebugLines, HitEvent, HitWorld, NavPath, Ray, RayHit,
-    SegmentFlags, TemporarySegment, TileMap, Vec2, VolumeShape,
+    Aabb, Bodies, Cell, Circle, DebugLines, HitEvent, HitWorld, NavPath, Ray, RayHit, SegmentFlags,
+    TemporarySegment, TileMap, Vec2, VolumeShape,
 };
 
 use crate::lines::{draw_body, draw_boxes, draw_circles, draw_points, draw_segments};

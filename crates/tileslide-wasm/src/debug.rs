@@ -19,7 +19,8 @@
 //! the arrays.
 
 use js_sys::{Float32Array, Float64Array, Uint8Array};
-use tileslide::{Aabb, DebugKinds, Vec2};
+use tileslide::debug::DebugKinds;
+use tileslide::{Aabb, Vec2};
 use wasm_bindgen::prelude::*;
 
 use crate::map::TileMap;

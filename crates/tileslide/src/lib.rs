@@ -77,7 +77,7 @@
 mod bodies;
 pub mod broadphase;
 mod controller;
-mod debug;
+pub mod debug;
 pub mod geometry;
 pub mod io;
 pub mod limits;
@@ -94,9 +94,7 @@ pub use bodies::{
 pub use controller::{
     Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
 };
-pub use debug::{
-    DebugBox, DebugCircle, DebugKind, DebugKinds, DebugLines, DebugPoint, DebugSegment,
-};
+pub use debug::{DebugKind, DebugLines};
 pub use geometry::aabb::Aabb;
 pub use geometry::circle::Circle;
 pub use geometry::ray::Ray;

@@ -7,9 +7,9 @@ mod generators;
 
 use generators::small_map_at;
 use proptest::prelude::*;
+use tileslide::debug::DebugKinds;
 use tileslide::{
-    Aabb, Bodies, BodyDesc, BodyShape, Cell, DebugKind, DebugKinds, DebugLines, Owner, Segment,
-    TileMap, Vec2,
+    Aabb, Bodies, BodyDesc, BodyShape, Cell, DebugKind, DebugLines, Owner, Segment, TileMap, Vec2,
 };
 use tileslide_scenes::SplitMix64;
 

@@ -124,7 +124,7 @@ impl DebugKind {
 /// [`HiddenSegment`](DebugKind::HiddenSegment) is in the set).
 ///
 /// ```
-/// use tileslide::{DebugKind, DebugKinds};
+/// use tileslide::{debug::DebugKinds, DebugKind};
 ///
 /// let walls = DebugKinds::NONE
 ///     .with(DebugKind::ActiveSegment)

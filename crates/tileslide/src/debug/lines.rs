@@ -111,7 +111,7 @@ impl DebugLines {
     /// This buffer taking only `kinds` from now on.
     ///
     /// ```
-    /// # use tileslide::{io::ascii, DebugKind, DebugKinds, DebugLines};
+    /// # use tileslide::{debug::DebugKinds, io::ascii, DebugKind, DebugLines};
     /// let map = ascii::parse("##", "two.txt", 1.0)?;
     /// let mut walls = DebugLines::new().with_kinds(DebugKinds::NONE.with(DebugKind::ActiveSegment));
     /// map.debug_lines(&mut walls);
