@@ -1,19 +1,30 @@
 //! The map drawn once: solid material, active segments and their normals, ready for any
 //! number of pictures on top.
 
-use tileslide::{Cell, SegmentFlags, TileMap, Vec2};
+use tileslide::{Cell, DebugKind, DebugKinds, DebugLines, SegmentFlags, TileMap, Vec2};
 use tiny_skia::{Path, PathBuilder, Pixmap};
 
+use crate::lines::draw_segments;
 use crate::pen::Pen;
-use crate::view::{NORMAL_WIDTH, View};
+use crate::view::View;
 use crate::{Image, Picture, RenderError, RenderOptions, Style};
+
+/// The kinds of the map's debug lines the canvas draws (when the options' layers hold
+/// them): temporary segments change every frame, so pictures draw them.
+const MAP_KINDS: DebugKinds = DebugKinds::NONE
+    .with(DebugKind::ActiveSegment)
+    .with(DebugKind::OneWaySegment)
+    .with(DebugKind::Normal)
+    .with(DebugKind::HiddenSegment);
 
 /// A map drawn at a scale and orientation, onto which [`Picture`]s are rendered.
 ///
 /// The map is drawn once, when the canvas is made: the inside of every tile shape with
-/// closed solid outlines is filled, then every *active* segment (after seam culling) is
-/// stroked, one-way platforms in their own colour, each with a short tick along its outward
-/// normal. Temporary segments change from frame to frame, so they are not part of the
+/// closed solid outlines is filled, then the map's [debug lines](TileMap::debug_lines) are
+/// stroked in their kinds' colours: every *active* segment (after seam culling), one-way
+/// platforms in their own colour, each with a short tick along its outward normal, and,
+/// when the options' [layers](RenderOptions::layers) hold them, the hidden seam segments,
+/// faint. Temporary segments change from frame to frame, so they are not part of the
 /// canvas: add them to each picture with [`Picture::temporaries`].
 ///
 /// See [`Picture`] for an example.
@@ -22,6 +33,7 @@ pub struct Canvas {
     map: Pixmap,
     view: View,
     style: Style,
+    layers: DebugKinds,
 }
 
 impl Canvas {
@@ -41,20 +53,14 @@ impl Canvas {
         if let Some(solid) = solid_area(map, &view) {
             pen.fill(&solid, style.solid_fill);
         }
-        let line = view.line_width();
-        let mut segments = SegmentPaths::default();
-        for row in 0..map.height() {
-            for col in 0..map.width() {
-                for s in map.active_segments(Cell::new(col, row)) {
-                    segments.add(&view, s.segment.a, s.segment.b, s.normal, s.flags);
-                }
-            }
-        }
-        segments.draw(&mut pen, &style, line);
+        let mut lines = DebugLines::new().with_kinds(DebugKinds(MAP_KINDS.0 & options.layers.0));
+        map.debug_lines(&mut lines);
+        draw_segments(&mut pen, &view, &style, options.layers, lines.segments());
         Ok(Self {
             map: pixmap,
             view,
             style,
+            layers: options.layers,
         })
     }
 
@@ -87,7 +93,12 @@ impl Canvas {
     #[must_use]
     pub fn render(&self, picture: &Picture) -> Image {
         let mut pixmap = self.map.clone();
-        picture.draw(&mut Pen::new(&mut pixmap), &self.view, &self.style);
+        picture.draw(
+            &mut Pen::new(&mut pixmap),
+            &self.view,
+            &self.style,
+            self.layers,
+        );
         Image::from_pixmap(pixmap)
     }
 
@@ -100,7 +111,7 @@ impl Canvas {
         } else {
             *pixmap = self.map.clone();
         }
-        picture.draw(&mut Pen::new(pixmap), &self.view, &self.style);
+        picture.draw(&mut Pen::new(pixmap), &self.view, &self.style, self.layers);
     }
 
     /// The style the canvas draws with.
@@ -155,47 +166,4 @@ fn solid_area(map: &TileMap, view: &View) -> Option<Path> {
         }
     }
     builder.finish()
-}
-
-/// Active segments sorted into one path per colour, and their normal ticks.
-#[derive(Default)]
-struct SegmentPaths {
-    solid: PathBuilder,
-    one_way: PathBuilder,
-    normals: PathBuilder,
-}
-
-impl SegmentPaths {
-    /// Adds the segment `a`–`b` (world coordinates, inside the map) with its outward
-    /// normal, coloured by its flags. Left out if a point is not finite.
-    fn add(&mut self, view: &View, a: Vec2, b: Vec2, normal: Vec2, flags: SegmentFlags) {
-        let (Some(pa), Some(pb)) = (view.pixel_of(a), view.pixel_of(b)) else {
-            return;
-        };
-        let path = if flags.contains(SegmentFlags::ONE_WAY) {
-            &mut self.one_way
-        } else {
-            &mut self.solid
-        };
-        path.move_to(pa.x, pa.y);
-        path.line_to(pb.x, pb.y);
-        if let Some((from, to)) = view.normal_tick(pa, pb, normal) {
-            self.normals.move_to(from.x, from.y);
-            self.normals.line_to(to.x, to.y);
-        }
-    }
-
-    /// Draws the normals, then the segments over them.
-    fn draw(self, pen: &mut Pen<'_>, style: &Style, line: f32) {
-        let layers = [
-            (self.normals, style.normal, line * NORMAL_WIDTH),
-            (self.solid, style.solid, line),
-            (self.one_way, style.one_way, line),
-        ];
-        for (builder, color, width) in layers {
-            if let Some(path) = builder.finish() {
-                pen.stroke(&path, color, width);
-            }
-        }
-    }
 }

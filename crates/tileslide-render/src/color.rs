@@ -1,5 +1,7 @@
 //! Colours and the style that assigns one to each thing drawn.
 
+use tileslide::DebugKind;
+
 /// A colour with straight (not premultiplied) alpha: `a = 255` is opaque.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Rgba {
@@ -71,6 +73,17 @@ pub struct Style {
     pub hit: Rgba,
     /// Hit events the victim refused.
     pub hit_refused: Rgba,
+    /// Pieces of tile segments that seam culling hides (drawn only when asked for, see
+    /// [`RenderOptions::layers`](crate::RenderOptions::layers)): faint.
+    pub hidden: Rgba,
+    /// Characters' outlines.
+    pub character: Rgba,
+    /// The surfaces a character touched, along their normals.
+    pub contact: Rgba,
+    /// Flow field arrows.
+    pub flow: Rgba,
+    /// Broadphase boxes' outlines.
+    pub broadphase: Rgba,
 }
 
 impl Default for Style {
@@ -91,13 +104,18 @@ impl Default for Style {
             vulnerability: Rgba::opaque(38, 110, 220),
             hit: Rgba::opaque(200, 10, 60),
             hit_refused: Rgba::opaque(120, 120, 120),
+            hidden: Rgba::new(30, 35, 41, 70),
+            character: Rgba::opaque(41, 128, 185),
+            contact: Rgba::opaque(230, 126, 34),
+            flow: Rgba::opaque(127, 140, 141),
+            broadphase: Rgba::new(142, 68, 173, 110),
         }
     }
 }
 
 impl Style {
     /// Every colour of the style, for a palette that must reproduce them exactly.
-    pub(crate) fn colors(&self) -> [Rgba; 15] {
+    pub(crate) fn colors(&self) -> [Rgba; 20] {
         [
             self.background,
             self.solid_fill,
@@ -114,6 +132,46 @@ impl Style {
             self.vulnerability,
             self.hit,
             self.hit_refused,
+            self.hidden,
+            self.character,
+            self.contact,
+            self.flow,
+            self.broadphase,
         ]
+    }
+
+    /// The colour [debug lines](tileslide::DebugLines) of `kind` are drawn in, or `None`
+    /// for a kind this version does not know (a newer `tileslide`'s): those are not drawn.
+    ///
+    /// ```
+    /// use tileslide::DebugKind;
+    /// use tileslide_render::Style;
+    ///
+    /// let style = Style::default();
+    /// assert_eq!(style.color_of(DebugKind::ActiveSegment), Some(style.solid));
+    /// assert_eq!(style.color_of(DebugKind::HiddenSegment), Some(style.hidden));
+    /// ```
+    #[must_use]
+    pub fn color_of(&self, kind: DebugKind) -> Option<Rgba> {
+        Some(match kind {
+            DebugKind::ActiveSegment => self.solid,
+            DebugKind::OneWaySegment => self.one_way,
+            DebugKind::Normal => self.normal,
+            DebugKind::HiddenSegment => self.hidden,
+            DebugKind::TemporarySegment => self.temporary,
+            DebugKind::Body => self.body,
+            DebugKind::Character => self.character,
+            DebugKind::Contact => self.contact,
+            DebugKind::Ray => self.ray,
+            DebugKind::RayHit => self.ray_hit,
+            DebugKind::AttackVolume => self.attack,
+            DebugKind::VulnerabilityVolume => self.vulnerability,
+            DebugKind::Hit => self.hit,
+            DebugKind::RefusedHit => self.hit_refused,
+            DebugKind::Path => self.path,
+            DebugKind::FlowArrow => self.flow,
+            DebugKind::BroadphaseBox => self.broadphase,
+            _ => return None,
+        })
     }
 }

@@ -1,6 +1,12 @@
 //! How a map is turned into pixels: scale, which way is up, colours.
 
+use tileslide::{DebugKind, DebugKinds};
+
 use crate::Style;
+
+/// The kinds drawn unless told otherwise: every kind but hidden seam segments, which
+/// would draw a grid inside every solid area.
+pub const DEFAULT_LAYERS: DebugKinds = DebugKinds::ALL.without(DebugKind::HiddenSegment);
 
 /// The most pixels an image may have: 32 Mi (128 MiB of RGBA), so a huge map or a typo in
 /// the scale is refused instead of allocating gigabytes.
@@ -32,6 +38,9 @@ pub struct RenderOptions {
     pub y_axis: YAxis,
     /// The colours.
     pub style: Style,
+    /// Which kinds of [debug lines](tileslide::DebugLines) are drawn, on the canvas and
+    /// in pictures ([`DEFAULT_LAYERS`] unless told otherwise).
+    pub layers: DebugKinds,
 }
 
 impl Default for RenderOptions {
@@ -40,6 +49,7 @@ impl Default for RenderOptions {
             pixels_per_cell: DEFAULT_PIXELS_PER_CELL,
             y_axis: YAxis::Down,
             style: Style::default(),
+            layers: DEFAULT_LAYERS,
         }
     }
 }
@@ -58,6 +68,21 @@ impl RenderOptions {
     #[must_use]
     pub fn with_y_axis(self, y_axis: YAxis) -> Self {
         Self { y_axis, ..self }
+    }
+
+    /// These options drawing only the kinds of debug lines in `layers`.
+    ///
+    /// ```
+    /// use tileslide::DebugKind;
+    /// use tileslide_render::{RenderOptions, DEFAULT_LAYERS};
+    ///
+    /// // The seams the map hides, faint, as well as everything else.
+    /// let options = RenderOptions::default().with_layers(DEFAULT_LAYERS.with(DebugKind::HiddenSegment));
+    /// assert!(options.layers.contains(DebugKind::HiddenSegment));
+    /// ```
+    #[must_use]
+    pub fn with_layers(self, layers: tileslide::DebugKinds) -> Self {
+        Self { layers, ..self }
     }
 
     /// These options with other colours.

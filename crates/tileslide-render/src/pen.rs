@@ -92,6 +92,21 @@ impl<'a> Pen<'a> {
         }
     }
 
+    /// Separate lines, each from the first point of a pair to the second, clipped to the
+    /// window and stroked as one path.
+    pub fn lines(&mut self, ends: impl IntoIterator<Item = (Vec2, Vec2)>, color: Rgba, width: f32) {
+        let mut builder = PathBuilder::new();
+        for (a, b) in ends {
+            if let Some((a, b)) = self.clip(a, b) {
+                builder.move_to(a.x, a.y);
+                builder.line_to(b.x, b.y);
+            }
+        }
+        if let Some(path) = builder.finish() {
+            self.stroke(&path, color, width);
+        }
+    }
+
     /// A filled disc with an outline `width` pixels wide (none if zero).
     pub fn disc(&mut self, center: Vec2, radius: f32, fill: Rgba, outline: Rgba, width: f32) {
         let (lo, hi) = self.window;

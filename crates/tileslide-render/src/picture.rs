@@ -1,10 +1,11 @@
 //! What to draw over the map in one picture: bodies, rays, paths, volumes, hit events.
 
 use tileslide::{
-    Aabb, Cell, Circle, HitEvent, HitWorld, NavPath, Ray, RayHit, SegmentFlags, TemporarySegment,
-    TileMap, Vec2, VolumeShape,
+    Aabb, Bodies, Cell, Circle, DebugKinds, DebugLines, HitEvent, HitWorld, NavPath, Ray, RayHit,
+    SegmentFlags, TemporarySegment, TileMap, Vec2, VolumeShape,
 };
 
+use crate::lines::{draw_body, draw_boxes, draw_circles, draw_points, draw_segments};
 use crate::pen::Pen;
 use crate::view::{NORMAL_WIDTH, View};
 use crate::{Rgba, Style};
@@ -62,6 +63,41 @@ enum Overlay {
         normal: Vec2,
         one_way: bool,
     },
+    /// Debug lines: these ranges of the picture's own buffer.
+    Lines(LineRanges),
+}
+
+/// Where one batch of debug lines lies in a picture's buffer: `(start, end)` of each list.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct LineRanges {
+    segments: (usize, usize),
+    circles: (usize, usize),
+    points: (usize, usize),
+    boxes: (usize, usize),
+}
+
+impl LineRanges {
+    /// The lengths of `lines`' lists: where a batch added next starts (and so far ends).
+    fn at_end_of(lines: &DebugLines) -> Self {
+        let end = |n: usize| (n, n);
+        Self {
+            segments: end(lines.segments().len()),
+            circles: end(lines.circles().len()),
+            points: end(lines.points().len()),
+            boxes: end(lines.boxes().len()),
+        }
+    }
+
+    /// These ranges ending where `lines`' lists end now.
+    fn up_to_end_of(self, lines: &DebugLines) -> Self {
+        let to = |(start, _): (usize, usize), n: usize| (start, n);
+        Self {
+            segments: to(self.segments, lines.segments().len()),
+            circles: to(self.circles, lines.circles().len()),
+            points: to(self.points, lines.points().len()),
+            boxes: to(self.boxes, lines.boxes().len()),
+        }
+    }
 }
 
 /// The things to draw over a map in one picture (one frame of an animation), in world
@@ -104,6 +140,8 @@ enum Overlay {
 pub struct Picture {
     overlays: Vec<Overlay>,
     points: Vec<Vec2>,
+    /// Every batch of debug lines added, one after the other.
+    lines: DebugLines,
     skipped: usize,
 }
 
@@ -118,6 +156,7 @@ impl Picture {
     pub fn clear(&mut self) {
         self.overlays.clear();
         self.points.clear();
+        self.lines.clear();
         self.skipped = 0;
     }
 
@@ -282,6 +321,66 @@ impl Picture {
         self
     }
 
+    /// Everything in `lines`, drawn in its kinds' colours (see
+    /// [`Style::color_of`]) when the canvas's [layers](crate::RenderOptions::layers) hold
+    /// the kind: segments first (one stroke per kind), then boxes, circles and points.
+    /// The shapes `lines` skipped count in [`skipped`](Self::skipped).
+    ///
+    /// ```
+    /// use tileslide::{io::ascii, DebugKind, DebugLines, Owner, QueryFilter, Ray, Vec2};
+    /// use tileslide_render::{Canvas, Picture, RenderOptions};
+    ///
+    /// let map = ascii::parse("#...#", "hall.txt", 1.0)?;
+    /// // Lines 3 pixels wide at 40 pixels a cell: the pixel under the ray is fully covered.
+    /// let canvas = Canvas::new(&map, &RenderOptions::default().with_pixels_per_cell(40.0))?;
+    /// let mut lines = DebugLines::new();
+    /// let ray = Ray::between(Vec2::new(1.5, 0.5), Vec2::new(4.5, 0.5));
+    /// lines.push_ray(ray, map.cast_ray(ray, &QueryFilter::default()).as_ref(), 0.25, Owner(0));
+    /// let mut picture = Picture::new();
+    /// picture.debug_lines(&lines);
+    /// let image = canvas.render(&picture);
+    /// let style = RenderOptions::default().style;
+    /// let on_the_ray = canvas.to_pixel(Vec2::new(2.5, 0.5)).unwrap();
+    /// assert_eq!(image.pixel(on_the_ray.x as u32, on_the_ray.y as u32), Some(style.ray));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn debug_lines(&mut self, lines: &DebugLines) -> &mut Self {
+        let start = (LineRanges::at_end_of(&self.lines), self.lines.skipped());
+        for s in lines.segments() {
+            self.lines.push_segment(s.kind, s.segment, s.owner);
+        }
+        for c in lines.circles() {
+            self.lines.push_circle(c.kind, c.circle, c.owner);
+        }
+        for p in lines.points() {
+            self.lines.push_point(p.kind, p.point, p.owner);
+        }
+        for b in lines.boxes() {
+            self.lines.push_box(b.kind, b.aabb, b.owner);
+        }
+        // What the buffer itself left out counts as skipped here too.
+        self.skipped += lines.skipped();
+        self.push_lines(start)
+    }
+
+    /// Every body of `bodies` where it is now, from [`Bodies::debug_lines`]: each circle
+    /// as [`body`](Self::body) draws one, and (when the canvas's layers hold
+    /// [`BroadphaseBox`](tileslide::DebugKind::BroadphaseBox), which they do by default) the
+    /// box the broadphase filed it under.
+    pub fn bodies(&mut self, bodies: &Bodies) -> &mut Self {
+        let start = (LineRanges::at_end_of(&self.lines), self.lines.skipped());
+        bodies.debug_lines(&mut self.lines);
+        self.push_lines(start)
+    }
+
+    /// Records the lines added to the buffer since `start` (its ranges and its count of
+    /// skipped shapes then) as one overlay.
+    fn push_lines(&mut self, (start, skipped): (LineRanges, usize)) -> &mut Self {
+        self.skipped += self.lines.skipped() - skipped;
+        let ranges = start.up_to_end_of(&self.lines);
+        self.push(Overlay::Lines(ranges), true)
+    }
+
     fn push_body(&mut self, circle: Circle, color: Option<Rgba>) -> &mut Self {
         let usable = circle.center.is_finite() && circle.radius.is_finite() && circle.radius > 0.0;
         self.push(Overlay::Body { circle, color }, usable)
@@ -297,16 +396,21 @@ impl Picture {
     }
 
     /// Draws everything, in order. A shape whose pixel coordinates overflow is left out.
-    pub(crate) fn draw(&self, pen: &mut Pen<'_>, view: &View, style: &Style) {
+    pub(crate) fn draw(&self, pen: &mut Pen<'_>, view: &View, style: &Style, layers: DebugKinds) {
         let line = view.line_width();
         for overlay in &self.overlays {
             match *overlay {
                 Overlay::Body { circle, color } => {
-                    if let Some(c) = view.pixel_of(circle.center) {
-                        let fill = color.unwrap_or(style.body);
-                        let r = view.pixel_length(circle.radius);
-                        pen.disc(c, r, fill, style.body_outline, (line * 0.5).min(r * 0.25));
-                    }
+                    let fill = color.unwrap_or(style.body);
+                    draw_body(pen, view, style, circle.center, circle.radius, fill);
+                }
+                Overlay::Lines(r) => {
+                    let l = &self.lines;
+                    let range = |(start, end): (usize, usize)| start..end;
+                    draw_segments(pen, view, style, layers, &l.segments()[range(r.segments)]);
+                    draw_boxes(pen, view, style, layers, &l.boxes()[range(r.boxes)]);
+                    draw_circles(pen, view, style, layers, &l.circles()[range(r.circles)]);
+                    draw_points(pen, view, style, layers, &l.points()[range(r.points)]);
                 }
                 Overlay::Ray { from, to, hit } => draw_ray(pen, view, style, from, to, hit),
                 Overlay::Polyline { start, end } => {

@@ -3,8 +3,8 @@
 
 use tileslide::io::ascii;
 use tileslide::{
-    Aabb, Cell, Circle, Owner, QueryFilter, Ray, Segment, SegmentFlags, TemporarySegment, TileMap,
-    Vec2, VolumeShape,
+    Aabb, Bodies, BodyDesc, BodyShape, Cell, Circle, DebugKind, DebugLines, Owner, QueryFilter,
+    Ray, Segment, SegmentFlags, TemporarySegment, TileMap, Vec2, VolumeShape,
 };
 use tileslide_render::{
     Animation, Canvas, Image, MAX_PIXELS, Picture, RenderError, RenderOptions, Rgba, Style,
@@ -487,4 +487,110 @@ fn areas_and_cell_walls_show_an_edit_made_after_the_canvas() {
         style.background,
     );
     assert_eq!(bad.skipped(), 2);
+}
+
+/// The canvas draws the map from its debug lines: hidden seam segments are left out by
+/// default (the inside of a wall is plain fill) and drawn faint when the layers ask.
+#[test]
+fn hidden_seams_are_drawn_only_when_asked_for() {
+    let map = ascii::parse("###\n###", "block.txt", 1.0).unwrap();
+    let style = Style::default();
+    let plain = canvas(&map, 40.0);
+    let image = plain.render(&Picture::new());
+    // (1, 0.5) lies on the seam between cells (0, 0) and (1, 0), inside the block.
+    assert_eq!(
+        pixel_at(&plain, &image, Vec2::new(1.0, 0.5)),
+        style.solid_fill
+    );
+    let layers = tileslide_render::DEFAULT_LAYERS.with(DebugKind::HiddenSegment);
+    let seams = Canvas::new(
+        &map,
+        &RenderOptions::default()
+            .with_pixels_per_cell(40.0)
+            .with_layers(layers),
+    )
+    .unwrap();
+    let image = seams.render(&Picture::new());
+    let seam = pixel_at(&seams, &image, Vec2::new(1.0, 0.5));
+    assert_ne!(seam, style.solid_fill);
+    // Faint: between the fill and the wall colour.
+    assert!(
+        seam.r < style.solid_fill.r && seam.r > style.solid.r,
+        "{seam:?}"
+    );
+    // Away from the seams, the fill is as before.
+    assert_eq!(
+        pixel_at(&seams, &image, Vec2::new(0.5, 0.5)),
+        style.solid_fill
+    );
+}
+
+/// Bodies are drawn from `Bodies::debug_lines`: each where it is, in the body colour, and
+/// after a resolve the boxes the broadphase filed them under.
+#[test]
+fn bodies_are_drawn_where_they_are() {
+    let (map, canvas) = room_at(32.0);
+    let mut bodies = Bodies::new();
+    for x in [2.5, 5.5] {
+        let desc = BodyDesc::new(Vec2::new(x, 1.5), BodyShape::circle(0.4).unwrap());
+        bodies.add(desc).unwrap();
+    }
+    bodies.step(&map);
+    let mut picture = Picture::new();
+    picture.bodies(&bodies);
+    let image = canvas.render(&picture);
+    let style = Style::default();
+    for (_, body) in bodies.iter() {
+        assert_eq!(pixel_at(&canvas, &image, body.position()), style.body);
+    }
+    assert_eq!(
+        pixel_at(&canvas, &image, Vec2::new(4.0, 1.5)),
+        style.background
+    );
+    assert_eq!(picture.len(), 1);
+    assert_eq!(picture.skipped(), 0);
+}
+
+/// Any debug lines, in their kinds' colours; kinds the canvas's layers leave out are not
+/// drawn; shapes that are not finite are skipped and counted.
+#[test]
+fn debug_lines_are_drawn_in_their_kinds_colours() {
+    let map = room();
+    let style = Style::default();
+    let mut lines = DebugLines::new();
+    let cell = |x: f32| Aabb::from_corners(Vec2::new(x, 1.0), Vec2::new(x + 1.0, 2.0));
+    lines.push_box(DebugKind::AttackVolume, cell(1.0), Owner(1));
+    lines.push_box(DebugKind::VulnerabilityVolume, cell(4.0), Owner(2));
+    lines.push_segment(
+        DebugKind::Path,
+        Segment::new(Vec2::new(1.0, 3.0), Vec2::new(6.0, 3.0)),
+        Owner(0),
+    );
+    lines.push_point(DebugKind::Hit, Vec2::new(6.5, 1.5), Owner(2));
+    lines.push_circle(
+        DebugKind::Body,
+        Circle::new(Vec2::new(1.0, f32::NAN), 1.0),
+        Owner(0),
+    );
+    let mut picture = Picture::new();
+    picture.debug_lines(&lines);
+    assert_eq!(picture.skipped(), 1);
+    let all = canvas(&map, 40.0);
+    let image = all.render(&picture);
+    let attack = pixel_at(&all, &image, Vec2::new(1.5, 1.5));
+    let vulnerable = pixel_at(&all, &image, Vec2::new(4.5, 1.5));
+    assert!(attack.r > attack.b + 40, "{attack:?}");
+    assert!(vulnerable.b > vulnerable.r + 40, "{vulnerable:?}");
+    assert_eq!(pixel_at(&all, &image, Vec2::new(3.5, 3.0)), style.path);
+    assert_eq!(pixel_at(&all, &image, Vec2::new(6.5, 1.5)), style.hit);
+    // Without the path layer, the path is not drawn.
+    let options = RenderOptions::default()
+        .with_pixels_per_cell(40.0)
+        .with_layers(tileslide_render::DEFAULT_LAYERS.without(DebugKind::Path));
+    let no_paths = Canvas::new(&map, &options).unwrap();
+    let image = no_paths.render(&picture);
+    assert_eq!(
+        pixel_at(&no_paths, &image, Vec2::new(3.5, 3.0)),
+        style.background
+    );
 }

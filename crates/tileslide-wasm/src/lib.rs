@@ -11,5 +11,6 @@
 //! answers are tested natively and in Node against the same checksum: wasm and native give
 //! the same bits.
 
+pub mod debug;
 pub mod map;
 pub mod rays;

@@ -35,7 +35,7 @@ export interface RayOptions {
 /// A tile map: tiles of segments with seams culled, ready for queries.
 #[wasm_bindgen]
 pub struct TileMap {
-    map: tileslide::TileMap,
+    pub(crate) map: tileslide::TileMap,
 }
 
 /// A JavaScript `Error` with `message`.

@@ -75,6 +75,7 @@
 mod bodies;
 pub mod broadphase;
 mod controller;
+mod debug;
 pub mod geometry;
 pub mod io;
 pub mod limits;
@@ -90,6 +91,9 @@ pub use bodies::{
 };
 pub use controller::{
     Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
+};
+pub use debug::{
+    DebugBox, DebugCircle, DebugKind, DebugKinds, DebugLines, DebugPoint, DebugSegment,
 };
 pub use geometry::aabb::Aabb;
 pub use geometry::circle::Circle;

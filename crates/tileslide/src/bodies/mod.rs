@@ -16,6 +16,7 @@
 mod body;
 mod config;
 mod contact;
+mod debug_lines;
 mod error;
 mod handle;
 mod map_watch;

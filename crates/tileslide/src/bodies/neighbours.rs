@@ -51,6 +51,12 @@ pub(super) struct Neighbours {
 }
 
 impl Neighbours {
+    /// Per circle, the grown box its candidates were found for, or `None` once forgotten
+    /// (the circles changed since).
+    pub fn grown(&self) -> Option<&[Aabb]> {
+        self.found_with.map(|_| self.grown.as_slice())
+    }
+
     /// Drops the candidates: the circles changed (added, removed, filters).
     pub fn forget(&mut self) {
         self.found_with = None;

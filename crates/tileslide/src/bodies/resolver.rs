@@ -144,6 +144,12 @@ impl Resolver {
         report
     }
 
+    /// Per circle of the bodies in slot order, the box the broadphase last filed it
+    /// under, or `None` when the bodies changed since the last resolve.
+    pub fn broadphase_boxes(&self) -> Option<&[Aabb]> {
+        self.neighbours.grown()
+    }
+
     /// Forgets the last resolve: the bodies changed in a way their positions do not show.
     pub fn forget(&mut self) {
         self.settled.forget();

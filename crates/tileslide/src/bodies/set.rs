@@ -46,7 +46,7 @@ pub struct Bodies {
     free: Vec<u32>,
     len: usize,
     config: ResolveConfig,
-    resolver: Resolver,
+    pub(super) resolver: Resolver,
 }
 
 impl Bodies {

@@ -8,6 +8,7 @@
 
 mod character;
 mod contact;
+mod debug_lines;
 mod platform;
 mod shape;
 mod velocity;

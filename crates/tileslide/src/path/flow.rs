@@ -23,9 +23,9 @@ use crate::geometry::Aabb;
 use crate::tiles::{Cell, JournalError, MapRevision, TileMap};
 
 /// Distance of a node the goal cannot be reached from.
-const UNREACHED: u32 = u32::MAX;
+pub(super) const UNREACHED: u32 = u32::MAX;
 /// `next` of a node that joins the goal straight.
-const TO_GOAL: u8 = u8::MAX;
+pub(super) const TO_GOAL: u8 = u8::MAX;
 /// How many next moves an agent looks ahead along its way.
 const LOOKAHEAD: usize = 8;
 
@@ -41,13 +41,13 @@ enum Entry {
 /// Distances to one goal for circles of one radius (see the module docs).
 #[derive(Clone, Debug, PartialEq)]
 pub struct FlowField {
-    goal: Vec2,
+    pub(super) goal: Vec2,
     radius: f32,
     need: u16,
     /// Per node, cost to the goal ([`UNREACHED`] if none).
-    distance: Vec<u32>,
+    pub(super) distance: Vec<u32>,
     /// Per node, the move to take ([`TO_GOAL`]: go straight to the goal).
-    next: Vec<u8>,
+    pub(super) next: Vec<u8>,
     /// Map units per cost unit.
     unit: f32,
     /// Per node the field reaches, the moves open out of it (low byte) and into it (high

@@ -44,6 +44,7 @@
 //! ```
 
 mod clearance;
+mod debug_lines;
 mod error;
 mod flow;
 mod landmarks;

@@ -8,6 +8,7 @@
 mod cell;
 mod continuity;
 mod culling;
+mod debug_lines;
 pub(crate) mod face_kind;
 mod flags;
 mod journal;

@@ -17,6 +17,7 @@
 //! - volumes with a move are swept, so a projectile cannot pass through a target;
 //! - "hit once per swing" and teams are built in.
 
+mod debug_lines;
 mod hit_types;
 mod volume;
 mod world;

@@ -120,13 +120,13 @@ impl<F: FnMut(&HitObject, &HitObject, HitTypes) -> bool> HitRule for F {
 
 /// A registered object and where its volumes are.
 #[derive(Clone, Copy, Debug)]
-struct Entry {
-    object: HitObject,
+pub(super) struct Entry {
+    pub(super) object: HitObject,
     /// Ranges in `attack` and `vulnerable`.
-    attack: (u32, u32),
-    vulnerable: (u32, u32),
+    pub(super) attack: (u32, u32),
+    pub(super) vulnerable: (u32, u32),
     /// Every point any of its volumes takes during the frame.
-    reach: Aabb,
+    pub(super) reach: Aabb,
 }
 
 /// Attack and vulnerability volumes of the objects of one frame, and the hits between them
@@ -163,13 +163,13 @@ struct Entry {
 #[derive(Clone, Debug, Default)]
 pub struct HitWorld {
     broadphase: PairMethod,
-    entries: Vec<Entry>,
-    attack: Vec<Volume>,
-    vulnerable: Vec<Volume>,
+    pub(super) entries: Vec<Entry>,
+    pub(super) attack: Vec<Volume>,
+    pub(super) vulnerable: Vec<Volume>,
     finder: PairFinder,
     boxes: Vec<Aabb>,
     pairs: Vec<(u32, u32)>,
-    events: Vec<HitEvent>,
+    pub(super) events: Vec<HitEvent>,
     /// Accepted hits per swing: `(swing, victim owner)`.
     swung: HashSet<(u64, Owner)>,
     /// Swings registered this frame and the last.
@@ -357,7 +357,7 @@ impl HitWorld {
 }
 
 /// Volume `v` of `object` where the frame ends.
-fn place(object: &HitObject, v: &Volume) -> Placed {
+pub(super) fn place(object: &HitObject, v: &Volume) -> Placed {
     Placed::new(&v.shape, object.position, object.size, object.facing)
 }
 
