@@ -16,6 +16,7 @@ export const COLORS = {
   // Queries and bodies.
   ray: "#ffffff",
   rayHit: "#ff4d4d",
+  refusedHit: "#8a8a8a",
   body: "#6fb7ff",
   contact: "#ffe14d",
   broadphase: "rgba(120, 200, 255, 0.25)",

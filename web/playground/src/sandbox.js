@@ -1,11 +1,12 @@
 // The Sandbox: the bundled cave map, painted with the mouse, ray casts dragged across it
 // with each filter, and circles that flow to the mouse.
-import init, { TileMap } from "../../pkg/tileslide.js";
+import init, { DebugLines, TileMap } from "../../pkg/tileslide.js";
 import caveText from "../../../examples/maps/cave.txt?raw";
 
 import { COLORS } from "./colors.js";
 import { runFrames } from "./frames.js";
 import { publishHook, showError } from "./hook.js";
+import { KIND, drawLines } from "./lines.js";
 import { TILE_NAMES, tilesOfAscii, traceTile } from "./tiles.js";
 import { View } from "./view.js";
 
@@ -19,12 +20,17 @@ const FILTERS = {
   right: { against: [1, 0] },
 };
 
-/** The layers the page can draw, in drawing order. */
+/** The layers the page can draw, in drawing order, with the debug-line kinds each shows. */
 const LAYERS = [
-  { key: "tiles", label: "tiles (filled)", on: true },
-  { key: "grid", label: "cell grid", on: false },
-  { key: "ray", label: "ray, hit, normal, cell", on: true },
+  { key: "tiles", label: "tiles (filled)", on: true, kinds: [] },
+  { key: "grid", label: "cell grid", on: false, kinds: [] },
+  { key: "active", label: "active segments", on: true, kinds: [KIND.ActiveSegment, KIND.OneWaySegment] },
+  { key: "normals", label: "normals", on: true, kinds: [KIND.Normal] },
+  { key: "hidden", label: "hidden seam segments (faint)", on: true, kinds: [KIND.HiddenSegment] },
+  { key: "ray", label: "ray, hit, normal, cell", on: true, kinds: [] },
 ];
+/** The layer that shows each debug-line kind. */
+const LAYER_OF_KIND = new Map(LAYERS.flatMap((layer) => layer.kinds.map((kind) => [kind, layer.key])));
 
 const canvas = document.getElementById("canvas");
 const tiles = tilesOfAscii(caveText);
@@ -44,6 +50,8 @@ const state = {
 };
 let map = null;
 let frames = null;
+let mapLines = null; // the map's debug lines, filled again when a tile changes
+let mapChanged = true;
 
 const hook = publishHook("sandbox", {
   state: () => ({
@@ -55,6 +63,16 @@ const hook = publishHook("sandbox", {
     frame: frames && { last: frames.last, mean: frames.mean, frames: frames.frames },
   }),
   tileAt: (col, row) => tiles[row][col],
+  /** The map's debug segments of kind `kind` (a DebugKind number), as [x0, y0, x1, y1]. */
+  segments: (kind) => {
+    const coords = mapLines.segments;
+    const kinds = mapLines.segmentKinds;
+    const out = [];
+    for (let i = 0; i < kinds.length; i++) {
+      if (kinds[i] === kind) out.push(Array.from(coords.subarray(4 * i, 4 * i + 4)));
+    }
+    return out;
+  },
   clientAt: (x, y) => view.clientAt(x, y),
   pixelAt: (x, y) => view.pixelAt(x, y),
 });
@@ -77,6 +95,7 @@ function paint(cell) {
   if (tiles[row][col] === id) return;
   map.setTile(col, row, id);
   tiles[row][col] = id;
+  mapChanged = true;
   castAgain();
 }
 
@@ -234,6 +253,12 @@ function draw() {
     ctx.lineWidth = view.px(1);
     ctx.stroke();
   }
+  if (mapChanged) {
+    mapLines.clear();
+    map.fillDebugLines(mapLines);
+    mapChanged = false;
+  }
+  drawLines(view, mapLines, (kind) => state.layers[LAYER_OF_KIND.get(kind)]);
   if (state.layers.ray && state.ray) drawRay(ctx, state.ray);
 }
 
@@ -276,6 +301,7 @@ function drawRay(ctx, ray) {
 async function start() {
   await init();
   map = TileMap.fromAscii(caveText);
+  mapLines = new DebugLines();
   chooseTool(state.tool);
   frames = runFrames({
     step: () => {},

@@ -17,13 +17,16 @@ export class View {
     this.ox = 0; // device pixels of world x = 0
     this.oy = 0;
     this.dpr = 1;
+    this.sy = 1; // -1 when the world's y axis points up (a Replica Island level)
     new ResizeObserver(() => this.resize()).observe(canvas);
     this.resize();
   }
 
-  /** Shows the world rectangle (x0, y0)–(x1, y1), with `margin` world units around it. */
-  frame(x0, y0, x1, y1, margin = 0) {
+  /** Shows the world rectangle (x0, y0)–(x1, y1), with `margin` world units around it;
+   * `yUp`: the world's y axis points up, so y1 is at the top. */
+  frame(x0, y0, x1, y1, margin = 0, yUp = false) {
     this.world = { x0: x0 - margin, y0: y0 - margin, x1: x1 + margin, y1: y1 + margin };
+    this.sy = yUp ? -1 : 1;
     this.fit();
   }
 
@@ -44,7 +47,8 @@ export class View {
     const h = this.canvas.height;
     this.scale = Math.min(w / (x1 - x0), h / (y1 - y0));
     this.ox = (w - (x1 - x0) * this.scale) / 2 - x0 * this.scale;
-    this.oy = (h - (y1 - y0) * this.scale) / 2 - y0 * this.scale;
+    const top = (h - (y1 - y0) * this.scale) / 2;
+    this.oy = this.sy > 0 ? top - y0 * this.scale : top + y1 * this.scale;
   }
 
   /** Clears the canvas to `color` and sets the transform to world units. */
@@ -58,7 +62,7 @@ export class View {
 
   /** Draws in world units from here on. */
   toWorldUnits() {
-    this.ctx.setTransform(this.scale, 0, 0, this.scale, this.ox, this.oy);
+    this.ctx.setTransform(this.scale, 0, 0, this.sy * this.scale, this.ox, this.oy);
   }
 
   /** Draws in CSS pixels of the canvas from here on (text, the HUD). */
@@ -71,12 +75,22 @@ export class View {
     return (pixels * this.dpr) / this.scale;
   }
 
+  /** The canvas's CSS pixel of a world point, for text drawn after `toScreenPixels()`. */
+  cssAt(x, y) {
+    return [(x * this.scale + this.ox) / this.dpr, (this.sy * y * this.scale + this.oy) / this.dpr];
+  }
+
+  /** CSS pixels a world unit takes. */
+  get cssPerUnit() {
+    return this.scale / this.dpr;
+  }
+
   /** The world point under a mouse event (or any client coordinates). */
   worldAt(clientX, clientY) {
     const r = this.canvas.getBoundingClientRect();
     const dx = ((clientX - r.left) / r.width) * this.canvas.width;
     const dy = ((clientY - r.top) / r.height) * this.canvas.height;
-    return [(dx - this.ox) / this.scale, (dy - this.oy) / this.scale];
+    return [(dx - this.ox) / this.scale, (dy - this.oy) / (this.sy * this.scale)];
   }
 
   /** The client coordinates of a world point: where a test clicks to hit it. */
@@ -84,7 +98,7 @@ export class View {
     const r = this.canvas.getBoundingClientRect();
     return {
       x: r.left + ((x * this.scale + this.ox) / this.canvas.width) * r.width,
-      y: r.top + ((y * this.scale + this.oy) / this.canvas.height) * r.height,
+      y: r.top + ((this.sy * y * this.scale + this.oy) / this.canvas.height) * r.height,
     };
   }
 
@@ -92,7 +106,7 @@ export class View {
   pixelAt(x, y) {
     return {
       x: Math.floor(x * this.scale + this.ox),
-      y: Math.floor(y * this.scale + this.oy),
+      y: Math.floor(this.sy * y * this.scale + this.oy),
     };
   }
 }

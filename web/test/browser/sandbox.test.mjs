@@ -51,6 +51,28 @@ test("a square painted with the mouse is in the map and on the canvas", async ()
   assert.deepEqual(errors, []);
 });
 
+test("a square painted beside another hides the seam between them", async () => {
+  const HIDDEN = 3; // DebugKind.HiddenSegment
+  const ACTIVE = 0; // DebugKind.ActiveSegment
+  const onSeam = ([x0, y0, x1, y1]) => x0 === 11 && x1 === 11 && Math.min(y0, y1) >= 8 && Math.max(y0, y1) <= 9;
+  const seam = (kind) => page.evaluate((k) => window.__tileslide.segments(k), kind);
+  assert.equal((await seam(ACTIVE)).filter(onSeam).length, 1, "the square's right face is active");
+  assert.equal((await seam(HIDDEN)).filter(onSeam).length, 0);
+  const at = await clientAt(page, 11.5, 8.5);
+  await page.mouse.click(at.x, at.y);
+  await waitFrames(page, 2);
+  assert.equal((await seam(ACTIVE)).filter(onSeam).length, 0, "no active segment on the seam");
+  assert.equal((await seam(HIDDEN)).filter(onSeam).length, 2, "both faces of the seam hidden");
+  // Erased again (5): the face is active once more.
+  await page.keyboard.press("5");
+  await page.mouse.click(at.x, at.y);
+  await waitFrames(page, 2);
+  assert.equal(await page.evaluate(() => window.__tileslide.tileAt(11, 8)), null);
+  assert.equal((await seam(ACTIVE)).filter(onSeam).length, 1);
+  assert.equal((await seam(HIDDEN)).filter(onSeam).length, 0);
+  assert.deepEqual(errors, []);
+});
+
 test("a ray dragged across the painted square stops on its left face", async () => {
   await page.keyboard.press("r");
   await drag([5.5, 8.5], [15.5, 8.5]);
