@@ -8,6 +8,7 @@ use tileslide::io::{ascii, baked, replica, tiled};
 use tileslide::{Cell, QueryFilter, RayHit, TileId, Vec2};
 use wasm_bindgen::prelude::*;
 
+use crate::args::{self, error};
 use crate::rays::{self, RayOptions};
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -38,9 +39,16 @@ pub struct TileMap {
     pub(crate) map: tileslide::TileMap,
 }
 
-/// A JavaScript `Error` with `message`.
-fn error(message: impl std::fmt::Display) -> JsError {
-    JsError::new(&message.to_string())
+impl TileMap {
+    /// The core's map.
+    pub(crate) fn inner(&self) -> &tileslide::TileMap {
+        &self.map
+    }
+
+    /// The core's map, to edit.
+    pub(crate) fn inner_mut(&mut self) -> &mut tileslide::TileMap {
+        &mut self.map
+    }
 }
 
 #[wasm_bindgen]
@@ -150,17 +158,9 @@ impl TileMap {
     }
 }
 
-/// `value` as a whole number from 0 to `u32::MAX`, or an error naming it (`what`): a
-/// JavaScript number is a float, and wrapping -1 to 4294967295 would name the wrong cell.
+/// `value` as a whole number from 0 to `u32::MAX` ([`args::whole`]), or an `Error`.
 fn whole(what: &str, value: f64) -> Result<u32, JsError> {
-    if value.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&value) {
-        Ok(value as u32)
-    } else {
-        Err(error(format!(
-            "{what} is {value}, not a whole number from 0 to {}",
-            u32::MAX
-        )))
-    }
+    args::whole(what, value).map_err(error)
 }
 
 /// The `(name, bytes)` of `fromTiled`'s `files`: an object or a `Map` of names to text or
