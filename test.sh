@@ -16,7 +16,7 @@ fi
 status=0
 cargo test --workspace --features tileslide-cli/peers,tileslide/serde || status=1
 if ! command -v node >/dev/null 2>&1; then
-    echo "error: the web tests need Node.js 18 or later (node)" >&2
+    echo "error: the web tests need Node.js 20.19 or later (node)" >&2
     exit 1
 fi
 if sh web/build.sh; then

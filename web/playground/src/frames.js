@@ -5,17 +5,31 @@
 /** How many recent frames the average frame time covers. */
 const WINDOW = 60;
 
-/** Frame times: the last one and the mean over the last `WINDOW` frames. */
+/** Frame times: the last one and the mean over the last `WINDOW` frames, and the same for
+ * the two parts of a frame, a step (each) and the drawing. */
 export class FrameTimes {
   constructor() {
     this.times = [];
+    this.stepTimes = [];
+    this.drawTimes = [];
     this.frames = 0;
   }
 
-  add(ms) {
-    this.times.push(ms);
-    if (this.times.length > WINDOW) this.times.shift();
+  add(ms, stepMs, steps, drawMs) {
+    push(this.times, ms);
+    if (steps > 0) push(this.stepTimes, stepMs / steps);
+    push(this.drawTimes, drawMs);
     this.frames += 1;
+  }
+
+  /** The mean time of one step, over the last `WINDOW` frames that stepped. */
+  get step() {
+    return mean(this.stepTimes);
+  }
+
+  /** The mean time of drawing a frame. */
+  get draw() {
+    return mean(this.drawTimes);
   }
 
   get last() {
@@ -23,14 +37,29 @@ export class FrameTimes {
   }
 
   get mean() {
-    if (!this.times.length) return NaN;
-    return this.times.reduce((a, b) => a + b, 0) / this.times.length;
+    return mean(this.times);
   }
 
   /** Forgets the frames so far (after the scene changes). */
   reset() {
     this.times = [];
+    this.stepTimes = [];
+    this.drawTimes = [];
   }
+
+  /** What the hook tells a test. */
+  summary() {
+    return { last: this.last, mean: this.mean, step: this.step, draw: this.draw, frames: this.frames };
+  }
+}
+
+function push(times, ms) {
+  times.push(ms);
+  if (times.length > WINDOW) times.shift();
+}
+
+function mean(times) {
+  return times.length ? times.reduce((a, b) => a + b, 0) / times.length : NaN;
 }
 
 /**
@@ -54,15 +83,18 @@ export function runFrames({
   function frame(now) {
     try {
       const start = performance.now();
+      let steps = 0;
       if (!paused()) {
         owed += Math.min(((now - before) / 1000) * stepsPerSecond * speed(), maxSteps);
-        let steps = Math.floor(owed);
+        steps = Math.floor(owed);
         owed -= steps;
-        while (steps-- > 0) step();
+        for (let i = 0; i < steps; i++) step();
       }
       before = now;
+      const drawStart = performance.now();
       draw();
-      times.add(performance.now() - start);
+      const end = performance.now();
+      times.add(end - start, drawStart - start, steps, end - drawStart);
       requestAnimationFrame(frame);
     } catch (error) {
       onError(error);

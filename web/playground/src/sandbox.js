@@ -4,6 +4,7 @@ import init, { DebugLines, TileMap } from "../../pkg/tileslide.js";
 import caveText from "../../../examples/maps/cave.txt?raw";
 
 import { COLORS } from "./colors.js";
+import { Crowd, MAX_RADIUS } from "./crowd.js";
 import { runFrames } from "./frames.js";
 import { publishHook, showError } from "./hook.js";
 import { KIND, drawLines } from "./lines.js";
@@ -28,6 +29,7 @@ const LAYERS = [
   { key: "normals", label: "normals", on: true, kinds: [KIND.Normal] },
   { key: "hidden", label: "hidden seam segments (faint)", on: true, kinds: [KIND.HiddenSegment] },
   { key: "ray", label: "ray, hit, normal, cell", on: true, kinds: [] },
+  { key: "bodies", label: "bodies", on: true, kinds: [] },
 ];
 /** The layer that shows each debug-line kind. */
 const LAYER_OF_KIND = new Map(LAYERS.flatMap((layer) => layer.kinds.map((kind) => [kind, layer.key])));
@@ -46,23 +48,33 @@ const state = {
   dragging: false,
   lastCell: null,
   paused: false,
+  radius: 0.3,
+  message: "",
   layers: Object.fromEntries(LAYERS.map((l) => [l.key, l.on])),
 };
 let map = null;
 let frames = null;
 let mapLines = null; // the map's debug lines, filled again when a tile changes
 let mapChanged = true;
+let crowd = null;
 
 const hook = publishHook("sandbox", {
   state: () => ({
     tool: { ...state.tool },
     filter: state.filter,
     ray: state.ray && { ...state.ray },
+    bodies: crowd ? crowd.count : 0,
+    goal: crowd && crowd.goal,
+    radius: state.radius,
+    paused: state.paused,
+    message: state.message,
     width,
     height,
-    frame: frames && { last: frames.last, mean: frames.mean, frames: frames.frames },
+    frame: frames && frames.summary(),
   }),
   tileAt: (col, row) => tiles[row][col],
+  /** Every body as x, y, r. */
+  circles: () => Array.from(crowd.circles()),
   /** The map's debug segments of kind `kind` (a DebugKind number), as [x0, y0, x1, y1]. */
   segments: (kind) => {
     const coords = mapLines.segments;
@@ -96,6 +108,7 @@ function paint(cell) {
   map.setTile(col, row, id);
   tiles[row][col] = id;
   mapChanged = true;
+  crowd.mapChanged();
   castAgain();
 }
 
@@ -150,12 +163,22 @@ canvas.addEventListener("pointerdown", (event) => {
   } else if (state.tool.kind === "ray") {
     state.ray = { x0: x, y0: y, x1: x, y1: y, hit: null };
     castAgain();
+  } else if (state.tool.kind === "circles") {
+    crowd.setGoal(x, y);
+    say(
+      crowd.drop(x, y, state.radius)
+        ? `dropped a circle of radius ${state.radius.toFixed(2)}`
+        : `a circle of radius ${state.radius.toFixed(2)} does not fit there`,
+    );
   }
 });
 
 canvas.addEventListener("pointermove", (event) => {
-  if (!state.dragging || !map) return;
+  if (!map) return;
   const [x, y] = view.worldAt(event.clientX, event.clientY);
+  // The circles flow to the mouse.
+  if (x >= 0 && y >= 0 && x < width && y < height) crowd.setGoal(x, y);
+  if (!state.dragging) return;
   if (state.tool.kind === "paint") {
     const cell = cellAt(x, y);
     if (cell && state.lastCell) paintLine(state.lastCell, cell);
@@ -196,6 +219,37 @@ filterMenu.addEventListener("change", () => {
   castAgain();
 });
 
+function say(message) {
+  state.message = message;
+}
+
+const radiusSlider = document.getElementById("radius");
+radiusSlider.max = String(MAX_RADIUS);
+function setRadius(radius) {
+  state.radius = Math.round(Math.min(MAX_RADIUS, Math.max(0.1, radius)) * 100) / 100;
+  radiusSlider.value = String(state.radius);
+  document.getElementById("radius-value").textContent = state.radius.toFixed(2);
+}
+radiusSlider.addEventListener("input", () => setRadius(Number(radiusSlider.value)));
+
+function setPaused(paused) {
+  state.paused = paused;
+  const button = document.getElementById("pause");
+  button.setAttribute("aria-pressed", String(paused));
+  button.textContent = paused ? "resume" : "pause";
+}
+document.getElementById("pause").addEventListener("click", () => setPaused(!state.paused));
+document.getElementById("clear-bodies").addEventListener("click", () => {
+  crowd.clear();
+  frames.reset();
+  say("no bodies");
+});
+document.getElementById("ten-thousand").addEventListener("click", () => {
+  const n = crowd.fill();
+  frames.reset();
+  say(`${n.toLocaleString("en")} bodies of radius 0.08`);
+});
+
 const layerBox = document.getElementById("layers");
 for (const layer of LAYERS) {
   const label = document.createElement("label");
@@ -215,6 +269,9 @@ window.addEventListener("keydown", (event) => {
   if (key in tileKeys) chooseTool({ kind: "paint", tile: tileKeys[key] });
   else if (key === "r") chooseTool({ kind: "ray" });
   else if (key === "c") chooseTool({ kind: "circles" });
+  else if (key === "[") setRadius(state.radius - 0.05);
+  else if (key === "]") setRadius(state.radius + 0.05);
+  else if (key === " ") setPaused(!state.paused);
   else if (key === "f") {
     const keys = Object.keys(FILTERS);
     state.filter = keys[(keys.indexOf(state.filter) + 1) % keys.length];
@@ -259,7 +316,49 @@ function draw() {
     mapChanged = false;
   }
   drawLines(view, mapLines, (kind) => state.layers[LAYER_OF_KIND.get(kind)]);
+  if (state.layers.bodies) drawBodies(ctx);
   if (state.layers.ray && state.ray) drawRay(ctx, state.ray);
+  showBodies();
+}
+
+function drawBodies(ctx) {
+  const circles = crowd.circles();
+  // A circle a few pixels across is drawn as its square: the same dot, and ten times
+  // cheaper to rasterise for a crowd of 10,000 (the canvas has no GPU in the tests).
+  const dots = 3 * view.dpr;
+  ctx.beginPath();
+  for (let i = 0; i < circles.length; i += 3) {
+    const [x, y, r] = [circles[i], circles[i + 1], circles[i + 2]];
+    if (r * view.scale < dots) {
+      ctx.rect(x - r, y - r, 2 * r, 2 * r);
+    } else {
+      ctx.moveTo(x + r, y);
+      ctx.arc(x, y, r, 0, Math.PI * 2);
+    }
+  }
+  ctx.fillStyle = COLORS.body;
+  ctx.fill();
+  if (crowd.goal) {
+    const [gx, gy] = crowd.goal;
+    ctx.beginPath();
+    ctx.arc(gx, gy, view.px(6), 0, Math.PI * 2);
+    ctx.strokeStyle = COLORS.body;
+    ctx.lineWidth = view.px(1.5);
+    ctx.stroke();
+  }
+}
+
+function showBodies() {
+  const ms = (v) => (Number.isFinite(v) ? `${v.toFixed(2)} ms` : "–");
+  document.getElementById("body-readout").textContent = [
+    `bodies ${crowd.count.toLocaleString("en")}`,
+    `frame  ${ms(frames?.mean)} (mean of 60)`,
+    `       a step ${ms(frames?.step)}, drawing ${ms(frames?.draw)}`,
+    state.message,
+    crowd.blocked ?? "",
+  ]
+    .filter(Boolean)
+    .join("\n");
 }
 
 function drawRay(ctx, ray) {
@@ -302,10 +401,15 @@ async function start() {
   await init();
   map = TileMap.fromAscii(caveText);
   mapLines = new DebugLines();
+  crowd = new Crowd(map);
+  setRadius(state.radius);
   chooseTool(state.tool);
   frames = runFrames({
-    step: () => {},
+    step: () => crowd.step(),
     draw,
+    // One step a frame, whatever the frame costs: the sandbox has no clock to keep, and a
+    // slow frame (10,000 bodies) that ran the steps it owes would only be slower.
+    maxSteps: 1,
     paused: () => state.paused,
     onError: showError,
   });

@@ -46,7 +46,7 @@ test("a square painted with the mouse is in the map and on the canvas", async ()
   await waitFrames(page, 2);
   assert.equal(await page.evaluate(([c, r]) => window.__tileslide.tileAt(c, r), cell), 1);
   const painted = await colorAt(page, ...centre);
-  assert.notDeepEqual(painted, empty);
+  assert.notDeepEqual(painted, empty, `painted ${painted}, before ${empty}`);
   assert.deepEqual(painted, rgba("#4a3b2c"), "the square is filled with the solid colour");
   assert.deepEqual(errors, []);
 });
@@ -117,10 +117,93 @@ test("the ray filters choose the faces the ray meets", async () => {
   assert.deepEqual(errors, []);
 });
 
+/** The closest two circles come, as the gap between their edges (negative: overlap), over
+ * every pair of the page's bodies. */
+function closestGap() {
+  return page.evaluate(() => {
+    const c = window.__tileslide.circles();
+    let gap = Infinity;
+    for (let i = 0; i < c.length; i += 3) {
+      for (let j = i + 3; j < c.length; j += 3) {
+        const d = Math.hypot(c[i] - c[j], c[i + 1] - c[j + 1]) - c[i + 2] - c[j + 2];
+        if (d < gap) gap = d;
+      }
+    }
+    return gap;
+  });
+}
+
+test("circles dropped with the mouse flow to it and slide around each other", async () => {
+  await page.keyboard.press("c");
+  const drops = [[3.5, 3.5], [4.5, 4.5], [3.5, 6.5], [5.5, 2.5]];
+  for (const [x, y] of drops) {
+    const at = await clientAt(page, x, y);
+    await page.mouse.click(at.x, at.y);
+  }
+  let s = await stateOf(page);
+  assert.equal(s.bodies, drops.length, s.message);
+  // The mouse rests at the goal, far to the right, past the ceiling's pillar.
+  const goal = [30.5, 6.5];
+  const at = await clientAt(page, ...goal);
+  await page.mouse.move(at.x, at.y, { steps: 4 });
+  await page.waitForFunction(() => {
+    const c = window.__tileslide.circles();
+    return c.length > 0 && c.every((v, i) => i % 3 !== 0 || v > 20);
+  }, null, { timeout: 20_000 });
+  s = await stateOf(page);
+  assert.deepEqual(s.goal, goal);
+  const circles = await page.evaluate(() => window.__tileslide.circles());
+  for (let i = 0; i < circles.length; i += 3) {
+    assert.ok(circles[i] > 20, `circle ${i / 3} at x = ${circles[i]} did not flow`);
+  }
+  assert.ok((await closestGap()) > -1e-3, "no two circles overlap");
+  assert.deepEqual(errors, []);
+});
+
+test("10,000 bodies: the frame time is measured and shown", async (t) => {
+  await page.click("#ten-thousand");
+  let s = await stateOf(page);
+  assert.equal(s.bodies, 10_000, s.message);
+  await page.waitForFunction(() => window.__tileslide.state().frame.frames > 0, null, { timeout: 20_000 });
+  // 120 frames of the crowd flowing to the mouse.
+  const start = (await stateOf(page)).frame.frames;
+  await page.waitForFunction((n) => window.__tileslide.state().frame.frames >= n, start + 120, {
+    timeout: 120_000,
+  });
+  s = await stateOf(page);
+  assert.ok(Number.isFinite(s.frame.mean) && s.frame.mean > 0);
+  const readout = await page.textContent("#body-readout");
+  assert.match(readout, /bodies 10,000/);
+  assert.match(readout, /frame +\d+\.\d+ ms/);
+  assert.ok((await closestGap()) > -1e-3, "no two of the 10,000 overlap");
+  const figures =
+    `${s.frame.mean.toFixed(2)} ms a frame (mean of the last 60), ` +
+    `${s.frame.step.toFixed(2)} ms a step, ${s.frame.draw.toFixed(2)} ms drawing`;
+  t.diagnostic(`sandbox with 10,000 bodies: ${figures}`);
+  console.log(`# sandbox with 10,000 bodies: ${figures}`);
+  await page.click("#clear-bodies");
+  assert.deepEqual(errors, []);
+});
+
 test("a screenshot of the sandbox", async () => {
+  // Circles of three sizes, flowing to the ray's end past the hill.
+  await page.keyboard.press("c");
+  for (const [i, radius] of [0.2, 0.35, 0.5].entries()) {
+    await page.evaluate((r) => {
+      const slider = document.getElementById("radius");
+      slider.value = String(r);
+      slider.dispatchEvent(new Event("input"));
+    }, radius);
+    for (let k = 0; k < 5; k++) {
+      const at = await clientAt(page, 2 + 1.2 * k, 2 + 2 * i);
+      await page.mouse.click(at.x, at.y);
+    }
+  }
+  assert.equal((await stateOf(page)).bodies, 15);
+  await page.keyboard.press("r");
   await page.selectOption("#filter", "front");
-  await drag([3.5, 3.5], [20.5, 12.2]);
-  await waitFrames(page, 2);
+  await drag([33.5, 12.5], [9.5, 9.5]);
+  await page.waitForTimeout(2500);
   await screenshot(page, "playground-sandbox.png");
   assert.deepEqual(errors, []);
 });
