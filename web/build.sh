@@ -1,6 +1,8 @@
 #!/bin/sh
 # Builds web/pkg/: the ES module tileslide.js, its tileslide_bg.wasm and the TypeScript
-# types tileslide.d.ts, from crates/tileslide-wasm. Installs what it needs and lacks: the
+# types tileslide.d.ts, from crates/tileslide-wasm; and web/games-pkg/: the demo games
+# (tileslide_games.js, DungeonGame and PlatformerGame, for the playground; not part of the
+# npm package), from crates/tileslide-games-wasm. Installs what it needs and lacks: the
 # wasm32 target (through rustup) and wasm-bindgen-cli at the exact version of the
 # wasm-bindgen crate (the two must match).
 set -eu
@@ -30,8 +32,12 @@ if [ "$have" != "$want" ]; then
     cargo install wasm-bindgen-cli --version "$want"
 fi
 
+# One build each: built together, Cargo would unify their features of the core crate, and
+# the games' (PNG tracing among them) would grow the package.
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
     -p tileslide-wasm
+cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
+    -p tileslide-games-wasm
 target_dir=$(cargo metadata --manifest-path "$root/Cargo.toml" --format-version 1 --no-deps \
     | sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')
 rm -rf pkg
@@ -43,3 +49,10 @@ wasm-bindgen --target web --weak-refs --out-dir pkg --out-name tileslide \
 size=$(wc -c < pkg/tileslide_bg.wasm)
 gzipped=$(gzip -9 -c pkg/tileslide_bg.wasm | wc -c)
 echo "web/pkg: tileslide_bg.wasm $size bytes, $gzipped gzipped"
+
+rm -rf games-pkg
+wasm-bindgen --target web --weak-refs --out-dir games-pkg --out-name tileslide_games \
+    "$target_dir/wasm32-unknown-unknown/release/tileslide_games_wasm.wasm"
+size=$(wc -c < games-pkg/tileslide_games_bg.wasm)
+gzipped=$(gzip -9 -c games-pkg/tileslide_games_bg.wasm | wc -c)
+echo "web/games-pkg: tileslide_games_bg.wasm $size bytes, $gzipped gzipped"

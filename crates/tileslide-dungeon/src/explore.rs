@@ -152,7 +152,7 @@ pub fn centre_of(map: &TileMap, cell: Cell) -> Vec2 {
 }
 
 /// The four squares beside `cell` (those with a negative coordinate left out).
-fn neighbours(cell: Cell) -> impl Iterator<Item = Cell> {
+pub(crate) fn neighbours(cell: Cell) -> impl Iterator<Item = Cell> {
     [(-1i64, 0i64), (1, 0), (0, -1), (0, 1)]
         .into_iter()
         .filter_map(move |(dc, dr)| {

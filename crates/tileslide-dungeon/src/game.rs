@@ -8,13 +8,15 @@ use crate::arrivals::Arrivals;
 use crate::audit::Audit;
 use crate::brains::{self, Sightings};
 use crate::components::{Body, Carrying, CreatureBrain, FIREBALL_RADIUS, Health, Id, Team};
-use crate::config::GameConfig;
+use crate::config::{GameConfig, KeeperMode, PLAYER_START_GOLD};
 use crate::error::GameError;
 use crate::events::Event;
 use crate::hits::Hits;
 use crate::keeper::Keeper;
 use crate::layout::Layout;
 use crate::level::Level;
+use crate::orders::LoggedOrder;
+use crate::outcome::Outcome;
 use crate::spawn::Ids;
 use crate::summary::{Summary, chronicle};
 use crate::{combat, treasure};
@@ -25,21 +27,24 @@ const TREASURE: u32 = 5;
 
 /// The Dungeon Builder game.
 pub struct Game {
-    world: World,
-    bodies: Bodies,
-    level: Level,
+    pub(crate) world: World,
+    pub(crate) bodies: Bodies,
+    pub(crate) level: Level,
     initial_map: TileMap,
-    dug: Vec<Cell>,
-    keeper: Keeper,
+    pub(crate) dug: Vec<Cell>,
+    pub(crate) keeper: Keeper,
+    mode: KeeperMode,
     arrivals: Arrivals,
-    ids: Ids,
+    pub(crate) ids: Ids,
     hits: Hits,
     events: Vec<Event>,
-    summary: Summary,
+    pub(crate) summary: Summary,
+    outcome: Outcome,
+    pub(crate) orders: Vec<LoggedOrder>,
 }
 
 impl Game {
-    /// A defended game from `seed`.
+    /// A game of the scripted, defending keeper from `seed` (`tileslide demo dungeon`'s).
     ///
     /// # Errors
     /// Only on a bug in the built-in dungeon.
@@ -52,9 +57,18 @@ impl Game {
     /// # Errors
     /// Only on a bug in the built-in dungeon.
     pub fn with_config(config: GameConfig) -> Result<Self, GameError> {
-        let layout = Layout::build()?;
+        let (layout, keeper) = match config.keeper {
+            KeeperMode::Scripted => {
+                let layout = Layout::build()?;
+                let keeper = Keeper::new(layout.plan.clone(), config.defenders);
+                (layout, keeper)
+            }
+            KeeperMode::Player => (
+                Layout::build_for_player()?,
+                Keeper::for_player(PLAYER_START_GOLD),
+            ),
+        };
         let initial_map = layout.map.clone();
-        let keeper = Keeper::new(layout.plan.clone(), config.defenders);
         Ok(Self {
             world: World::new(),
             bodies: Bodies::new(),
@@ -62,7 +76,12 @@ impl Game {
             initial_map,
             dug: Vec::new(),
             keeper,
-            arrivals: Arrivals::new(SplitMix64::new(config.seed), config.party),
+            mode: config.keeper,
+            arrivals: Arrivals::new(
+                SplitMix64::new(config.seed),
+                config.party,
+                config.waves_to_win,
+            ),
             ids: Ids::default(),
             hits: Hits::new(FIREBALL_RADIUS)?,
             events: Vec::new(),
@@ -70,10 +89,13 @@ impl Game {
                 treasure_left: TREASURE,
                 ..Summary::default()
             },
+            outcome: Outcome::Playing,
+            orders: Vec::new(),
         })
     }
 
-    /// One fixed step (1/30 s).
+    /// One fixed step (1/30 s). The game goes on after it is decided (see
+    /// [`Game::outcome`]); only a player's orders stop.
     ///
     /// # Errors
     /// A map, navigation or body error (bugs).
@@ -126,7 +148,73 @@ impl Game {
         self.summary
             .audit
             .add(Audit::of(&self.bodies, &self.level.map));
+        if self.outcome == Outcome::Playing {
+            self.outcome = self.decide();
+        }
         Ok(())
+    }
+
+    /// Lost when every piece is carried out; won when every party has come and its last
+    /// hero is dead or gone, with treasure still in the dungeon.
+    fn decide(&self) -> Outcome {
+        if self.summary.treasure_stolen >= TREASURE {
+            Outcome::Lost
+        } else if self.arrivals.all_arrived()
+            && self.arrivals.waiting() == 0
+            && self.heroes_alive() == 0
+        {
+            Outcome::Won
+        } else {
+            Outcome::Playing
+        }
+    }
+
+    /// Where the game stands: decided once, at the end of the step that decides it.
+    #[must_use]
+    pub fn outcome(&self) -> Outcome {
+        self.outcome
+    }
+
+    /// Who gives the keeper's orders.
+    #[must_use]
+    pub fn mode(&self) -> KeeperMode {
+        self.mode
+    }
+
+    /// The orders a player gave so far, each with the step it was given before: giving the
+    /// same orders before the same steps of a game of the same configuration replays it.
+    #[must_use]
+    pub fn orders(&self) -> &[LoggedOrder] {
+        &self.orders
+    }
+
+    /// Steps until the next party arrives (0: in the next step), or `None` when no more
+    /// will come.
+    #[must_use]
+    pub fn next_wave_in(&self) -> Option<u64> {
+        self.arrivals.next_wave_in(self.summary.steps)
+    }
+
+    /// Heroes in the dungeon, plus those of arrived parties still waiting at the entrance.
+    #[must_use]
+    pub fn heroes_alive(&self) -> u32 {
+        self.count(Team::Heroes) + self.arrivals.waiting()
+    }
+
+    /// The keeper's creatures alive.
+    #[must_use]
+    pub fn creatures_alive(&self) -> u32 {
+        self.count(Team::Keeper)
+    }
+
+    fn count(&self, team: Team) -> u32 {
+        let n = self
+            .world
+            .query::<&Team>()
+            .iter()
+            .filter(|t| **t == team)
+            .count();
+        u32::try_from(n).unwrap_or(u32::MAX)
     }
 
     /// What happened so far.
@@ -225,7 +313,11 @@ impl Game {
 
 /// Brings the navigation up to date with the map (see [`Level::catch_up`]), drops creature
 /// paths home that the edits affect, and lets heroes try their dead ends again after a dig.
-fn refresh_ways(level: &mut Level, world: &mut World, events: &[Event]) -> Result<(), GameError> {
+pub(crate) fn refresh_ways(
+    level: &mut Level,
+    world: &mut World,
+    events: &[Event],
+) -> Result<(), GameError> {
     if events.iter().any(|e| matches!(e, Event::Dug { .. })) {
         level.explored.forget_dead_ends();
     }

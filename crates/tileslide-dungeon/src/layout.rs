@@ -67,6 +67,12 @@ const GATE: Rooms = Rooms {
     cols: (31, 33),
     rows: (2, 4),
 };
+/// The corridor a player's dungeon starts with: from the entrance room straight down to
+/// the treasure room, so that heroes have a way in from the first party on.
+const PLAYER_CORRIDOR: Rooms = Rooms {
+    cols: (32, 33),
+    rows: (9, 28),
+};
 /// Where the keeper's skeletons wait.
 pub const LAIR: Vec2 = Vec2::new(27.5, 21.5);
 /// Where the keeper's imps wait.
@@ -123,13 +129,30 @@ pub struct Layout {
 }
 
 impl Layout {
-    /// The standard dungeon.
+    /// The standard dungeon: the treasure room and the entrance room, not joined (the
+    /// scripted keeper digs the way).
     ///
     /// # Errors
     /// Only if the built-in ASCII map fails to parse (a bug).
     pub fn build() -> Result<Self, LoadError> {
+        Self::build_with(None)
+    }
+
+    /// The dungeon a player starts with: the standard one with a corridor dug from the
+    /// entrance room to the treasure room.
+    ///
+    /// # Errors
+    /// Only if the built-in ASCII map fails to parse (a bug).
+    pub fn build_for_player() -> Result<Self, LoadError> {
+        Self::build_with(Some(PLAYER_CORRIDOR))
+    }
+
+    fn build_with(corridor: Option<Rooms>) -> Result<Self, LoadError> {
         let open = |c, r| {
-            TREASURE_ROOM.contains(c, r) || ENTRANCE_ROOM.contains(c, r) || GATE.contains(c, r)
+            TREASURE_ROOM.contains(c, r)
+                || ENTRANCE_ROOM.contains(c, r)
+                || GATE.contains(c, r)
+                || corridor.is_some_and(|room| room.contains(c, r))
         };
         let mut text = String::new();
         let mut rock = Vec::new();
@@ -188,5 +211,20 @@ mod tests {
         assert!(layout.plan.iter().all(|&c| !layout.ground.is_rock(c)));
         assert!(layout.ground.is_rock(Cell { col: 0, row: 0 }));
         assert!(!layout.ground.is_rock(Cell { col: 32, row: 32 }));
+    }
+
+    #[test]
+    fn a_players_corridor_is_earth_and_joins_the_entrance_to_the_treasure_room() {
+        let (scripted, player) = (
+            Layout::build().unwrap(),
+            Layout::build_for_player().unwrap(),
+        );
+        for row in 9..=28 {
+            let cell = Cell::new(32, row);
+            assert!(!player.ground.is_rock(cell));
+            assert!(player.map.tile(cell).is_none(), "{cell:?}");
+            assert!(scripted.map.tile(cell).is_some(), "{cell:?}");
+        }
+        assert!(player.map.tile(Cell::new(31, 20)).is_some());
     }
 }

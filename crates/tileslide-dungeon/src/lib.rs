@@ -1,10 +1,18 @@
 //! # tileslide-dungeon
 //!
-//! Dungeon Builder, the demo game of issue 8, as a deterministic fixed-step simulation
-//! built only on tileslide's public API. A keeper digs a dungeon out of a disc of earth
-//! inside rock, from the treasure room towards the entrance, paying gold per square, and
-//! summons skeletons (melee) and imps (fireballs); hero parties arrive every 30 seconds,
-//! fight their way to the treasure along a flow field and carry it out.
+//! Dungeon Builder as a deterministic fixed-step simulation built only on tileslide's
+//! public API. A keeper digs a dungeon out of a disc of earth inside rock, paying gold per
+//! square, and summons skeletons (melee) and imps (fireballs); hero parties arrive every 30
+//! seconds, explore, fight their way to the treasure along a flow field and carry it out.
+//!
+//! The keeper is either a script ([`GameConfig::new`], the game of `tileslide demo
+//! dungeon`: it digs from the treasure room towards the entrance and summons when its rooms
+//! are ready) or a player ([`GameConfig::player`]): the dungeon starts with a corridor from
+//! the entrance to the treasure room, and the player's orders ([`Game::dig`] a square of
+//! earth beside an open one for [`DIG_COST`] gold, [`Game::summon`] an imp or a skeleton
+//! for its [`creature_cost`]) take effect at once or are refused with an [`OrderError`]
+//! saying why. The game is lost when the heroes carry every piece of the treasure out and
+//! won when the last party is seen off ([`Game::outcome`]).
 //!
 //! - Movement: every fighter is a circle in [`tileslide::Bodies`]; each step brains
 //!   propose moves and the resolver steps them (no overlaps, no wall crossings).
@@ -15,6 +23,18 @@
 //!   swings hit each victim once, fireballs are swept along their step.
 //! - Line of sight and fireball walls: [`tileslide::TileMap::cast_ray`].
 //! - Entities live in a [`hecs::World`]; systems talk through [`Event`]s.
+//!
+//! ```
+//! use tileslide_dungeon::{Game, GameConfig, Kind, OrderError};
+//! use tileslide::{Cell, Vec2};
+//!
+//! let mut game = Game::with_config(GameConfig::player(1))?;
+//! game.dig(Cell::new(31, 20))?; // earth beside the corridor
+//! game.summon(Kind::Imp, Vec2::new(32.5, 20.5))?;
+//! assert!(matches!(game.dig(Cell::new(0, 0)), Err(OrderError::Rock { .. })));
+//! game.step()?;
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 //!
 //! ```
 //! let mut game = tileslide_dungeon::Game::new(1)?;
@@ -28,10 +48,11 @@
 
 // The modules import each other in one direction only. At the bottom, plain types:
 // `step` (the fixed step), `error`, `components`, `events`, `config`, `audit`, `explore`,
-// `layout`. Above them the shared world: `level` (map and navigation), `spawn`, `hits`.
-// Then the systems, each using only those: `keeper`, `arrivals`, `brains`, `combat` (which
-// reads `brains`' sightings), `treasure`, `summary`. `game` runs the systems in order;
-// `render` draws a `Game`.
+// `layout`, `outcome`. Above them the shared world: `level` (map and navigation), `spawn`,
+// `hits`. Then the systems, each using only those: `keeper`, `arrivals`, `brains`,
+// `combat` (which reads `brains`' sightings), `treasure`, `summary`. `game` runs the
+// systems in order; on top of it, `orders` carries out a player's orders, `view` gives
+// renderers plain values and `render` draws a `Game`.
 
 mod arrivals;
 mod audit;
@@ -47,21 +68,29 @@ mod hits;
 mod keeper;
 mod layout;
 mod level;
+mod orders;
+mod outcome;
 mod render;
 mod spawn;
 mod step;
 mod summary;
 mod treasure;
+mod view;
 
 pub use audit::Audit;
-pub use components::{Goal, Kind, Team};
-pub use config::{GameConfig, Party};
+pub use components::{FIREBALL_RADIUS, Goal, Kind, Team};
+pub use config::{GameConfig, KeeperMode, PLAYER_START_GOLD, PLAYER_WAVES, Party};
 pub use error::GameError;
 pub use events::Event;
 pub use explore::Explored;
 pub use game::Game;
+pub use keeper::{DIG_COST, MAX_CREATURES, creature_cost};
+pub use layout::Ground;
 pub use level::Level;
+pub use orders::{LoggedOrder, Order, OrderError};
+pub use outcome::Outcome;
 pub use render::style;
 pub use step::{DT, STEPS_PER_SECOND};
 pub use summary::Summary;
 pub use tileslide_scenes::SplitMix64;
+pub use view::Fighter;

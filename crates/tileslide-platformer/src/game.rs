@@ -158,12 +158,30 @@ impl Game {
     /// One fixed step: the platform, the enemies, the player (by the script), the hits,
     /// the audit.
     pub fn step(&mut self) -> Result<(), GameError> {
+        self.step_as(None)
+    }
+
+    /// One fixed step with the player doing what `input` says instead of the script (a
+    /// person playing). Its run is clamped to −1..1 (NaN counts as 0); the jump and the
+    /// drop happen only on the ground, as the script's do.
+    pub fn step_with(&mut self, input: Input) -> Result<(), GameError> {
+        let run = if input.run.is_nan() {
+            0.0
+        } else {
+            input.run.clamp(-1.0, 1.0)
+        };
+        self.step_as(Some(Input { run, ..input }))
+    }
+
+    /// One step, the player moved by `input` or, without one, by the script (asked after
+    /// the platform and the enemies moved).
+    fn step_as(&mut self, input: Option<Input>) -> Result<(), GameError> {
         let dt = 1.0 / STEPS_PER_SECOND as f32;
         self.platform.slide(&mut self.level, dt)?;
         for i in 0..self.enemies.len() {
             self.move_enemy(i, dt)?;
         }
-        let input = next_input(self);
+        let input = input.unwrap_or_else(|| next_input(self));
         let from = self.player.body.position;
         self.move_player(input, dt)?;
         let to = self.player.body.position;

@@ -190,17 +190,31 @@ impl Level {
         level: impl AsRef<Path>,
         tile_set: impl AsRef<Path>,
     ) -> Result<Self, LevelError> {
-        let level = level.as_ref();
-        let set = replica::load_tile_set(tile_set)?;
-        let map = replica::load_level(level, Arc::new(set))?;
+        let (level, tile_set) = (level.as_ref(), tile_set.as_ref());
+        let set_bytes = std::fs::read(tile_set).map_err(|e| unreadable(tile_set, e))?;
         let bytes = std::fs::read(level).map_err(|e| unreadable(level, e))?;
-        let cell = replica_spawn::player_spawn(&bytes)
-            .ok_or_else(|| LevelError::NoStart(level.to_owned()))?;
+        Self::parse_replica(&bytes, level, &set_bytes, tile_set)
+    }
+
+    /// [`Level::load_replica`] from the files' bytes (a game with no disk): `level` and
+    /// `tile_set` are the bytes of `level_*.bin` and `collision.bin`, named in errors by
+    /// `level_path` and `tile_set_path`.
+    pub fn parse_replica(
+        level: &[u8],
+        level_path: impl AsRef<Path>,
+        tile_set: &[u8],
+        tile_set_path: impl AsRef<Path>,
+    ) -> Result<Self, LevelError> {
+        let path = level_path.as_ref();
+        let set = replica::parse_tile_set(tile_set, tile_set_path)?;
+        let map = replica::parse_level(level, path, Arc::new(set))?;
+        let cell = replica_spawn::player_spawn(level)
+            .ok_or_else(|| LevelError::NoStart(path.to_owned()))?;
         let size = map.cell_size();
         let corner = map.cell_corner(cell);
         let goal = right_end(&map);
         Ok(Self {
-            name: file_name(level),
+            name: file_name(path),
             up: Vec2::Y,
             scale: size.x,
             // The game puts its objects' feet a pixel above the bottom of the spawn cell.

@@ -69,7 +69,7 @@ impl NavGrid {
     /// `toY`), smoothed into straight runs each clear of walls: 2 floats a point (`x, y`),
     /// from the start to the goal; `null` when the circle does not fit at an end or cannot
     /// get from one to the other.
-    #[wasm_bindgen(js_name = findPath)]
+    #[wasm_bindgen(js_name = findPath, unchecked_return_type = "Float32Array | null")]
     #[allow(clippy::too_many_arguments)]
     pub fn find_path(
         &self,
@@ -79,7 +79,7 @@ impl NavGrid {
         to_x: f64,
         to_y: f64,
         radius: f64,
-    ) -> Result<Option<Float32Array>, JsError> {
+    ) -> Result<JsValue, JsError> {
         let from = args::vec2("findPath: from", from_x, from_y).map_err(error)?;
         let to = args::vec2("findPath: to", to_x, to_y).map_err(error)?;
         let radius = args::finite("findPath: radius", radius).map_err(error)?;
@@ -87,9 +87,9 @@ impl NavGrid {
             .nav
             .find_path(map.inner(), from, to, radius)
             .map_err(nav_error("findPath"))?;
-        Ok(path.map(|p| {
+        Ok(path.map_or(JsValue::NULL, |p| {
             let flat: Vec<f32> = p.points().iter().flat_map(|v| [v.x, v.y]).collect();
-            Float32Array::from(flat.as_slice())
+            Float32Array::from(flat.as_slice()).into()
         }))
     }
 
@@ -207,17 +207,20 @@ impl FlowField {
 
     /// The length of the way from (`x`, `y`) to the goal along the field (map units), or
     /// `null` if a circle there cannot reach it.
+    #[wasm_bindgen(unchecked_return_type = "number | null")]
     pub fn distance(
         &self,
         nav: &NavGrid,
         map: &TileMap,
         x: f64,
         y: f64,
-    ) -> Result<Option<f32>, JsError> {
+    ) -> Result<JsValue, JsError> {
         let p = args::vec2("distance: point", x, y).map_err(error)?;
-        self.field
+        let distance = self
+            .field
             .distance(&nav.nav, map.inner(), p)
-            .map_err(nav_error("distance"))
+            .map_err(nav_error("distance"))?;
+        Ok(distance.map_or(JsValue::NULL, JsValue::from))
     }
 
     /// Catches up with the map's edits once `nav` has (`nav.sync(map)`); true when the

@@ -31,7 +31,9 @@
 //! The crate root holds what a game uses every frame: the map and its tiles and temporary
 //! segments, the queries and their hits, bodies, the character, hit volumes, paths, their
 //! errors, the shapes these take ([`Segment`], [`Ray`], [`Circle`], [`Aabb`]), the
-//! caller's entity ([`Owner`]) and [`Vec2`]. Four public modules hold the rest:
+//! caller's entity ([`Owner`]), [`Vec2`], and [`DebugLines`]: what the world looks like as
+//! kinded segments, circles, points and boxes, which every part fills with a `debug_lines`
+//! method and every front end draws. Four public modules hold the rest:
 //! [`io`] (the loaders), [`geometry`] (the exact pair primitives the rest is built on),
 //! [`broadphase`] (pairs of overlapping boxes) and [`limits`] (the largest coordinates,
 //! maps and grids accepted).

@@ -3,6 +3,7 @@
 
 mod circle_cast;
 mod circle_wide;
+mod debug_lines;
 mod error;
 mod fast_walk;
 mod filter;

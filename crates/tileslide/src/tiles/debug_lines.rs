@@ -121,7 +121,7 @@ impl TileMap {
             let (a, b) = (corner + s.a, corner + s.b);
             let d = b - a;
             let length = d.length();
-            if !(length > 0.0) {
+            if !length.is_normal() {
                 continue;
             }
             let eps = eps_length / length;
@@ -270,7 +270,7 @@ mod tests {
 
     #[test]
     fn the_view_limits_the_cells_visited() {
-        let map = ascii::parse(&"#.".repeat(50).repeat(1), "row.txt", 1.0).unwrap();
+        let map = ascii::parse(&"#.".repeat(50), "row.txt", 1.0).unwrap();
         let mut lines = DebugLines::new().with_view(Aabb::from_corners(
             Vec2::new(10.2, 0.2),
             Vec2::new(10.8, 0.8),

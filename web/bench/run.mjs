@@ -1,0 +1,103 @@
+// `npm run bench`: the standard rays scene (dungeon256, 1,000,000 rays) and crowd scene
+// (10,000 circles, 100 steps a run) in wasm through the package, and natively in the same
+// run through the same Rust code (the tileslide-web-bench crate, release build), with the
+// medians, the wasm/native ratios, the answers' checksums (they must agree) and the CPU.
+//
+// Options: --runs N (default 5), --no-build (use web/pkg as it is).
+import { execFileSync } from "node:child_process";
+import { mkdtempSync, readFileSync, rmSync, statSync } from "node:fs";
+import { cpus, tmpdir } from "node:os";
+import { join } from "node:path";
+import { fileURLToPath } from "node:url";
+import { gzipSync } from "node:zlib";
+
+const here = (path) => fileURLToPath(new URL(path, import.meta.url));
+const root = here("../..");
+const args = process.argv.slice(2);
+const runsAt = args.indexOf("--runs");
+const runs = runsAt >= 0 ? Number(args[runsAt + 1]) : 5;
+if (!Number.isInteger(runs) || runs < 1) throw new Error("--runs takes a positive whole number");
+
+if (!args.includes("--no-build")) {
+  execFileSync("sh", [here("../build.sh")], { stdio: "inherit" });
+}
+const { initSync, Bodies, TileMap } = await import("../pkg/tileslide.js");
+const wasmBytes = readFileSync(here("../pkg/tileslide_bg.wasm"));
+initSync({ module: wasmBytes });
+
+// The native side: builds, writes the scenes, times them, and prints one line of JSON.
+execFileSync("cargo", ["build", "--quiet", "--release", "-p", "tileslide-web-bench"], { cwd: root, stdio: "inherit" });
+const metadata = JSON.parse(execFileSync("cargo", ["metadata", "--format-version", "1", "--no-deps"], { cwd: root }));
+const dir = mkdtempSync(join(tmpdir(), "tileslide-bench-"));
+const native = JSON.parse(
+  execFileSync(join(metadata.target_directory, "release", "tileslide-web-bench"), ["time", dir, String(runs)], { cwd: root }),
+);
+
+const floats = (name) => {
+  const bytes = readFileSync(join(dir, name));
+  return new Float32Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 4);
+};
+const map = TileMap.fromBaked(readFileSync(join(dir, "dungeon256.tsm")));
+const rays = floats("rays.f32");
+const crowd = floats("crowd.f32");
+rmSync(dir, { recursive: true });
+
+/** FNV-1a over the floats' bytes, little-endian, as the native side computes it. */
+function fnv1a(values) {
+  const bytes = new Uint8Array(values.buffer, values.byteOffset, values.byteLength);
+  let h = 0xcbf29ce484222325n;
+  for (const b of bytes) {
+    h ^= BigInt(b);
+    h = (h * 0x100000001b3n) & 0xffffffffffffffffn;
+  }
+  return h.toString(16).padStart(16, "0");
+}
+
+function median(n, work) {
+  const times = [];
+  for (let i = 0; i < n; i++) {
+    const start = process.hrtime.bigint();
+    work();
+    times.push(Number(process.hrtime.bigint() - start) / 1e9);
+  }
+  times.sort((a, b) => a - b);
+  return times[Math.floor(times.length / 2)];
+}
+
+let answers;
+const raysSeconds = median(runs, () => {
+  answers = map.castRays(rays);
+});
+
+const steps = native.crowdSteps;
+let crowdHash;
+const crowdRun = median(Math.ceil(runs / 2), () => {
+  const bodies = new Bodies();
+  const n = crowd.length / 4;
+  const handles = new Float64Array(n);
+  const moves = new Float32Array(2 * n);
+  for (let i = 0; i < n; i++) {
+    handles[i] = bodies.addCircle(crowd[4 * i], crowd[4 * i + 1], 0.3);
+    moves.set(crowd.subarray(4 * i + 2, 4 * i + 4), 2 * i);
+  }
+  for (let s = 0; s < steps; s++) {
+    bodies.proposeMany(handles, moves);
+    bodies.step(map);
+  }
+  crowdHash = fnv1a(bodies.positions());
+  bodies.free();
+});
+const crowdStepSeconds = crowdRun / steps;
+
+const raysChecksum = fnv1a(answers);
+const row = (name, wasm, nat, unit, scale, same) =>
+  `${name.padEnd(26)} ${(wasm * scale).toFixed(2).padStart(9)} ${unit}  ${(nat * scale).toFixed(2).padStart(9)} ${unit}  ${(wasm / nat).toFixed(2).padStart(5)}×  ${same ? "same answers" : "ANSWERS DIFFER"}`;
+console.log(`CPU: ${cpus()[0]?.model ?? "unknown"}; Node ${process.version}; median of ${runs} runs (crowd: ${Math.ceil(runs / 2)} runs of ${steps} steps)`);
+console.log(`package: tileslide_bg.wasm ${statSync(here("../pkg/tileslide_bg.wasm")).size} bytes, ${gzipSync(wasmBytes, { level: 9 }).length} gzipped`);
+console.log(`${"scene".padEnd(26)} ${"wasm".padStart(12)}  ${"native".padStart(12)}  ratio`);
+console.log(row("rays dungeon256, 1M rays", raysSeconds, native.raysSeconds, "ms", 1e3, raysChecksum === native.raysChecksum));
+console.log(row("crowd 10,000, per step", crowdStepSeconds, native.crowdStepSeconds, "ms", 1e3, crowdHash === native.crowdHash));
+if (raysChecksum !== native.raysChecksum || crowdHash !== native.crowdHash) {
+  console.error(`checksums: rays wasm ${raysChecksum} native ${native.raysChecksum}; crowd wasm ${crowdHash} native ${native.crowdHash}`);
+  process.exitCode = 1;
+}

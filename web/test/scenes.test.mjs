@@ -1,0 +1,58 @@
+// The standard scenes of BENCHMARKS.md through the package give the native answers bit for
+// bit. The scenes are written by the native crate tileslide-web-bench (their generators use
+// the platform's cos and sin, so they are made in one place and handed over as bytes); the
+// checksums are the ones its native tests assert.
+import { test } from "node:test";
+import assert from "node:assert/strict";
+import { execFileSync } from "node:child_process";
+import { mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+
+import { Bodies, TileMap } from "../pkg/tileslide.js";
+import { fnv1a, here } from "./support.mjs";
+
+/** crates/tileslide-web-bench/src/lib.rs's RAYS_CHECKSUM. */
+const RAYS_CHECKSUM = "2d2187acd2742f7e";
+/** The golden hash of crates/tileslide/tests/resolver_golden.rs: 2,000 circles, 40 steps. */
+const GOLDEN = "85842b31c9d3e773";
+
+const dir = mkdtempSync(join(tmpdir(), "tileslide-scenes-"));
+execFileSync("cargo", ["run", "--quiet", "-p", "tileslide-web-bench", "--", "export", dir], {
+  cwd: here("../.."),
+  stdio: ["ignore", "ignore", "inherit"],
+});
+const floats = (name) => {
+  const bytes = readFileSync(join(dir, name));
+  return new Float32Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 4);
+};
+const map = TileMap.fromBaked(readFileSync(join(dir, "dungeon256.tsm")));
+const rays = floats("rays.f32");
+const crowd = floats("crowd.f32");
+rmSync(dir, { recursive: true });
+
+test("the rays scene (dungeon256, 1,000,000 rays) gives the native checksum", () => {
+  assert.equal(rays.length, 4_000_000);
+  const out = map.castRays(rays);
+  let hits = 0;
+  for (let i = 0; i < out.length; i += 5) if (!Number.isNaN(out[i])) hits++;
+  assert.equal(hits, 943_906, "BENCHMARKS.md's hits");
+  assert.equal(fnv1a(out), RAYS_CHECKSUM);
+});
+
+test("the crowd scene's golden run (2,000 circles, 40 steps) gives the native golden hash", () => {
+  const bodies = new Bodies();
+  const n = 2000;
+  const handles = new Float64Array(n);
+  const moves = new Float32Array(2 * n);
+  for (let i = 0; i < n; i++) {
+    handles[i] = bodies.addCircle(crowd[4 * i], crowd[4 * i + 1], Math.fround(0.3));
+    moves.set(crowd.subarray(4 * i + 2, 4 * i + 4), 2 * i);
+  }
+  for (let step = 0; step < 40; step++) {
+    bodies.proposeMany(handles, moves);
+    bodies.step(map);
+  }
+  assert.equal(fnv1a(bodies.positions()), GOLDEN);
+  bodies.free();
+});
