@@ -19,6 +19,8 @@ export default defineConfig({
       input: {
         index: here("index.html"),
         sandbox: here("sandbox.html"),
+        dungeon: here("dungeon.html"),
+        platformer: here("platformer.html"),
       },
     },
   },

@@ -8,6 +8,7 @@ import { Crowd, MAX_RADIUS } from "./crowd.js";
 import { runFrames } from "./frames.js";
 import { publishHook, showError } from "./hook.js";
 import { KIND, drawLines } from "./lines.js";
+import { siteHeader } from "./page.js";
 import { TILE_NAMES, tilesOfAscii, traceTile } from "./tiles.js";
 import { View } from "./view.js";
 
@@ -34,6 +35,7 @@ const LAYERS = [
 /** The layer that shows each debug-line kind. */
 const LAYER_OF_KIND = new Map(LAYERS.flatMap((layer) => layer.kinds.map((kind) => [kind, layer.key])));
 
+siteHeader("sandbox");
 const canvas = document.getElementById("canvas");
 const tiles = tilesOfAscii(caveText);
 const width = tiles[0].length;

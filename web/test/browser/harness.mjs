@@ -3,6 +3,7 @@
 // Debian's Chromium driven by playwright-core (never a downloaded browser), a page opened
 // with every console error and uncaught exception collected, and the page's test hook.
 import { existsSync, mkdirSync } from "node:fs";
+import { after, before } from "node:test";
 import { fileURLToPath } from "node:url";
 import { chromium } from "playwright-core";
 import { preview } from "vite";
@@ -96,6 +97,23 @@ export async function openPage(site, name) {
     throw new Error(`${name} did not start: ${errors.join("\n") || error.message}`);
   }
   return { page, errors };
+}
+
+/**
+ * The setup of a test file: before its tests, the playground served, Chromium started and
+ * page `name` opened; after them, both stopped. The returned object's `page` and `errors`
+ * are set once the page is open.
+ */
+export function usePage(name) {
+  const session = { site: null, page: null, errors: null };
+  before(async () => {
+    session.site = await startPlayground();
+    Object.assign(session, await openPage(session.site, name));
+  });
+  after(async () => {
+    await session.site?.close();
+  });
+  return session;
 }
 
 /** The page's state through its hook. */
