@@ -189,3 +189,65 @@ test("a Replica Island level loads from its bytes and is played", { skip: !exist
   assert.ok(minX <= x1 && x1 <= maxX);
   game.free();
 });
+
+test("mutated Replica Island bytes load or throw an Error, never crash the module", { skip: !existsSync(replica) && !process.env.CI && "no ../shared/data/replica-island" }, () => {
+  const level = readFileSync(replica + "level_1_1_island.bin");
+  const tiles = readFileSync(replica + "collision.bin");
+  // A fixed linear congruential sequence: the same mutations every run.
+  let seed = 12345;
+  const next = (n) => {
+    seed = (Math.imul(seed, 1103515245) + 12345) >>> 0;
+    return seed % n;
+  };
+  let loaded = 0;
+  for (let round = 0; round < 150; round++) {
+    const [bytes, other] = round % 3 === 0 ? [Uint8Array.from(tiles), level] : [Uint8Array.from(level), tiles];
+    const cut = next(4) === 0 ? next(bytes.length) : bytes.length;
+    for (let k = 0; k < 1 + next(8); k++) bytes[next(bytes.length)] = next(256);
+    const mutated = bytes.subarray(0, cut);
+    try {
+      const game = round % 3 === 0
+        ? PlatformerGame.fromReplicaIsland(other, mutated)
+        : PlatformerGame.fromReplicaIsland(mutated, other);
+      game.step(Keys.Right | Keys.Jump, 30);
+      game.free();
+      loaded++;
+    } catch (e) {
+      assert.ok(!(e instanceof WebAssembly.RuntimeError), `round ${round}: ${e}`);
+      assert.ok(e instanceof Error && e.message.length > 0, `round ${round}: ${e}`);
+    }
+  }
+  // The module is still sound.
+  const game = new PlatformerGame();
+  game.step(Keys.Right, 10);
+  assert.equal(game.state.steps, 10);
+  game.free();
+  assert.ok(loaded > 0, "no mutation loaded");
+});
+
+test("random orders are carried out or refused with an Error, never crash the module", () => {
+  const game = new DungeonGame(9);
+  let seed = 777;
+  const next = (n) => {
+    seed = (Math.imul(seed, 1103515245) + 12345) >>> 0;
+    return seed % n;
+  };
+  const values = [NaN, Infinity, -Infinity, -1, 1e30, -0, 0.5];
+  const number = (n) => (next(10) === 0 ? values[next(values.length)] : next(n) + (next(2) ? 0.5 : 0));
+  let accepted = 0;
+  for (let i = 0; i < 400; i++) {
+    try {
+      if (next(2)) game.dig(number(70), number(70));
+      else game.summon(next(2) ? "imp" : "skeleton", number(70), number(70));
+      accepted++;
+    } catch (e) {
+      assert.ok(!(e instanceof WebAssembly.RuntimeError), `order ${i}: ${e}`);
+      assert.ok(e instanceof Error && e.message.length > 0);
+    }
+    if (i % 10 === 0) game.step(15);
+  }
+  assert.ok(accepted > 0);
+  const s = game.state;
+  assert.equal(s.squaresDug + s.creaturesSummoned, accepted);
+  game.free();
+});

@@ -11,7 +11,7 @@ use tileslide_dungeon::{
 use wasm_bindgen::prelude::*;
 
 use crate::args::{self, error};
-use crate::draw;
+use crate::{DungeonOptions, draw};
 
 /// A game of Dungeon Builder.
 #[wasm_bindgen]
@@ -69,10 +69,11 @@ impl DungeonGame {
     #[wasm_bindgen(constructor)]
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "number | bigint")] seed: JsValue,
-        #[wasm_bindgen(unchecked_param_type = "{ scripted?: boolean }")] options: Option<JsValue>,
+        options: Option<DungeonOptions>,
     ) -> Result<DungeonGame, JsError> {
         let seed = args::seed(&seed)?;
-        let config = if scripted(&options.unwrap_or(JsValue::UNDEFINED))? {
+        let options = options.map_or(JsValue::UNDEFINED, JsValue::from);
+        let config = if scripted(&options)? {
             GameConfig::new(seed)
         } else {
             GameConfig::player(seed)

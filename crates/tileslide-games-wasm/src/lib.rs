@@ -66,8 +66,25 @@ pub mod platformer;
 
 use wasm_bindgen::prelude::*;
 
+#[wasm_bindgen]
+extern "C" {
+    /// `new DungeonGame`'s options: `{scripted?: boolean}`.
+    #[wasm_bindgen(typescript_type = "DungeonOptions")]
+    pub type DungeonOptions;
+
+    /// The keys held for a platformer step: a number of `Keys` bits or `PlatformerKeys`.
+    #[wasm_bindgen(typescript_type = "number | PlatformerKeys")]
+    pub type PlatformerInput;
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const TS_TYPES: &str = r#"
+/** How a Dungeon Builder game is kept: `scripted: true` for the keeper's script (the CLI
+ * demo's game), else by the player's orders. */
+export interface DungeonOptions {
+    scripted?: boolean;
+}
+
 /** What a Dungeon Builder HUD shows. Times are in seconds of game time. */
 export interface DungeonState {
     steps: number;

@@ -6,8 +6,8 @@ use tileslide_platformer::{COIN_RADIUS, Game, Input, Level, PLATFORM_OWNER, STEP
 use wasm_bindgen::prelude::*;
 
 use crate::args::{self, error};
-use crate::draw;
 use crate::dungeon::object;
+use crate::{PlatformerInput, draw};
 
 /// The keys of `PlatformerGame.step`'s input as bits, to be or-ed together.
 #[wasm_bindgen]
@@ -105,14 +105,11 @@ impl PlatformerGame {
     }
 
     /// Runs `n` fixed steps of 1/60 s (1 by default, at most 108,000) with the keys of
-    /// `input` held: a number of `Keys` bits or `{left, right, jump, down}`. A held jump
+    /// `input` held: a number of `Keys` bits or `{left, right, jump, down}` (none held when
+    /// it is left out). A held jump
     /// jumps again on landing.
-    pub fn step(
-        &mut self,
-        #[wasm_bindgen(unchecked_param_type = "number | PlatformerKeys")] input: JsValue,
-        n: Option<f64>,
-    ) -> Result<(), JsError> {
-        let input = self::input(&input)?;
+    pub fn step(&mut self, input: Option<PlatformerInput>, n: Option<f64>) -> Result<(), JsError> {
+        let input = self::input(&input.map_or(JsValue::UNDEFINED, JsValue::from))?;
         for _ in 0..args::step_count("step: n", n)? {
             self.game.step_with(input).map_err(error)?;
         }
