@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Every test of tileslide: the Rust workspace's (with the CLI's peer benchmarks and the core
 # crate's serde round trips), then the web package's (web/: built from
-# crates/tileslide-wasm, tested in Node). Installs what the web build lacks (the wasm32
-# target, wasm-bindgen-cli; see web/build.sh). Both parts run; the exit status is non-zero
-# if either failed.
+# crates/tileslide-wasm, tested in Node) and the playground's (web/playground, built with
+# Vite and played in headless Chromium). Installs what the web build lacks (the wasm32
+# target, wasm-bindgen-cli, see web/build.sh; the npm packages of web/package-lock.json).
+# Every part runs; the exit status is non-zero if any failed.
 set -uo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")"
@@ -15,8 +16,15 @@ fi
 status=0
 cargo test --workspace --features tileslide-cli/peers,tileslide/serde || status=1
 if ! command -v node >/dev/null 2>&1; then
-    echo "error: the web tests need Node.js 18 or later (node)" >&2
+    echo "error: the web tests need Node.js 20.19 or later (node)" >&2
     exit 1
 fi
-(sh web/build.sh && cd web && node --test test/) || status=1
+if sh web/build.sh; then
+    (cd web && node --test test/*.test.mjs) || status=1
+    # The playground in Chromium (Debian's, /usr/bin/chromium; .ci/run installs it), driven
+    # by playwright-core from web/node_modules.
+    (cd web && npm ci --no-audit --no-fund && npm run test:browser) || status=1
+else
+    status=1
+fi
 exit $status
