@@ -21,9 +21,10 @@ if (!Number.isInteger(runs) || runs < 1) throw new Error("--runs takes a positiv
 if (!args.includes("--no-build")) {
   execFileSync("sh", [here("../build.sh")], { stdio: "inherit" });
 }
-const { initSync, Bodies, TileMap } = await import("../pkg/tileslide.js");
+// The tests' support module starts the package and hashes answers as the native side does.
+const { fnv1a } = await import("../test/support.mjs");
+const { Bodies, TileMap } = await import("../pkg/tileslide.js");
 const wasmBytes = readFileSync(here("../pkg/tileslide_bg.wasm"));
-initSync({ module: wasmBytes });
 
 // The native side: builds, writes the scenes, times them, and prints one line of JSON.
 execFileSync("cargo", ["build", "--quiet", "--release", "-p", "tileslide-web-bench"], { cwd: root, stdio: "inherit" });
@@ -41,17 +42,6 @@ const map = TileMap.fromBaked(readFileSync(join(dir, "dungeon256.tsm")));
 const rays = floats("rays.f32");
 const crowd = floats("crowd.f32");
 rmSync(dir, { recursive: true });
-
-/** FNV-1a over the floats' bytes, little-endian, as the native side computes it. */
-function fnv1a(values) {
-  const bytes = new Uint8Array(values.buffer, values.byteOffset, values.byteLength);
-  let h = 0xcbf29ce484222325n;
-  for (const b of bytes) {
-    h ^= BigInt(b);
-    h = (h * 0x100000001b3n) & 0xffffffffffffffffn;
-  }
-  return h.toString(16).padStart(16, "0");
-}
 
 function median(n, work) {
   const times = [];

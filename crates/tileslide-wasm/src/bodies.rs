@@ -75,7 +75,7 @@ impl Bodies {
     /// size 1).
     #[wasm_bindgen(constructor)]
     pub fn new(
-        #[wasm_bindgen(unchecked_param_type = "ResolveConfig")] config: Option<JsValue>,
+        #[wasm_bindgen(unchecked_optional_param_type = "ResolveConfig")] config: Option<JsValue>,
     ) -> Result<Bodies, JsError> {
         let config = resolve_config(config)?;
         Ok(Self {
@@ -100,7 +100,7 @@ impl Bodies {
         x: f64,
         y: f64,
         radius: f64,
-        #[wasm_bindgen(unchecked_param_type = "BodyOptions")] options: Option<JsValue>,
+        #[wasm_bindgen(unchecked_optional_param_type = "BodyOptions")] options: Option<JsValue>,
     ) -> Result<f64, JsError> {
         let radius = args::finite("addCircle: radius", radius).map_err(error)?;
         let shape = BodyShape::circle(radius).map_err(error)?;
@@ -115,7 +115,7 @@ impl Bodies {
         x: f64,
         y: f64,
         circles: &[f64],
-        #[wasm_bindgen(unchecked_param_type = "BodyOptions")] options: Option<JsValue>,
+        #[wasm_bindgen(unchecked_optional_param_type = "BodyOptions")] options: Option<JsValue>,
     ) -> Result<f64, JsError> {
         if !circles.len().is_multiple_of(3) {
             return Err(error(format!(

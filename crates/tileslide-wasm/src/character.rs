@@ -93,8 +93,8 @@ impl Character {
         #[wasm_bindgen(unchecked_param_type = "CharacterShape")] shape: JsValue,
         x: f64,
         y: f64,
-        #[wasm_bindgen(unchecked_param_type = "[number, number]")] up: Option<JsValue>,
-        #[wasm_bindgen(unchecked_param_type = "ControllerConfig")] config: Option<JsValue>,
+        #[wasm_bindgen(unchecked_optional_param_type = "[number, number]")] up: Option<JsValue>,
+        #[wasm_bindgen(unchecked_optional_param_type = "ControllerConfig")] config: Option<JsValue>,
     ) -> Result<Character, JsError> {
         let shape = character_shape(shape)?;
         let position = args::vec2("Character: position", x, y).map_err(error)?;
@@ -149,7 +149,7 @@ impl Character {
         map: &TileMap,
         dx: f64,
         dy: f64,
-        #[wasm_bindgen(unchecked_param_type = "MoveOptions")] options: Option<JsValue>,
+        #[wasm_bindgen(unchecked_optional_param_type = "MoveOptions")] options: Option<JsValue>,
     ) -> Result<Object, JsError> {
         let displacement = args::vec2("moveBy: displacement", dx, dy).map_err(error)?;
         let options = move_options("moveBy", options)?;
@@ -171,7 +171,7 @@ impl Character {
         vx: f64,
         vy: f64,
         dt: f64,
-        #[wasm_bindgen(unchecked_param_type = "MoveOptions")] options: Option<JsValue>,
+        #[wasm_bindgen(unchecked_optional_param_type = "MoveOptions")] options: Option<JsValue>,
     ) -> Result<Object, JsError> {
         let mut velocity = args::vec2("moveAndSlide: velocity", vx, vy).map_err(error)?;
         let dt = args::finite("moveAndSlide: dt", dt).map_err(error)?;

@@ -77,7 +77,10 @@ impl HitWorld {
     /// An empty world; `broadphase` is `"sweepAndPrune"` (the default) or `"uniformGrid"`
     /// (the results are the same either way).
     #[wasm_bindgen(constructor)]
-    pub fn new(broadphase: Option<String>) -> Result<HitWorld, JsError> {
+    pub fn new(
+        #[wasm_bindgen(unchecked_optional_param_type = "\"sweepAndPrune\" | \"uniformGrid\"")]
+        broadphase: Option<String>,
+    ) -> Result<HitWorld, JsError> {
         let method = match broadphase.as_deref() {
             None | Some("sweepAndPrune") => PairMethod::SweepAndPrune,
             Some("uniformGrid") => PairMethod::UniformGrid,
@@ -124,7 +127,7 @@ impl HitWorld {
     pub fn detect(
         &mut self,
         #[wasm_bindgen(
-            unchecked_param_type = "(attacker: number, victim: number, hitType: number) => boolean"
+            unchecked_optional_param_type = "(attacker: number, victim: number, hitType: number) => boolean"
         )]
         rule: Option<Function>,
     ) -> Result<Array, JsError> {

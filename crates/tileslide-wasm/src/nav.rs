@@ -46,7 +46,7 @@ impl NavGrid {
     #[wasm_bindgen(constructor)]
     pub fn new(
         map: &TileMap,
-        #[wasm_bindgen(unchecked_param_type = "NavConfig")] config: Option<JsValue>,
+        #[wasm_bindgen(unchecked_optional_param_type = "NavConfig")] config: Option<JsValue>,
     ) -> Result<NavGrid, JsError> {
         let d = NavConfig::default();
         let mut o = Options::new("nav config", config).map_err(error)?;
@@ -74,10 +74,10 @@ impl NavGrid {
     pub fn find_path(
         &self,
         map: &TileMap,
-        from_x: f64,
-        from_y: f64,
-        to_x: f64,
-        to_y: f64,
+        #[wasm_bindgen(js_name = fromX)] from_x: f64,
+        #[wasm_bindgen(js_name = fromY)] from_y: f64,
+        #[wasm_bindgen(js_name = toX)] to_x: f64,
+        #[wasm_bindgen(js_name = toY)] to_y: f64,
         radius: f64,
     ) -> Result<JsValue, JsError> {
         let from = args::vec2("findPath: from", from_x, from_y).map_err(error)?;
@@ -136,8 +136,8 @@ impl FlowField {
     pub fn new(
         nav: &NavGrid,
         map: &TileMap,
-        goal_x: f64,
-        goal_y: f64,
+        #[wasm_bindgen(js_name = goalX)] goal_x: f64,
+        #[wasm_bindgen(js_name = goalY)] goal_y: f64,
         radius: f64,
     ) -> Result<FlowField, JsError> {
         let goal = args::vec2("FlowField: goal", goal_x, goal_y).map_err(error)?;

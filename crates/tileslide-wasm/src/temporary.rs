@@ -35,7 +35,9 @@ impl TileMap {
         y1: f64,
         nx: f64,
         ny: f64,
-        #[wasm_bindgen(unchecked_param_type = "TemporaryOptions")] options: Option<JsValue>,
+        #[wasm_bindgen(unchecked_optional_param_type = "TemporaryOptions")] options: Option<
+            JsValue,
+        >,
     ) -> Result<(), JsError> {
         let a = args::vec2("addTemporary: start", x0, y0).map_err(error)?;
         let b = args::vec2("addTemporary: end", x1, y1).map_err(error)?;

@@ -9,7 +9,7 @@
 //! same input, and the input is the same only if it comes from one place. Nothing of this
 //! crate is in the package.
 //!
-//! Files written by [`write_scenes`] (little-endian):
+//! Files written by [`Scenes::write`] (little-endian):
 //!
 //! - `dungeon256.tsm`: the dungeon256 map, baked;
 //! - `rays.f32`: the rays scene, 4 floats a ray (`x0, y0, x1, y1`), [`RAYS`] rays;
