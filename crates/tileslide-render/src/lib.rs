@@ -28,20 +28,28 @@
 //! See [`Picture`] for an example, and `docs/render.md` in the repository.
 
 mod animation;
+mod camera;
 mod canvas;
 mod color;
 mod error;
 mod image;
+mod image_animation;
 mod options;
 mod palette;
+mod panel;
 mod pen;
 mod picture;
+mod text;
 mod view;
 
 pub use animation::{Animation, DEFAULT_FRAME_DELAY};
+pub use camera::{Camera, Framing};
 pub use canvas::Canvas;
 pub use color::{Rgba, Style};
 pub use error::RenderError;
 pub use image::Image;
+pub use image_animation::ImageAnimation;
 pub use options::{DEFAULT_PIXELS_PER_CELL, MAX_PIXELS, RenderOptions, YAxis};
+pub use panel::{Panel, Swatch};
 pub use picture::{Picture, VolumeKind};
+pub use text::{Anchor, FontSize};
