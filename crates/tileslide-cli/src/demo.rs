@@ -6,16 +6,16 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, bail};
 use clap::Subcommand;
 use indicatif::{ProgressBar, ProgressStyle};
-use tileslide_dungeon::{Game, STEPS_PER_SECOND, Summary};
+use tileslide_dungeon::{Game, STEPS_PER_SECOND, Screen, Summary};
 use tileslide_platformer::{Goal, Level, MAX_STEPS};
-use tileslide_render::{Animation, Canvas, Picture, RenderOptions, YAxis};
+use tileslide_render::{Animation, Canvas, ImageAnimation, Picture, RenderOptions, YAxis};
 
 use crate::output;
 
 /// GIF frames at most (a frame every N steps is chosen to stay under it).
 const MAX_FRAMES: u64 = 240;
-/// Pixels per cell of the pictures (the map is 64 cells wide).
-const SCALE: f32 = 8.0;
+/// How long the dungeon GIF's last frame (the end state) shows, in hundredths of a second.
+const LAST_FRAME_DELAY: u16 = 400;
 
 #[derive(Subcommand, Debug)]
 pub enum DemoCommand {
@@ -88,11 +88,13 @@ fn dungeon(seed: u64, minutes: f64, output: &Path, json: bool) -> Result<()> {
     let steps = (minutes * 60.0 * f64::from(STEPS_PER_SECOND)).round() as u64;
     let every = steps.div_ceil(MAX_FRAMES).max(1);
     let mut game = Game::new(seed)?;
-    let options = RenderOptions::default()
-        .with_pixels_per_cell(SCALE)
-        .with_style(tileslide_dungeon::style());
-    let canvas = Canvas::new(game.initial_map(), &options)?;
-    let mut animation = Animation::new(&canvas)?.with_frame_delay(8);
+    let mut screen = Screen::new();
+    let mut animation = ImageAnimation::new(
+        tileslide_dungeon::WIDTH,
+        tileslide_dungeon::HEIGHT,
+        &tileslide_dungeon::style(),
+    )?;
+    animation.set_frame_delay(8);
     let bar = ProgressBar::new(steps);
     bar.set_style(ProgressStyle::with_template(
         "{bar:40} {pos}/{len} steps {elapsed}",
@@ -102,17 +104,18 @@ fn dungeon(seed: u64, minutes: f64, output: &Path, json: bool) -> Result<()> {
     }
     for step in 0..steps {
         if step % every == 0 {
-            animation.push(&game.picture(true))?;
+            animation.push(&screen.frame(&game, false)?)?;
         }
         game.step()?;
         bar.inc(1);
     }
     bar.finish_and_clear();
-    animation.push(&game.picture(true))?;
+    // The end state, with how the game ended, held for a few seconds before the loop.
+    let last = screen.frame(&game, true)?;
+    animation.set_frame_delay(LAST_FRAME_DELAY);
+    animation.push(&last)?;
     animation.save_gif(output)?;
-    Canvas::new(game.map(), &options)?
-        .render(&game.picture(false))
-        .save_png(&png)?;
+    last.save_png(&png)?;
     let summary = game.summary();
     if json {
         println!(

@@ -14,7 +14,8 @@ use crate::step::STEPS_PER_SECOND;
 
 /// Gold is counted in steps' worth: 20 gold a second.
 const INCOME: u32 = 20;
-const DIG_COST: u32 = 5 * STEPS_PER_SECOND;
+/// What a square costs to dig, in steps' worth of gold.
+pub(crate) const DIG_COST: u32 = 5 * STEPS_PER_SECOND;
 /// Steps between extra summons once the plan is dug.
 const SUMMON_EVERY: u64 = 20 * STEPS_PER_SECOND as u64;
 /// The keeper stops summoning at this many creatures.

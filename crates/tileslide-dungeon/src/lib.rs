@@ -31,7 +31,7 @@
 // `layout`. Above them the shared world: `level` (map and navigation), `spawn`, `hits`.
 // Then the systems, each using only those: `keeper`, `arrivals`, `brains`, `combat` (which
 // reads `brains`' sightings), `treasure`, `summary`. `game` runs the systems in order;
-// `render` draws a `Game`.
+// `render` draws a `Game`, and `screen` frames it with the HUD and the legend.
 
 mod arrivals;
 mod audit;
@@ -48,6 +48,7 @@ mod keeper;
 mod layout;
 mod level;
 mod render;
+mod screen;
 mod spawn;
 mod step;
 mod summary;
@@ -61,7 +62,8 @@ pub use events::Event;
 pub use explore::Explored;
 pub use game::Game;
 pub use level::Level;
-pub use render::style;
+pub use render::{colour, style};
+pub use screen::{HEIGHT, Screen, WIDTH};
 pub use step::{DT, STEPS_PER_SECOND};
 pub use summary::Summary;
 pub use tileslide_scenes::SplitMix64;
