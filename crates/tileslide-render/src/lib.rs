@@ -30,6 +30,7 @@
 mod animation;
 mod camera;
 mod canvas;
+mod categorical;
 mod color;
 mod error;
 mod image;
@@ -45,6 +46,7 @@ mod view;
 pub use animation::{Animation, DEFAULT_FRAME_DELAY};
 pub use camera::{Camera, Framing};
 pub use canvas::Canvas;
+pub use categorical::{CATEGORICAL, categorical};
 pub use color::{Rgba, Style};
 pub use error::RenderError;
 pub use image::Image;
