@@ -6,9 +6,10 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, bail};
 use clap::Subcommand;
 use indicatif::{ProgressBar, ProgressStyle};
+use tileslide::{Aabb, Vec2};
 use tileslide_dungeon::{Game, STEPS_PER_SECOND, Screen, Summary};
 use tileslide_platformer::{Goal, Level, MAX_STEPS};
-use tileslide_render::{Animation, Canvas, ImageAnimation, Picture, RenderOptions, YAxis};
+use tileslide_render::{Canvas, Framing, ImageAnimation, Picture, RenderOptions, YAxis};
 
 use crate::output;
 
@@ -189,6 +190,8 @@ const REPLICA_FRAME_EVERY: u64 = 12;
 /// The platformer's pictures: at most this many pixels across (a long Replica Island level
 /// gets fewer pixels per cell), and at most 16 pixels per cell.
 const PLATFORMER_WIDTH: f32 = 1024.0;
+/// Height of the legend strip under the platformer's pictures, in pixels.
+const LEGEND_HEIGHT: u32 = 24;
 
 fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: bool) -> Result<()> {
     let png = check_outputs(output)?;
@@ -211,26 +214,49 @@ fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: b
     let options = RenderOptions::default()
         .with_pixels_per_cell(scale)
         .with_y_axis(y_axis);
-    let canvas = Canvas::new(&level.map, &options)?;
+    // The whole level, with a legend strip under it.
+    let cell = level.map.cell_size();
+    let width = (level.map.width() as f32 * scale).round().max(1.0) as u32;
+    let height = (level.map.height() as f32 * scale * cell.y / cell.x)
+        .round()
+        .max(1.0) as u32;
+    let corner = level.map.origin();
+    let framing = Framing {
+        window: Aabb::from_corners(
+            corner,
+            corner + Vec2::new(level.map.width() as f32, level.map.height() as f32) * cell,
+        ),
+        image: (width, height + LEGEND_HEIGHT),
+        viewport: (width, height),
+    };
+    let canvas = Canvas::framed(&level.map, &options, &framing)?;
+    let legend = tileslide_platformer::legend(&options.style);
     let every = if tileset.is_some() {
         REPLICA_FRAME_EVERY
     } else {
         PLATFORMER_FRAME_EVERY
     };
     let mut game = tileslide_platformer::Game::new(level)?;
-    let mut animation = Animation::new(&canvas)?.with_frame_delay(5);
+    let mut animation = ImageAnimation::new(canvas.width(), canvas.height(), &options.style)?;
+    animation.set_frame_delay(5);
     let mut picture = Picture::new();
+    let frame = |picture: &Picture| {
+        let mut image = canvas.render(picture);
+        legend.draw_across(&mut image, (0, height as i32), (width, LEGEND_HEIGHT));
+        image
+    };
     while !game.is_over() && game.summary().steps < MAX_STEPS {
         if game.summary().steps % every == 0 {
             game.draw(&mut picture);
-            animation.push(&picture)?;
+            animation.push(&frame(&picture))?;
         }
         game.step()?;
     }
     game.draw(&mut picture);
-    animation.push(&picture)?;
+    let last = frame(&picture);
+    animation.push(&last)?;
     animation.save_gif(output)?;
-    canvas.render(&picture).save_png(&png)?;
+    last.save_png(&png)?;
     let s = game.summary();
     let audit = &s.audit;
     if json {

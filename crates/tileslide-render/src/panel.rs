@@ -156,6 +156,42 @@ impl Panel {
     }
 }
 
+impl Panel {
+    /// Like [`draw`](Self::draw), but laid out across: the rows one after another from
+    /// the left, in one line centred in the rectangle's height (a legend strip under a
+    /// wide picture). Gaps are wider spaces; what does not fit the width is left out.
+    pub fn draw_across(&self, image: &mut Image, top_left: (i32, i32), size: (u32, u32)) {
+        image.fill_rect(top_left, size, self.background);
+        let right = top_left
+            .0
+            .saturating_add(i32::try_from(size.0).unwrap_or(i32::MAX));
+        let middle = top_left.1 + (size.1 / 2) as i32;
+        let mut x = top_left.0 + PADDING;
+        for row in &self.rows {
+            let (font, text) = match row {
+                Row::Heading(text) => (FontSize::Large, text.as_str()),
+                Row::Line(text) | Row::Key(_, text) => (FontSize::Medium, text.as_str()),
+                Row::Gap => (FontSize::Medium, ""),
+            };
+            let swatch = if matches!(row, Row::Key(..)) {
+                SWATCH + 6
+            } else {
+                0
+            };
+            let width = swatch + font.width_of(text) as i32 + 2 * PADDING;
+            if x + width - PADDING > right {
+                break;
+            }
+            if let Row::Key(s, _) = row {
+                draw_swatch(image, s, Vec2::new((x + SWATCH / 2) as f32, middle as f32));
+            }
+            let at = (x + swatch, middle - (font.height() / 2) as i32);
+            image.text(text, at, font, Anchor::TopLeft, self.ink);
+            x += width;
+        }
+    }
+}
+
 /// Draws `swatch` centred on `middle` (pixels), [`SWATCH`] pixels wide.
 fn draw_swatch(image: &mut Image, swatch: &Swatch, middle: Vec2) {
     let half = SWATCH as f32 / 2.0;
@@ -240,6 +276,23 @@ mod tests {
         // Nothing of the panel left its rectangle.
         assert_eq!(count(&image, INK, 0..100, 0..120), 0);
         assert_eq!(count(&image, DARK, 0..100, 0..120), 0);
+    }
+
+    #[test]
+    fn across_the_rows_go_left_to_right_in_one_line() {
+        let mut panel = Panel::new(DARK, INK);
+        panel
+            .key(Swatch::Disc(CYAN), "hero")
+            .key(Swatch::Square(Rgba::opaque(255, 0, 0)), "fire");
+        let mut image = Image::filled(300, 60, Rgba::opaque(0, 0, 0)).unwrap();
+        panel.draw_across(&mut image, (0, 30), (300, 24));
+        assert_eq!(count(&image, DARK, 0..300, 0..30), 0);
+        // The disc comes first, the square after the first label, on one line.
+        let red = Rgba::opaque(255, 0, 0);
+        assert!(count(&image, CYAN, 0..30, 30..54) > 30);
+        assert_eq!(count(&image, red, 0..40, 30..54), 0);
+        assert!(count(&image, red, 40..120, 30..54) > 30);
+        assert!(count(&image, INK, 0..300, 30..54) > 40);
     }
 
     #[test]
