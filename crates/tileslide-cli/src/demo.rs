@@ -6,16 +6,21 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, bail};
 use clap::Subcommand;
 use indicatif::{ProgressBar, ProgressStyle};
-use tileslide_dungeon::{Game, STEPS_PER_SECOND, Summary};
+use tileslide::{Aabb, Vec2};
+use tileslide_dungeon::{Game, STEPS_PER_SECOND, Screen, Summary};
 use tileslide_platformer::{Goal, Level, MAX_STEPS};
-use tileslide_render::{Animation, Canvas, Picture, RenderOptions, YAxis};
+use tileslide_render::{Canvas, Framing, ImageAnimation, Picture, RenderOptions, YAxis};
 
 use crate::output;
 
-/// GIF frames at most (a frame every N steps is chosen to stay under it).
-const MAX_FRAMES: u64 = 240;
-/// Pixels per cell of the pictures (the map is 64 cells wide).
-const SCALE: f32 = 8.0;
+/// GIF frames at most (a frame every N steps is chosen to stay under it): with frames of
+/// 680 × 720 pixels, encoding them is most of the demo's time.
+const MAX_FRAMES: u64 = 140;
+/// Time each dungeon frame shows, in hundredths of a second: 140 frames play in about
+/// 19 s.
+const DUNGEON_FRAME_DELAY: u16 = 14;
+/// How long the dungeon GIF's last frame (the end state) shows, in hundredths of a second.
+const LAST_FRAME_DELAY: u16 = 400;
 
 #[derive(Subcommand, Debug)]
 pub enum DemoCommand {
@@ -88,11 +93,13 @@ fn dungeon(seed: u64, minutes: f64, output: &Path, json: bool) -> Result<()> {
     let steps = (minutes * 60.0 * f64::from(STEPS_PER_SECOND)).round() as u64;
     let every = steps.div_ceil(MAX_FRAMES).max(1);
     let mut game = Game::new(seed)?;
-    let options = RenderOptions::default()
-        .with_pixels_per_cell(SCALE)
-        .with_style(tileslide_dungeon::style());
-    let canvas = Canvas::new(game.initial_map(), &options)?;
-    let mut animation = Animation::new(&canvas)?.with_frame_delay(8);
+    let mut screen = Screen::new();
+    let mut animation = ImageAnimation::new(
+        tileslide_dungeon::WIDTH,
+        tileslide_dungeon::HEIGHT,
+        &tileslide_dungeon::style(),
+    )?;
+    animation.set_frame_delay(DUNGEON_FRAME_DELAY);
     let bar = ProgressBar::new(steps);
     bar.set_style(ProgressStyle::with_template(
         "{bar:40} {pos}/{len} steps {elapsed}",
@@ -102,17 +109,18 @@ fn dungeon(seed: u64, minutes: f64, output: &Path, json: bool) -> Result<()> {
     }
     for step in 0..steps {
         if step % every == 0 {
-            animation.push(&game.picture(true))?;
+            animation.push(&screen.frame(&game, false)?)?;
         }
         game.step()?;
         bar.inc(1);
     }
     bar.finish_and_clear();
-    animation.push(&game.picture(true))?;
+    // The end state, with how the game ended, held for a few seconds before the loop.
+    let last = screen.frame(&game, true)?;
+    animation.set_frame_delay(LAST_FRAME_DELAY);
+    animation.push(&last)?;
     animation.save_gif(output)?;
-    Canvas::new(game.map(), &options)?
-        .render(&game.picture(false))
-        .save_png(&png)?;
+    last.save_png(&png)?;
     let summary = game.summary();
     if json {
         println!(
@@ -186,6 +194,8 @@ const REPLICA_FRAME_EVERY: u64 = 12;
 /// The platformer's pictures: at most this many pixels across (a long Replica Island level
 /// gets fewer pixels per cell), and at most 16 pixels per cell.
 const PLATFORMER_WIDTH: f32 = 1024.0;
+/// Height of the legend strip under the platformer's pictures, in pixels.
+const LEGEND_HEIGHT: u32 = 24;
 
 fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: bool) -> Result<()> {
     let png = check_outputs(output)?;
@@ -208,26 +218,49 @@ fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: b
     let options = RenderOptions::default()
         .with_pixels_per_cell(scale)
         .with_y_axis(y_axis);
-    let canvas = Canvas::new(&level.map, &options)?;
+    // The whole level, with a legend strip under it.
+    let cell = level.map.cell_size();
+    let width = (level.map.width() as f32 * scale).round().max(1.0) as u32;
+    let height = (level.map.height() as f32 * scale * cell.y / cell.x)
+        .round()
+        .max(1.0) as u32;
+    let corner = level.map.origin();
+    let framing = Framing {
+        window: Aabb::from_corners(
+            corner,
+            corner + Vec2::new(level.map.width() as f32, level.map.height() as f32) * cell,
+        ),
+        image: (width, height + LEGEND_HEIGHT),
+        viewport: (width, height),
+    };
+    let canvas = Canvas::framed(&level.map, &options, &framing)?;
+    let legend = tileslide_platformer::legend(&options.style);
     let every = if tileset.is_some() {
         REPLICA_FRAME_EVERY
     } else {
         PLATFORMER_FRAME_EVERY
     };
     let mut game = tileslide_platformer::Game::new(level)?;
-    let mut animation = Animation::new(&canvas)?.with_frame_delay(5);
+    let mut animation = ImageAnimation::new(canvas.width(), canvas.height(), &options.style)?;
+    animation.set_frame_delay(5);
     let mut picture = Picture::new();
+    let frame = |picture: &Picture| {
+        let mut image = canvas.render(picture);
+        legend.draw_across(&mut image, (0, height as i32), (width, LEGEND_HEIGHT));
+        image
+    };
     while !game.is_over() && game.summary().steps < MAX_STEPS {
         if game.summary().steps % every == 0 {
             game.draw(&mut picture);
-            animation.push(&picture)?;
+            animation.push(&frame(&picture))?;
         }
         game.step()?;
     }
     game.draw(&mut picture);
-    animation.push(&picture)?;
+    let last = frame(&picture);
+    animation.push(&last)?;
     animation.save_gif(output)?;
-    canvas.render(&picture).save_png(&png)?;
+    last.save_png(&png)?;
     let s = game.summary();
     let audit = &s.audit;
     if json {

@@ -9,7 +9,7 @@ use serde::Deserialize;
 use serde_json::json;
 use tileslide::io::ascii;
 use tileslide::{Bodies, BodyDesc, BodyHandle, BodyShape, Circle, SegmentFlags, TileMap, Vec2};
-use tileslide_render::{Animation, Canvas, Picture};
+use tileslide_render::{Animation, Canvas, Picture, categorical};
 
 use crate::json::number;
 use crate::map_file::{self, MapFormat};
@@ -270,11 +270,14 @@ impl<'c> Recording<'c> {
     /// Appends a frame of every body where it is now.
     fn record(&mut self, bodies: &Bodies, crowd: &[(BodyHandle, Vec2)]) -> Result<()> {
         self.picture.clear();
-        for &(h, _) in crowd {
+        // Each body in a colour of its own, by its number in the scene, the same in
+        // every frame.
+        for (i, &(h, _)) in crowd.iter().enumerate() {
             let body = bodies.get(h)?;
+            let color = categorical(i as u64);
             for c in body.shape().circles() {
                 self.picture
-                    .body(Circle::new(body.position() + c.center, c.radius));
+                    .body_with_color(Circle::new(body.position() + c.center, c.radius), color);
             }
         }
         self.animation.push(&self.picture)?;

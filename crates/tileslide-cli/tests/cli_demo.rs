@@ -30,7 +30,7 @@ fn demo_dungeon_writes_a_gif_a_png_and_a_json_summary() {
     let mut decoder = options
         .read_info(std::fs::File::open(&gif).unwrap())
         .unwrap();
-    assert_eq!((decoder.width(), decoder.height()), (512, 512));
+    assert_eq!((decoder.width(), decoder.height()), (680, 720));
     let mut frames = 0;
     while decoder.read_next_frame().unwrap().is_some() {
         frames += 1;
@@ -41,7 +41,7 @@ fn demo_dungeon_writes_a_gif_a_png_and_a_json_summary() {
         std::fs::File::open(dir.join("dungeon.png")).unwrap(),
     ));
     let info = png.read_info().unwrap();
-    assert_eq!((info.info().width, info.info().height), (512, 512));
+    assert_eq!((info.info().width, info.info().height), (680, 720));
 }
 
 #[test]

@@ -43,13 +43,13 @@ fn demo_platformer_writes_a_gif_a_png_and_a_summary() {
     );
     // The bundled level is 64 × 16 cells, drawn at 16 pixels a cell.
     let (size, frames) = gif_frames(&gif);
-    assert_eq!(size, (1024, 256));
+    assert_eq!(size, (1024, 280)); // the level, and the legend strip under it
     assert!(frames > 100, "{frames} frames");
     let png = png::Decoder::new(std::io::BufReader::new(
         std::fs::File::open(scratch("p.png")).unwrap(),
     ));
     let info = png.read_info().unwrap();
-    assert_eq!((info.info().width, info.info().height), (1024, 256));
+    assert_eq!((info.info().width, info.info().height), (1024, 280));
 }
 
 #[test]

@@ -13,12 +13,17 @@ mod support;
 
 /// A fresh scratch folder for one test.
 fn folder(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("cli_render")
-        .join(name);
+    let dir = folder_path(name);
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
+}
+
+/// The scratch folder of one test, as [`folder`] made it.
+fn folder_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("cli_render")
+        .join(name)
 }
 
 /// Width and height of a PNG file, decoded.
@@ -195,6 +200,35 @@ fn simulate_gif_records_a_frame_every_n_steps_and_the_last() {
         "{said}"
     );
     assert!(said.contains("2 bodies, 10 steps"), "{said}");
+}
+
+#[test]
+fn simulate_gif_draws_each_body_in_a_colour_of_its_own() {
+    let _ = simulate_ok("gif_colours", &[]);
+    let out = folder_path("gif_colours").join("run.gif");
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::RGBA);
+    let mut decoder = options
+        .read_info(std::io::BufReader::new(std::fs::File::open(&out).unwrap()))
+        .unwrap();
+    let frame = decoder.read_next_frame().unwrap().unwrap();
+    let count = |c: tileslide_render::Rgba| {
+        frame
+            .buffer
+            .chunks_exact(4)
+            .filter(|p| p[..3] == [c.r, c.g, c.b])
+            .count()
+    };
+    // Bodies 0 (radius 0.4) and 1 (radius 0.3) at 16 pixels a cell: discs of the
+    // first two colours of the palette, the larger one larger.
+    let (first, second) = (
+        count(tileslide_render::categorical(0)),
+        count(tileslide_render::categorical(1)),
+    );
+    assert!(
+        first > 80 && second > 40 && first > second,
+        "{first} {second}"
+    );
 }
 
 #[test]

@@ -19,6 +19,15 @@ const WAVE_EVERY: u64 = 30 * STEPS_PER_SECOND as u64;
 /// Steps before the first party.
 const FIRST_WAVE: u64 = 12 * STEPS_PER_SECOND as u64;
 
+/// Steps from `step` until the next party arrives (0: it arrives at this step).
+pub(crate) fn steps_to_next_wave(step: u64) -> u64 {
+    if step <= FIRST_WAVE {
+        FIRST_WAVE - step
+    } else {
+        (WAVE_EVERY - (step - FIRST_WAVE) % WAVE_EVERY) % WAVE_EVERY
+    }
+}
+
 /// Heroes still to come in (the entrance may be crowded).
 #[derive(Clone, Debug)]
 pub struct Arrivals {

@@ -12,12 +12,13 @@ use crate::config::{GameConfig, KeeperMode, PLAYER_START_GOLD};
 use crate::error::GameError;
 use crate::events::Event;
 use crate::hits::Hits;
-use crate::keeper::Keeper;
+use crate::keeper::{DIG_COST, Keeper, SCRIPT_DIG_COST};
 use crate::layout::Layout;
 use crate::level::Level;
 use crate::orders::LoggedOrder;
 use crate::outcome::Outcome;
 use crate::spawn::Ids;
+use crate::step::STEPS_PER_SECOND;
 use crate::summary::{Summary, chronicle};
 use crate::{combat, treasure};
 use tileslide_scenes::{Fnv1a, SplitMix64};
@@ -179,6 +180,16 @@ impl Game {
     #[must_use]
     pub fn mode(&self) -> KeeperMode {
         self.mode
+    }
+
+    /// What digging a square costs this game's keeper, in whole gold: [`DIG_COST`] for a
+    /// player, the script's own smaller price for the scripted keeper.
+    #[must_use]
+    pub fn dig_cost(&self) -> u32 {
+        match self.mode {
+            KeeperMode::Player => DIG_COST,
+            KeeperMode::Scripted => SCRIPT_DIG_COST / STEPS_PER_SECOND,
+        }
     }
 
     /// The orders a player gave so far, each with the step it was given before: giving the

@@ -17,7 +17,7 @@ use crate::step::STEPS_PER_SECOND;
 /// Gold is counted in steps' worth: 20 gold a second.
 const INCOME: u32 = 20;
 /// What the script pays for a square (5 gold: its plan is long).
-const SCRIPT_DIG_COST: u32 = 5 * STEPS_PER_SECOND;
+pub(crate) const SCRIPT_DIG_COST: u32 = 5 * STEPS_PER_SECOND;
 /// Gold a player pays to dig a square (the write-up's price).
 pub const DIG_COST: u32 = 50;
 /// Steps between extra summons once the plan is dug.

@@ -52,7 +52,8 @@
 // `hits`. Then the systems, each using only those: `keeper`, `arrivals`, `brains`,
 // `combat` (which reads `brains`' sightings), `treasure`, `summary`. `game` runs the
 // systems in order; on top of it, `orders` carries out a player's orders, `view` gives
-// renderers plain values and `render` draws a `Game`.
+// renderers plain values, `render` draws a `Game` and `screen` frames it with the HUD
+// and the legend.
 
 mod arrivals;
 mod audit;
@@ -71,6 +72,7 @@ mod level;
 mod orders;
 mod outcome;
 mod render;
+mod screen;
 mod spawn;
 mod step;
 mod summary;
@@ -89,7 +91,8 @@ pub use layout::Ground;
 pub use level::Level;
 pub use orders::{LoggedOrder, Order, OrderError};
 pub use outcome::Outcome;
-pub use render::style;
+pub use render::{colour, style};
+pub use screen::{HEIGHT, Screen, WIDTH};
 pub use step::{DT, STEPS_PER_SECOND};
 pub use summary::Summary;
 pub use tileslide_scenes::SplitMix64;

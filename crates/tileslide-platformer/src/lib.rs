@@ -56,7 +56,7 @@ pub use game::{Game, STEPS_PER_SECOND, next_input};
 pub use hits::{COIN_RADIUS, ENEMY_HALF, PLAYER_HALF, STOMP};
 pub use input::Input;
 pub use level::{BUNDLED_LEVEL, Goal, Level, LevelError, MARKERS, PlatformTrack};
-pub use picture::{COIN_COLOR, PLAYER_COLOR};
+pub use picture::{COIN_COLOR, ENEMY_COLOR, PLAYER_COLOR, legend};
 pub use platform::PLATFORM_OWNER;
 pub use player::{JUMP_SPEED, Player, RUN_SPEED};
 pub use replica_spawn::player_spawn;

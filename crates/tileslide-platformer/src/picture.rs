@@ -2,7 +2,7 @@
 //! the goal and the last step's hits, over the map drawn by `tileslide-render`.
 
 use tileslide::{Aabb, Circle, Vec2, VolumeShape};
-use tileslide_render::{Picture, Rgba, VolumeKind};
+use tileslide_render::{Panel, Picture, Rgba, Style, Swatch, VolumeKind};
 
 use crate::game::Game;
 use crate::hits::{self, Boxed};
@@ -12,6 +12,8 @@ pub const COIN_COLOR: Rgba = Rgba::opaque(240, 190, 20);
 /// The player is green; blinking pale while it cannot be hit.
 pub const PLAYER_COLOR: Rgba = Rgba::opaque(39, 174, 96);
 const PLAYER_BLINK: Rgba = Rgba::new(39, 174, 96, 90);
+/// Enemies are purple, inside their attack box.
+pub const ENEMY_COLOR: Rgba = Rgba::opaque(102, 51, 153);
 
 impl Game {
     /// Adds this moment of the game to `picture` (cleared first).
@@ -35,6 +37,10 @@ impl Game {
             if let Some(top) = b.world_strip(up, true, s) {
                 picture.volume(top, VolumeKind::Vulnerability);
             }
+            picture.body_with_color(
+                Circle::new(b.center, b.half.min_element() * 0.8),
+                ENEMY_COLOR,
+            );
         }
         let p = &self.player;
         let color = if p.invulnerable > 0 && (p.invulnerable / 6).is_multiple_of(2) {
@@ -66,6 +72,22 @@ impl Game {
         let low = top - up * 0.4 * s;
         picture.polyline(&[foot, top, tip, low]);
     }
+}
+
+/// The legend of the platformer's pictures drawn in `style`: what each colour is.
+#[must_use]
+pub fn legend(style: &Style) -> Panel {
+    let mut panel = Panel::new(Rgba::opaque(51, 51, 51), Rgba::opaque(255, 255, 255));
+    panel
+        .key(Swatch::Disc(PLAYER_COLOR), "player")
+        .key(Swatch::Disc(ENEMY_COLOR), "enemy")
+        .key(Swatch::Square(style.attack), "hurts")
+        .key(Swatch::Square(style.vulnerability), "stomp here")
+        .key(Swatch::Disc(COIN_COLOR), "coin")
+        .key(Swatch::Square(style.one_way), "one-way platform")
+        .key(Swatch::Square(style.temporary), "moving platform")
+        .key(Swatch::Square(style.path), "trail, goal");
+    panel
 }
 
 fn rect_shape(center: Vec2, half: Vec2) -> VolumeShape {

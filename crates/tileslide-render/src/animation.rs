@@ -1,12 +1,8 @@
 //! Pictures over one canvas, frame after frame, as an animated GIF.
 
-use std::borrow::Cow;
 use std::path::Path;
 
-use gif::{Encoder, Repeat};
-
-use crate::palette::Palette;
-use crate::{Canvas, Image, Picture, RenderError};
+use crate::{Canvas, Image, ImageAnimation, Picture, RenderError};
 
 /// Time each frame shows unless told otherwise: 5 hundredths of a second (20 frames a
 /// second).
@@ -39,40 +35,19 @@ pub const DEFAULT_FRAME_DELAY: u16 = 5;
 /// ```
 pub struct Animation<'c> {
     canvas: &'c Canvas,
-    encoder: Encoder<Vec<u8>>,
-    palette: Palette,
+    frames: ImageAnimation,
     /// The frame being made, reused.
     image: Image,
-    /// Its palette indices, reused.
-    indices: Vec<u8>,
-    /// Frame width and height (checked to fit a GIF).
-    size: (u16, u16),
-    frames: usize,
-    delay: u16,
 }
 
 impl<'c> Animation<'c> {
     /// An animation over `canvas`, or [`RenderError::TooLargeForGif`] if a side is longer
     /// than a GIF can hold.
     pub fn new(canvas: &'c Canvas) -> Result<Self, RenderError> {
-        let too_large = || RenderError::TooLargeForGif {
-            width: canvas.width(),
-            height: canvas.height(),
-        };
-        let width = u16::try_from(canvas.width()).map_err(|_| too_large())?;
-        let height = u16::try_from(canvas.height()).map_err(|_| too_large())?;
-        let palette = Palette::new(canvas.style());
-        let mut encoder = Encoder::new(Vec::new(), width, height, palette.rgb())?;
-        encoder.set_repeat(Repeat::Infinite)?;
         Ok(Self {
             canvas,
-            encoder,
-            palette,
+            frames: ImageAnimation::new(canvas.width(), canvas.height(), canvas.style())?,
             image: canvas.render(&Picture::new()),
-            indices: Vec::new(),
-            size: (width, height),
-            frames: 0,
-            delay: DEFAULT_FRAME_DELAY,
         })
     }
 
@@ -80,31 +55,20 @@ impl<'c> Animation<'c> {
     /// a second each.
     #[must_use]
     pub fn with_frame_delay(mut self, centiseconds: u16) -> Self {
-        self.delay = centiseconds;
+        self.frames.set_frame_delay(centiseconds);
         self
     }
 
     /// Renders `picture` over the canvas and appends it as the next frame.
     pub fn push(&mut self, picture: &Picture) -> Result<(), RenderError> {
         self.canvas.render_into(picture, &mut self.image);
-        self.palette
-            .index_pixels(self.image.pixmap(), &mut self.indices);
-        let frame = gif::Frame {
-            delay: self.delay,
-            width: self.size.0,
-            height: self.size.1,
-            buffer: Cow::Borrowed(&self.indices),
-            ..gif::Frame::default()
-        };
-        self.encoder.write_frame(&frame)?;
-        self.frames += 1;
-        Ok(())
+        self.frames.push(&self.image)
     }
 
     /// Frames pushed so far.
     #[must_use]
     pub fn frame_count(&self) -> usize {
-        self.frames
+        self.frames.frame_count()
     }
 
     /// Frame width in pixels (the canvas's).
@@ -122,10 +86,10 @@ impl<'c> Animation<'c> {
     /// The GIF file's bytes. With no frame pushed, the map alone is the one frame, so the
     /// file always holds an image.
     pub fn finish(mut self) -> Result<Vec<u8>, RenderError> {
-        if self.frames == 0 {
+        if self.frames.frame_count() == 0 {
             self.push(&Picture::new())?;
         }
-        Ok(self.encoder.into_inner()?)
+        self.frames.finish()
     }
 
     /// Writes the GIF file (see [`finish`](Self::finish)).
@@ -139,8 +103,8 @@ impl std::fmt::Debug for Animation<'_> {
         f.debug_struct("Animation")
             .field("width", &self.width())
             .field("height", &self.height())
-            .field("frames", &self.frames)
-            .field("delay", &self.delay)
+            .field("frames", &self.frames.frame_count())
+            .field("delay", &self.frames.delay())
             .finish_non_exhaustive()
     }
 }

@@ -42,7 +42,15 @@ impl Canvas {
     /// ([`RenderError::BadScale`]) or an image larger than [`MAX_PIXELS`](crate::MAX_PIXELS)
     /// ([`RenderError::TooLarge`]).
     pub fn new(map: &TileMap, options: &RenderOptions) -> Result<Self, RenderError> {
-        let view = View::new(map, options)?;
+        Self::with_view(map, View::new(map, options)?, options)
+    }
+
+    /// Draws `map` as `view` places it.
+    pub(crate) fn with_view(
+        map: &TileMap,
+        view: View,
+        options: &RenderOptions,
+    ) -> Result<Self, RenderError> {
         let style = options.style;
         let too_large = || RenderError::TooLarge {
             width: view.width().into(),

@@ -32,6 +32,24 @@ pub enum RenderError {
         /// Height of the canvas, in pixels.
         height: u32,
     },
+    /// A [`Framing`](crate::Framing) that cannot be drawn: its window is empty or not
+    /// finite, or its viewport is empty or larger than its image.
+    #[error("framing: {0}")]
+    BadFraming(&'static str),
+    /// An image pushed to an animation is not the animation's size.
+    #[error(
+        "a {got_width} × {got_height} pixel frame pushed to a {width} × {height} pixel animation"
+    )]
+    FrameSize {
+        /// The animation's width, in pixels.
+        width: u32,
+        /// The animation's height, in pixels.
+        height: u32,
+        /// The frame's width, in pixels.
+        got_width: u32,
+        /// The frame's height, in pixels.
+        got_height: u32,
+    },
     /// The PNG encoder failed.
     #[error("cannot encode the PNG: {0}")]
     Png(#[from] png::EncodingError),

@@ -17,6 +17,33 @@ impl Image {
         Self { pixmap }
     }
 
+    /// An image `width × height` pixels filled with `color`, or
+    /// [`RenderError::TooLarge`] for an empty or too large one.
+    pub fn filled(width: u32, height: u32, color: Rgba) -> Result<Self, RenderError> {
+        let too_large = || RenderError::TooLarge {
+            width: width.into(),
+            height: height.into(),
+        };
+        if u64::from(width) * u64::from(height) > crate::MAX_PIXELS {
+            return Err(too_large());
+        }
+        let mut pixmap = Pixmap::new(width, height).ok_or_else(too_large)?;
+        pixmap.fill(color.to_skia());
+        Ok(Self { pixmap })
+    }
+
+    /// Fills the `width × height` pixels from `(left, top)` with `color` (blended when
+    /// translucent); what falls outside the image is cut.
+    pub fn fill_rect(&mut self, (left, top): (i32, i32), (width, height): (u32, u32), color: Rgba) {
+        let rect = tiny_skia::Rect::from_xywh(left as f32, top as f32, width as f32, height as f32);
+        if let Some(rect) = rect {
+            let mut paint = tiny_skia::Paint::default();
+            paint.set_color(color.to_skia());
+            self.pixmap
+                .fill_rect(rect, &paint, tiny_skia::Transform::identity(), None);
+        }
+    }
+
     pub(crate) fn pixmap(&self) -> &Pixmap {
         &self.pixmap
     }

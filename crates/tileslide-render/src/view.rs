@@ -2,7 +2,7 @@
 
 use tileslide::{Cell, TileMap, Vec2};
 
-use crate::{MAX_PIXELS, RenderError, RenderOptions, YAxis};
+use crate::{Framing, MAX_PIXELS, RenderError, RenderOptions, YAxis};
 
 /// Width of a normal tick, as a fraction of the line width.
 pub(crate) const NORMAL_WIDTH: f32 = 0.75;
@@ -20,6 +20,9 @@ pub(crate) struct View {
     /// Rows in the map, to count rows from the bottom when y is up.
     rows: f32,
     y_axis: YAxis,
+    /// Added to every pixel position: zero for a whole map, else what puts a framed
+    /// window where it belongs in the image.
+    shift: Vec2,
     width: u32,
     height: u32,
 }
@@ -51,9 +54,58 @@ impl View {
             cell_pixels,
             rows: map.height() as f32,
             y_axis: options.y_axis,
+            shift: Vec2::ZERO,
             width: width as u32,
             height: height as u32,
         })
+    }
+
+    /// The view of `framing`'s window of `map` (see [`Framing`]), or why there is none.
+    pub fn framed(
+        map: &TileMap,
+        options: &RenderOptions,
+        framing: &Framing,
+    ) -> Result<Self, RenderError> {
+        let (width, height) = framing.image;
+        let (vw, vh) = framing.viewport;
+        let window = framing.window;
+        let size = window.max - window.min;
+        let usable = window.min.is_finite() && size.is_finite() && size.x > 0.0 && size.y > 0.0;
+        if !usable {
+            return Err(RenderError::BadFraming(
+                "the window must be a finite box wider and taller than zero",
+            ));
+        }
+        if vw == 0 || vh == 0 || vw > width || vh > height {
+            return Err(RenderError::BadFraming(
+                "the viewport must be at least one pixel and fit in the image",
+            ));
+        }
+        if u64::from(width) * u64::from(height) > MAX_PIXELS {
+            return Err(RenderError::TooLarge {
+                width: width.into(),
+                height: height.into(),
+            });
+        }
+        let cell = map.cell_size();
+        // One scale for both axes: the window fits the viewport and is centred in it.
+        let per_unit = (vw as f32 / size.x).min(vh as f32 / size.y);
+        let cell_pixels = cell * per_unit;
+        let mut view = Self {
+            origin: map.origin(),
+            cell,
+            cell_pixels,
+            rows: map.height() as f32,
+            y_axis: options.y_axis,
+            shift: Vec2::ZERO,
+            width,
+            height,
+        };
+        let centre = view
+            .pixel_of((window.min + window.max) * 0.5)
+            .ok_or(RenderError::BadFraming("the window is too far out to draw"))?;
+        view.shift = Vec2::new(vw as f32, vh as f32) * 0.5 - centre;
+        Ok(view)
     }
 
     /// Image width in pixels.
@@ -124,7 +176,7 @@ impl View {
             YAxis::Down => grid.y,
             YAxis::Up => self.rows - grid.y,
         };
-        let p = Vec2::new(grid.x, y) * self.cell_pixels;
+        let p = Vec2::new(grid.x, y) * self.cell_pixels + self.shift;
         p.is_finite().then_some(p)
     }
 }
