@@ -15,7 +15,7 @@
 //! - [`Canvas::framed`] draws part of a map ([`Framing`]) and leaves room beside it; a
 //!   [`Camera`] frames an area that grows; an [`ImageAnimation`] takes images rendered
 //!   on any canvas. [`Image::text`] and [`Panel`] (legends, HUDs) draw text;
-//!   [`categorical`] colours things by number.
+//!   [`categorical()`] colours things by number.
 //!
 //! ## Conventions
 //!
