@@ -5,7 +5,18 @@ import assert from "node:assert/strict";
 import { readFileSync } from "node:fs";
 import { fileURLToPath } from "node:url";
 
-import { initSync, DebugKind, DebugLines, TileMap } from "../pkg/tileslide.js";
+import {
+  initSync,
+  Bodies,
+  Character,
+  DebugKind,
+  DebugLines,
+  FlowField,
+  HitType,
+  HitWorld,
+  NavGrid,
+  TileMap,
+} from "../pkg/tileslide.js";
 
 initSync({ module: readFileSync(fileURLToPath(new URL("../pkg/tileslide_bg.wasm", import.meta.url))) });
 
@@ -134,3 +145,128 @@ test("one buffer is cleared and refilled each frame, with its own view and kinds
   out.free();
   map.free();
 });
+
+/** The shapes of `lines` of `kind` among `coords` (`n` floats a shape) and `kinds`. */
+function shapesOf(coords, kinds, n, kind) {
+  const out = [];
+  for (let i = 0; i < kinds.length; i++) {
+    if (kinds[i] === kind) out.push(Array.from(coords.subarray(n * i, n * i + n)));
+  }
+  return out;
+}
+
+test("bodies draw their circles, and after a step the broadphase boxes that hold them", () => {
+  const map = TileMap.fromAscii("#######\n#.....#\n#.....#\n#######");
+  const bodies = new Bodies();
+  bodies.addCircle(2, 1.5, 0.3, { owner: 7 });
+  bodies.addCircle(4, 2.5, 0.4);
+  const lines = new DebugLines();
+  bodies.fillDebugLines(lines);
+  assert.deepEqual(shapesOf(lines.circles, lines.circleKinds, 3, DebugKind.Body), [
+    [2, 1.5, Math.fround(0.3)],
+    [4, 2.5, Math.fround(0.4)],
+  ]);
+  assert.deepEqual(Array.from(lines.circleOwners), [7, 0]);
+  assert.equal(lines.boxes.length, 0, "no broadphase before a step");
+  bodies.step(map);
+  lines.clear();
+  bodies.fillDebugLines(lines);
+  const boxes = shapesOf(lines.boxes, lines.boxKinds, 4, DebugKind.BroadphaseBox);
+  assert.equal(boxes.length, 2);
+  const circles = shapesOf(lines.circles, lines.circleKinds, 3, DebugKind.Body);
+  circles.forEach(([x, y, r], i) => {
+    const [x0, y0, x1, y1] = boxes[i];
+    assert.ok(x0 <= x - r && y0 <= y - r && x1 >= x + r && y1 >= y + r, `box ${boxes[i]} holds ${circles[i]}`);
+  });
+  // Only the kinds asked for.
+  lines.clear();
+  lines.setKinds([DebugKind.BroadphaseBox]);
+  bodies.fillDebugLines(lines);
+  assert.equal(lines.circles.length, 0);
+  assert.equal(lines.boxes.length, 8);
+  lines.free();
+  bodies.free();
+  map.free();
+});
+
+test("a character draws its shape and what its last move touched", () => {
+  const map = TileMap.fromAscii("#######\n#.....#\n#.....#\n#######");
+  const hero = new Character({ halfWidth: 0.25, halfHeight: 0.4 }, 2, 1.5);
+  const lines = new DebugLines();
+  hero.fillDebugLines(lines, 3);
+  assert.deepEqual(shapesOf(lines.boxes, lines.boxKinds, 4, DebugKind.Character), [[1.75, 1.1, 2.25, 1.9]].map((b) => b.map(Math.fround)));
+  assert.deepEqual(Array.from(lines.boxOwners), [3]);
+  assert.equal(lines.segments.length, 0, "no move yet, no contact");
+  hero.moveBy(map, 0, 2);
+  lines.clear();
+  hero.fillDebugLines(lines);
+  const contacts = shapesOf(lines.segments, lines.segmentKinds, 4, DebugKind.Contact);
+  assert.equal(contacts.length, 1, "the floor");
+  const [x0, y0, x1, y1] = contacts[0];
+  assert.ok(Math.abs(y0 - 3) < 0.01 && y1 < y0 && x0 === x1, `a contact up from the floor: ${contacts[0]}`);
+  assert.deepEqual(Array.from(lines.segmentOwners), [0]);
+  assert.throws(() => hero.fillDebugLines(lines, -1), /fillDebugLines: owner/);
+  lines.free();
+  hero.free();
+  map.free();
+});
+
+test("a hit world draws its volumes, their broadphase boxes and the hits", () => {
+  const world = new HitWorld();
+  world.beginFrame();
+  const body = { x: 0.5, y: 1, halfWidth: 0.5, halfHeight: 1, hit: 0xffffffff };
+  world.register({ owner: 1, x: 0, y: 0, size: [1, 2], team: 1 }, [{ x: 1.3, y: 1, radius: 0.3, hit: HitType.Hit }], [body]);
+  world.register({ owner: 2, x: 1.5, y: 0, size: [1, 1] }, [], [body]);
+  assert.equal(world.detect().length, 1);
+  const lines = new DebugLines();
+  world.fillDebugLines(lines);
+  assert.deepEqual(shapesOf(lines.circles, lines.circleKinds, 3, DebugKind.AttackVolume), [[1.3, 1, 0.3].map(Math.fround)]);
+  assert.equal(shapesOf(lines.boxes, lines.boxKinds, 4, DebugKind.VulnerabilityVolume).length, 2);
+  assert.equal(shapesOf(lines.boxes, lines.boxKinds, 4, DebugKind.BroadphaseBox).length, 2);
+  const hits = shapesOf(lines.points, lines.pointKinds, 2, DebugKind.Hit);
+  assert.equal(hits.length, 1);
+  assert.deepEqual(Array.from(lines.pointOwners), [2], "the victim's");
+  lines.free();
+  world.free();
+});
+
+const HALL = "########\n#......#\n########";
+
+test("a path found by a NavGrid is drawn leg by leg", () => {
+  const map = TileMap.fromAscii("#####\n#...#\n#.#.#\n#...#\n#####");
+  const nav = new NavGrid(map);
+  const path = nav.findPath(map, 1.5, 1.5, 3.5, 3.5, 0.3);
+  const lines = new DebugLines();
+  NavGrid.fillPathDebugLines(path, lines, 4);
+  const legs = shapesOf(lines.segments, lines.segmentKinds, 4, DebugKind.Path);
+  assert.equal(legs.length, path.length / 2 - 1);
+  legs.forEach((leg, i) => assert.deepEqual(leg, Array.from(path.subarray(2 * i, 2 * i + 4))));
+  assert.ok(Array.from(lines.segmentOwners).every((o) => o === 4));
+  assert.throws(() => NavGrid.fillPathDebugLines(new Float32Array([1, 2, 3]), lines), /3 floats/);
+  assert.throws(() => NavGrid.fillPathDebugLines(new Float32Array([1, 2, 3, NaN]), lines), /point 1\.y is NaN/);
+  lines.free();
+  nav.free();
+  map.free();
+});
+
+test("a flow field draws its arrows towards the goal, only in the view", () => {
+  const map = TileMap.fromAscii(HALL);
+  const nav = new NavGrid(map);
+  const field = new FlowField(nav, map, 6.5, 1.5, 0.3);
+  const lines = new DebugLines();
+  field.fillDebugLines(nav, lines);
+  const arrows = shapesOf(lines.segments, lines.segmentKinds, 4, DebugKind.FlowArrow);
+  assert.ok(arrows.length > 5, `${arrows.length} arrows`);
+  assert.ok(arrows.every(([x0, , x1]) => x1 >= x0), "every arrow points right, towards the goal");
+  lines.clear();
+  lines.setView([0, 0, 3, 3]);
+  field.fillDebugLines(nav, lines);
+  const seen = shapesOf(lines.segments, lines.segmentKinds, 4, DebugKind.FlowArrow);
+  assert.ok(seen.length > 0 && seen.length < arrows.length);
+  assert.ok(seen.every(([x0]) => x0 <= 3));
+  lines.free();
+  field.free();
+  nav.free();
+  map.free();
+});
+

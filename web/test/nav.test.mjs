@@ -86,6 +86,27 @@ test("bad input is an Error naming it", () => {
   map.free();
 });
 
+test("lattice directions steer along the field's moves, in one call or many", () => {
+  const map = TileMap.fromAscii(MAZE);
+  const nav = new NavGrid(map);
+  const field = new FlowField(nav, map, 7, 2, 0.3);
+  // Down the left room towards the gap under the wall, as the full direction goes.
+  const [dx, dy] = field.latticeDirection(nav, map, 2, 2);
+  assert.ok(dy > 0 && Math.abs(Math.hypot(dx, dy) - 1) < 1e-6, `${dx}, ${dy}`);
+  assert.deepEqual(field.latticeDirection(nav, map, 7, 2), null, "on the goal");
+  const many = field.latticeDirections(nav, map, new Float32Array([2, 2, 4.5, 2, 7, 2]));
+  assert.deepEqual(Array.from(many.slice(0, 2)), [dx, dy].map(Math.fround));
+  assert.ok(many.slice(2).every(Number.isNaN), "inside the wall and on the goal: none");
+  // Under the wall's end, the way goes right.
+  assert.ok(field.latticeDirection(nav, map, 3, 4.5)[0] > 0);
+  assert.throws(() => field.latticeDirections(nav, map, new Float32Array([1])), /latticeDirections: 1 floats/);
+  assert.throws(() => field.latticeDirections(nav, map, new Float32Array([1, 1, 1, NaN])), /point 1\.y is NaN/);
+  assert.throws(() => field.latticeDirection(nav, map, NaN, 1), /latticeDirection: point\.x is NaN/);
+  field.free();
+  nav.free();
+  map.free();
+});
+
 test("10,000 NavGrids and FlowFields made and freed do not grow the wasm memory", () => {
   const map = TileMap.fromAscii(MAZE);
   const grew = growth(10_000, () => {

@@ -11,6 +11,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::args::{self, Options, error};
 use crate::body_set::BodySet;
+use crate::debug::DebugLines;
 use crate::map::TileMap;
 use crate::values::{object, pair};
 
@@ -254,6 +255,15 @@ impl Bodies {
     #[wasm_bindgen(unchecked_return_type = "ResolveReport")]
     pub fn step(&mut self, map: &TileMap) -> Result<Object, JsError> {
         report(&self.set.bodies.step(map.inner()))
+    }
+
+    /// Adds every body to `out`: each circle of its shape as a `Body` circle with the
+    /// body's owner, and (after a step, until a body is added, removed or changed) the box
+    /// the broadphase filed that circle under, as a `BroadphaseBox`. The resolver keeps no
+    /// contacts between bodies, so there are none to draw.
+    #[wasm_bindgen(js_name = fillDebugLines)]
+    pub fn fill_debug_lines(&self, out: &mut DebugLines) {
+        self.set.bodies.debug_lines(out.lines_mut());
     }
 
     /// A copy of every body's position, 2 floats a body (`x, y`) in the order of

@@ -6,6 +6,7 @@ use tileslide::{CharacterShape, Contact, Contacts, ControllerConfig, MoveOptions
 use wasm_bindgen::prelude::*;
 
 use crate::args::{self, Options, error};
+use crate::debug::DebugLines;
 use crate::map::TileMap;
 use crate::values::{object, pair, source_fields};
 
@@ -193,6 +194,21 @@ impl Character {
     pub fn clip_velocity(&self, vx: f64, vy: f64) -> Result<JsValue, JsError> {
         let velocity = args::vec2("clipVelocity: velocity", vx, vy).map_err(error)?;
         Ok(pair(self.character.clip_velocity(velocity, &self.last)))
+    }
+
+    /// Adds the character to `out`: its shape as a `Character` circle or box, and what its
+    /// last move (`moveBy` or `moveAndSlide`) touched as `Contact` segments along each
+    /// surface's normal, all with `owner` (a whole number; default 0).
+    #[wasm_bindgen(js_name = fillDebugLines)]
+    pub fn fill_debug_lines(
+        &self,
+        out: &mut DebugLines,
+        owner: Option<f64>,
+    ) -> Result<(), JsError> {
+        let owner = args::owner("fillDebugLines: owner", owner.unwrap_or(0.0)).map_err(error)?;
+        self.character
+            .debug_lines(Some(&self.last), owner, out.lines_mut());
+        Ok(())
     }
 
     fn result(&self, contacts: &Contacts, extra: &[(&str, JsValue)]) -> Result<Object, JsError> {

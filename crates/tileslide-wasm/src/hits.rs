@@ -7,6 +7,7 @@ use tileslide::{Facing, HitObject, HitTypes, ObjectId, TeamRule, Vec2, Volume};
 use wasm_bindgen::prelude::*;
 
 use crate::args::{self, Options, error};
+use crate::debug::DebugLines;
 use crate::values::object;
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -118,6 +119,16 @@ impl HitWorld {
             .register(object, &attack, &vulnerable)
             .map_err(error)?;
         Ok(id.0)
+    }
+
+    /// Adds this frame's objects to `out`, in the order they were registered: each attack
+    /// volume as an `AttackVolume` circle or box, each vulnerability volume as a
+    /// `VulnerabilityVolume`, and the box everything it sweeps during the frame as a
+    /// `BroadphaseBox`, with the object's owner; then the last `detect`'s events at the
+    /// middle of the victim's box, as `Hit` or `RefusedHit` points with the victim's owner.
+    #[wasm_bindgen(js_name = fillDebugLines)]
+    pub fn fill_debug_lines(&self, out: &mut DebugLines) {
+        self.world.debug_lines(out.lines_mut());
     }
 
     /// Finds this frame's hits and returns them. Without `rule`, a victim takes hits from

@@ -3,10 +3,11 @@
 //! core's.
 
 use js_sys::{Array, Float32Array, Object};
-use tileslide::{NavConfig, NavError, Vec2};
+use tileslide::{DebugKind, NavConfig, NavError, Segment, Vec2};
 use wasm_bindgen::prelude::*;
 
 use crate::args::{self, Options, error};
+use crate::debug::DebugLines;
 use crate::map::TileMap;
 use crate::values::{object, pair};
 
@@ -91,6 +92,42 @@ impl NavGrid {
             let flat: Vec<f32> = p.points().iter().flat_map(|v| [v.x, v.y]).collect();
             Float32Array::from(flat.as_slice()).into()
         }))
+    }
+
+    /// Adds the legs of a path `findPath` found (`points`: 2 floats a point, `x, y`) to
+    /// `out` as `Path` segments from the start to the goal, with `owner` (a whole number;
+    /// default 0), as the core's `NavPath` draws itself.
+    #[wasm_bindgen(js_name = fillPathDebugLines)]
+    pub fn fill_path_debug_lines(
+        points: &[f32],
+        out: &mut DebugLines,
+        owner: Option<f64>,
+    ) -> Result<(), JsError> {
+        const CALL: &str = "fillPathDebugLines";
+        let owner = args::owner(&format!("{CALL}: owner"), owner.unwrap_or(0.0)).map_err(error)?;
+        if !points.len().is_multiple_of(2) {
+            return Err(error(format!(
+                "{CALL}: {} floats is not a whole number of points (2 a point: x, y)",
+                points.len()
+            )));
+        }
+        if let Some(i) = points.iter().position(|v| !v.is_finite()) {
+            return Err(error(format!(
+                "{CALL}: point {}.{} is {}, not a finite number",
+                i / 2,
+                ["x", "y"][i % 2],
+                points[i]
+            )));
+        }
+        let lines = out.lines_mut();
+        for leg in points.chunks_exact(2).collect::<Vec<_>>().windows(2) {
+            let (a, b) = (
+                Vec2::new(leg[0][0], leg[0][1]),
+                Vec2::new(leg[1][0], leg[1][1]),
+            );
+            lines.push_segment(DebugKind::Path, Segment::new(a, b), owner);
+        }
+        Ok(())
     }
 
     /// True when a circle of `radius` fits at (`x`, `y`), clear of walls.
@@ -185,24 +222,45 @@ impl FlowField {
         map: &TileMap,
         points: &[f32],
     ) -> Result<Float32Array, JsError> {
-        if !points.len().is_multiple_of(2) {
-            return Err(error(format!(
-                "directions: {} floats is not a whole number of points (2 a point: x, y)",
-                points.len()
-            )));
-        }
-        let mut out = Vec::with_capacity(points.len());
-        for (i, p) in points.chunks_exact(2).enumerate() {
-            let what = format!("directions: point {i}");
-            let p = args::vec2(&what, f64::from(p[0]), f64::from(p[1])).map_err(error)?;
-            let dir = self
-                .field
-                .direction(&nav.nav, map.inner(), p)
-                .map_err(nav_error(&what))?
-                .unwrap_or(Vec2::NAN);
-            out.extend_from_slice(&[dir.x, dir.y]);
-        }
-        Ok(Float32Array::from(out.as_slice()))
+        self.each_point("directions", points, |p| {
+            self.field.direction(&nav.nav, map.inner(), p)
+        })
+    }
+
+    /// `[dx, dy]`: a cheap direction for a circle at (`x`, `y`), along the field's lattice
+    /// moves with no straight-line checks (a few array reads, where `direction` checks a
+    /// dozen lines against the walls): for crowds of thousands that ask every step. It
+    /// steers along 45° moves rather than cutting corners, and may press a circle against
+    /// a corner for a resolver (`Bodies`) to slide it round. `null` when no node around
+    /// the point reaches the goal, or on the goal.
+    #[wasm_bindgen(js_name = latticeDirection, unchecked_return_type = "[number, number] | null")]
+    pub fn lattice_direction(
+        &self,
+        nav: &NavGrid,
+        map: &TileMap,
+        x: f64,
+        y: f64,
+    ) -> Result<JsValue, JsError> {
+        let p = args::vec2("latticeDirection: point", x, y).map_err(error)?;
+        let dir = self
+            .field
+            .lattice_direction(&nav.nav, map.inner(), p)
+            .map_err(nav_error("latticeDirection"))?;
+        Ok(dir.map_or(JsValue::NULL, pair))
+    }
+
+    /// `latticeDirection` at many points at once: `points` holds 2 floats a point
+    /// (`x, y`); the answer 2 a point (`dx, dy`), both NaN where it is `null`.
+    #[wasm_bindgen(js_name = latticeDirections)]
+    pub fn lattice_directions(
+        &self,
+        nav: &NavGrid,
+        map: &TileMap,
+        points: &[f32],
+    ) -> Result<Float32Array, JsError> {
+        self.each_point("latticeDirections", points, |p| {
+            self.field.lattice_direction(&nav.nav, map.inner(), p)
+        })
     }
 
     /// The length of the way from (`x`, `y`) to the goal along the field (map units), or
@@ -223,12 +281,54 @@ impl FlowField {
         Ok(distance.map_or(JsValue::NULL, JsValue::from))
     }
 
+    /// Adds the field's next move out of every lattice node that reaches the goal to `out`,
+    /// as `FlowArrow` segments from the node half of the way to the next node (or towards
+    /// the goal); with a view set on `out`, only the nodes in it. `nav` is the grid the
+    /// field was made on; for another grid nothing is added.
+    #[wasm_bindgen(js_name = fillDebugLines)]
+    pub fn fill_debug_lines(&self, nav: &NavGrid, out: &mut DebugLines) {
+        self.field.debug_lines(&nav.nav, out.lines_mut());
+    }
+
     /// Catches up with the map's edits once `nav` has (`nav.sync(map)`); true when the
     /// field was recomputed (its directions may then differ).
     pub fn sync(&mut self, nav: &NavGrid, map: &TileMap) -> Result<bool, JsError> {
         self.field
             .sync(&nav.nav, map.inner())
             .map_err(nav_error("FlowField.sync"))
+    }
+}
+
+impl FlowField {
+    /// `direction` at each point of `points` (2 floats a point), as 2 floats a point, NaN
+    /// for `None`; an error names `call` and the point (formatted only then: a crowd asks
+    /// every step).
+    fn each_point(
+        &self,
+        call: &str,
+        points: &[f32],
+        direction: impl Fn(Vec2) -> Result<Option<Vec2>, NavError>,
+    ) -> Result<Float32Array, JsError> {
+        if !points.len().is_multiple_of(2) {
+            return Err(error(format!(
+                "{call}: {} floats is not a whole number of points (2 a point: x, y)",
+                points.len()
+            )));
+        }
+        let mut out = Vec::with_capacity(points.len());
+        for (i, p) in points.chunks_exact(2).enumerate() {
+            let what = || format!("{call}: point {i}");
+            let p = Vec2::new(p[0], p[1]);
+            if !p.is_finite() {
+                // Names the coordinate as the one-point calls do.
+                args::vec2(&what(), f64::from(p.x), f64::from(p.y)).map_err(error)?;
+            }
+            let dir = direction(p)
+                .map_err(|e| error(format!("{}: {e}", what())))?
+                .unwrap_or(Vec2::NAN);
+            out.extend_from_slice(&[dir.x, dir.y]);
+        }
+        Ok(Float32Array::from(out.as_slice()))
     }
 }
 

@@ -574,12 +574,25 @@ const CROWD: &str = "\
 #......................#
 ########################";
 
-/// 30 agents of radius 0.3 in a room with pillars steer by one flow field, are
-/// moved 0.05 a step by `Bodies`, and leave through the goal (removed within 1.5 cells of
-/// it) within 2,500 steps; no two overlap and none touches a wall closer than its radius at
-/// any step.
+/// 30 agents of radius 0.3 in a room with pillars steer by one flow field
+/// (`FlowField::direction`), are moved 0.05 a step by `Bodies`, and leave through the goal
+/// (removed within 1.5 cells of it) within 2,500 steps; no two overlap and none touches a
+/// wall closer than its radius at any step.
 #[test]
 fn a_crowd_following_a_flow_field_reaches_the_goal_without_overlapping_or_sticking() {
+    crowd_reaches_the_goal(|field, nav, map, p| field.direction(nav, map, p).unwrap());
+}
+
+/// The same crowd steered by the cheap `FlowField::lattice_direction` (no straight-line
+/// checks): the resolver slides the agents round the pillars and the door's corners it
+/// presses them against, and all leave through the goal within the same 2,500 steps.
+#[test]
+fn a_crowd_following_lattice_directions_reaches_the_goal_without_overlapping_or_sticking() {
+    crowd_reaches_the_goal(|field, nav, map, p| field.lattice_direction(nav, map, p).unwrap());
+}
+
+/// The crowd of the two tests above, steered by `steer` (a circle's direction at a point).
+fn crowd_reaches_the_goal(steer: impl Fn(&FlowField, &NavGrid, &TileMap, Vec2) -> Option<Vec2>) {
     const R: f32 = 0.3;
     const AGENTS: usize = 30;
     const EXIT: f32 = 1.5;
@@ -606,7 +619,7 @@ fn a_crowd_following_a_flow_field_reaches_the_goal_without_overlapping_or_sticki
     for step in 1..=MAX_STEPS {
         for &h in &agents {
             let p = bodies.get(h).unwrap().position();
-            let dir = field.direction(&nav, &map, p).unwrap();
+            let dir = steer(&field, &nav, &map, p);
             bodies.propose(h, dir.unwrap_or(Vec2::ZERO) * STEP).unwrap();
         }
         bodies.step(&map);
@@ -642,7 +655,7 @@ fn a_crowd_following_a_flow_field_reaches_the_goal_without_overlapping_or_sticki
         .iter()
         .map(|&h| {
             let p = bodies.get(h).unwrap().position();
-            let dir = field.direction(&nav, &map, p).unwrap();
+            let dir = steer(&field, &nav, &map, p);
             format!(
                 "{p} (direction {dir:?}, {:.4} from a wall)",
                 walls.distance_to_point(p)
@@ -654,6 +667,48 @@ fn a_crowd_following_a_flow_field_reaches_the_goal_without_overlapping_or_sticki
         agents.len(),
         stuck.join("\n")
     );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Along a corridor one cell wide, whose middle line is a line of lattice nodes, the
+    /// way to a goal on that line is that line: `lattice_direction` and `direction` agree
+    /// (both `None` only on the goal) at every point of it where the circle fits.
+    #[test]
+    fn lattice_direction_equals_direction_along_a_corridor(
+        length in 3u32..40,
+        r in 0.05f32..0.45,
+        goal_at in 0.0f32..1.0,
+        points in prop::collection::vec(0.0f32..1.0, 1..16),
+    ) {
+        let text = format!(
+            "{wall}\n#{floor}#\n{wall}",
+            wall = "#".repeat(length as usize + 2),
+            floor = ".".repeat(length as usize),
+        );
+        let map = map(&text);
+        let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        // Points on the middle line, from the corridor's left end to its right end.
+        let on_line = |t: f32| v(1.0 + t * length as f32, 1.5);
+        let goal = on_line(goal_at);
+        prop_assume!(nav.fits(&map, goal, r).unwrap());
+        let field = FlowField::new(&nav, &map, goal, r).unwrap();
+        for p in points.into_iter().map(on_line).chain([goal]) {
+            if !nav.fits(&map, p, r).unwrap() {
+                continue;
+            }
+            let cheap = field.lattice_direction(&nav, &map, p).unwrap();
+            let full = field.direction(&nav, &map, p).unwrap();
+            // Equal up to the rounding of normalizing vectors of different lengths.
+            let same = match (cheap, full) {
+                (Some(a), Some(b)) => a.abs_diff_eq(b, 1e-6),
+                (a, b) => a == b,
+            };
+            prop_assert!(same, "at {} towards {}: {:?} against {:?}", p, goal, cheap, full);
+            prop_assert_eq!(cheap.is_none(), p == goal, "at {} towards {}", p, goal);
+        }
+    }
 }
 
 /// Regression (FlowField): the resolver keeps bodies between r + gap/2 and r + gap from

@@ -7,12 +7,12 @@ import { Bodies, FlowField, NavGrid } from "../../pkg/tileslide.js";
 const SPEED = 0.05;
 /** The widest circle the navigation grid serves, in cells. */
 export const MAX_RADIUS = 0.9;
-/** The most circles a step asks the flow field for a new direction, round robin; the
- * others keep their last one. A direction costs tens of microseconds (the field looks
- * ahead along its way for the farthest point in a clear straight line), so a crowd of
- * 10,000 refreshes each circle's about every 40 steps, while a few dozen circles get a
- * new direction every step. */
-const DIRECTIONS_A_STEP = 256;
+/** The most circles whose direction a step asks the flow field for with `directions`,
+ * which looks ahead along the way for the farthest point in a clear straight line (tens of
+ * microseconds a point). A larger crowd (the "10,000 bodies") asks `latticeDirections`
+ * instead, a few array reads a point that steer along the lattice's moves and leave the
+ * corners to the resolver: every circle gets a new direction every step either way. */
+const LOOKAHEAD_CROWD = 256;
 /** The "10,000 bodies" button's count, radius and lattice spacing. */
 const MANY = { count: 10_000, radius: 0.08, spacing: 0.2 };
 
@@ -26,8 +26,7 @@ export class Crowd {
     this.fields = new Map(); // radius → FlowField
     this.radii = new Map(); // handle → radius
     this.goal = null; // [x, y] on the navigation lattice
-    this.moves = new Float32Array(0); // each body's move, kept until its direction is asked again
-    this.next = 0; // the first body whose direction the next step refreshes
+    this.moves = new Float32Array(0); // each body's move this step
     this.groups = null; // radius → {indices, points}, made again when bodies come or go
     this.blocked = null; // why the circles of some radius cannot follow the goal
   }
@@ -116,32 +115,26 @@ export class Crowd {
   step() {
     const handles = this.bodies.handles();
     if (handles.length === 0) return;
-    if (this.moves.length !== 2 * handles.length) {
-      this.moves = new Float32Array(2 * handles.length);
-      this.next = 0;
-    }
+    if (this.moves.length !== 2 * handles.length) this.moves = new Float32Array(2 * handles.length);
     if (this.goal) {
       const positions = this.bodies.positions();
       this.groups ??= this.byRadius(handles);
-      // This step's bodies: `count` of them from `first`, wrapping round.
-      const count = Math.min(handles.length, DIRECTIONS_A_STEP);
-      const first = this.next;
-      this.next = (first + count) % handles.length;
-      const due = (body) => (body - first + handles.length) % handles.length < count;
+      const cheap = handles.length > LOOKAHEAD_CROWD;
       for (const [radius, group] of this.groups) {
         const field = this.field(radius);
-        const picked = group.indices.filter(due);
         if (!field) {
-          for (const body of picked) this.moves[2 * body] = this.moves[2 * body + 1] = 0;
+          for (const body of group.indices) this.moves[2 * body] = this.moves[2 * body + 1] = 0;
           continue;
         }
-        const points = group.points.subarray(0, 2 * picked.length);
-        picked.forEach((body, i) => {
+        const points = group.points;
+        group.indices.forEach((body, i) => {
           points[2 * i] = positions[2 * body];
           points[2 * i + 1] = positions[2 * body + 1];
         });
-        const directions = field.directions(this.nav, this.map, points);
-        picked.forEach((body, i) => {
+        const directions = cheap
+          ? field.latticeDirections(this.nav, this.map, points)
+          : field.directions(this.nav, this.map, points);
+        group.indices.forEach((body, i) => {
           const dx = directions[2 * i];
           const dy = directions[2 * i + 1];
           // NaN: at the goal, or no way there.
@@ -155,6 +148,14 @@ export class Crowd {
     }
     this.bodies.proposeMany(handles, this.moves);
     return this.bodies.step(this.map);
+  }
+
+  /** Adds the bodies' debug lines (their circles and, after a step, the broadphase boxes
+   * they are filed under; the resolver keeps no contacts between bodies, so there are none)
+   * and each flow field's arrows to `out`, of the kinds `out` takes. */
+  fillDebugLines(out) {
+    this.bodies.fillDebugLines(out);
+    for (const field of this.fields.values()) field?.fillDebugLines(this.nav, out);
   }
 
   /** The indices (into `handles`) of the circles of each radius, with room for their

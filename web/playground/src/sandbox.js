@@ -31,7 +31,11 @@ const LAYERS = [
   { key: "hidden", label: "hidden seam segments (faint)", on: true, kinds: [KIND.HiddenSegment] },
   { key: "ray", label: "ray, hit, normal, cell", on: true, kinds: [] },
   { key: "bodies", label: "bodies", on: true, kinds: [] },
+  { key: "broadphase", label: "bodies' broadphase boxes", on: false, kinds: [KIND.BroadphaseBox] },
+  { key: "flow", label: "flow arrows (each circle size's field)", on: false, kinds: [KIND.FlowArrow] },
 ];
+/** The kinds the bodies and flow fields add to `crowdLines`, each frame, for the layers on. */
+const CROWD_KINDS = [KIND.BroadphaseBox, KIND.FlowArrow];
 /** The layer that shows each debug-line kind. */
 const LAYER_OF_KIND = new Map(LAYERS.flatMap((layer) => layer.kinds.map((kind) => [kind, layer.key])));
 
@@ -58,6 +62,7 @@ let map = null;
 let frames = null;
 let mapLines = null; // the map's debug lines, filled again when a tile changes
 let mapChanged = true;
+let crowdLines = null; // the bodies' and flow fields' debug lines, filled each frame
 let crowd = null;
 
 const hook = publishHook("sandbox", {
@@ -87,6 +92,11 @@ const hook = publishHook("sandbox", {
     }
     return out;
   },
+  /** How many shapes of each kind the last frame drew from the bodies and flow fields. */
+  crowdLineCounts: () => ({
+    boxes: crowdLines.boxKinds.filter((k) => k === KIND.BroadphaseBox).length,
+    arrows: crowdLines.segmentKinds.filter((k) => k === KIND.FlowArrow).length,
+  }),
   clientAt: (x, y) => view.clientAt(x, y),
   pixelAt: (x, y) => view.pixelAt(x, y),
 });
@@ -317,7 +327,15 @@ function draw() {
     map.fillDebugLines(mapLines);
     mapChanged = false;
   }
-  drawLines(view, mapLines, (kind) => state.layers[LAYER_OF_KIND.get(kind)]);
+  const shown = (kind) => state.layers[LAYER_OF_KIND.get(kind)];
+  drawLines(view, mapLines, shown);
+  const crowdKinds = CROWD_KINDS.filter(shown);
+  if (crowdKinds.length > 0) {
+    crowdLines.clear();
+    crowdLines.setKinds(crowdKinds);
+    crowd.fillDebugLines(crowdLines);
+    drawLines(view, crowdLines, shown);
+  }
   if (state.layers.bodies) drawBodies(ctx);
   if (state.layers.ray && state.ray) drawRay(ctx, state.ray);
   showBodies();
@@ -403,6 +421,9 @@ async function start() {
   await init();
   map = TileMap.fromAscii(caveText);
   mapLines = new DebugLines();
+  crowdLines = new DebugLines();
+  // Only what the canvas shows: a flow field draws the arrows of the nodes in the map.
+  crowdLines.setView([0, 0, width, height]);
   crowd = new Crowd(map);
   setRadius(state.radius);
   chooseTool(state.tool);

@@ -12,8 +12,11 @@ const web = fileURLToPath(new URL("../../", import.meta.url));
 const config = `${web}playground/vite.config.js`;
 const dist = `${web}playground/dist`;
 
-/** Where the screenshots of the pages go. */
-export const PICTURES = fileURLToPath(new URL("../../../docs/pictures/", import.meta.url));
+/** Where the screenshots of the pages go: web/test-results/ (ignored by git), or the
+ * committed docs/pictures/ when TILESLIDE_UPDATE_PICTURES=1 asks to update those. */
+export const PICTURES = fileURLToPath(
+  new URL(process.env.TILESLIDE_UPDATE_PICTURES === "1" ? "../../../docs/pictures/" : "../../test-results/", import.meta.url),
+);
 
 /** The Chromium to drive: TILESLIDE_CHROMIUM, else Debian's. */
 const CHROMIUM = process.env.TILESLIDE_CHROMIUM || "/usr/bin/chromium";
@@ -153,7 +156,7 @@ export function waitFrames(page, frames) {
   );
 }
 
-/** Saves a screenshot of the page as docs/pictures/`file`. */
+/** Saves a screenshot of the page as `file` in `PICTURES`. */
 export async function screenshot(page, file) {
   mkdirSync(PICTURES, { recursive: true });
   await page.screenshot({ path: `${PICTURES}${file}` });

@@ -149,6 +149,31 @@ test("circles dropped with the mouse flow to it and slide around each other", as
   assert.deepEqual(session.errors, []);
 });
 
+test("the broadphase and flow-arrow layers draw the bodies' boxes and the field's arrows", async () => {
+  const counts = () => session.page.evaluate(() => window.__tileslide.crowdLineCounts());
+  const pixels = () => session.page.evaluate(() => {
+    const c = document.getElementById("canvas");
+    const data = c.getContext("2d").getImageData(0, 0, c.width, c.height).data;
+    let sum = 0;
+    for (let i = 0; i < data.length; i += 4) sum = (sum * 31 + data[i] + 7 * data[i + 1] + 13 * data[i + 2]) % 1e9;
+    return sum;
+  });
+  await session.page.click("#pause");
+  await waitFrames(session.page, 2);
+  const before = await pixels();
+  for (const layer of ["broadphase", "flow"]) await session.page.check(`#layers input[data-layer="${layer}"]`);
+  await waitFrames(session.page, 2);
+  const { bodies } = await stateOf(session.page);
+  const { boxes, arrows } = await counts();
+  assert.equal(boxes, bodies, "a broadphase box for each circle");
+  assert.ok(arrows > 100, `${arrows} flow arrows`);
+  assert.notEqual(await pixels(), before, "the canvas shows them");
+  for (const layer of ["broadphase", "flow"]) await session.page.uncheck(`#layers input[data-layer="${layer}"]`);
+  await session.page.click("#pause");
+  await waitFrames(session.page, 2);
+  assert.deepEqual(session.errors, []);
+});
+
 test("10,000 bodies: the frame time is measured and shown", async (t) => {
   await session.page.click("#ten-thousand");
   let s = await stateOf(session.page);

@@ -219,6 +219,94 @@ impl FlowField {
         Ok((target - p).try_normalize())
     }
 
+    /// A cheap unit direction for a circle at `p`: along the field's lattice moves, with no
+    /// straight-line checks, for crowds of thousands that ask every step.
+    ///
+    /// Of the (up to four) nodes at the corners of the lattice square `p` is in, it takes
+    /// the one the goal is reached from whose distance plus the length from `p` is least
+    /// (ties: the lowest node index), and aims from `p` at that node's next node on the
+    /// way (at the goal for the nodes that join it straight; one node further when `p` is
+    /// on the next node). It costs a few array reads, where [`direction`](Self::direction)
+    /// checks a dozen or more lines against the walls, but it steers along the lattice's
+    /// 45° moves instead of cutting them, and it does not check that `p` reaches the node
+    /// it chose in a straight line: a circle steered by it can press against a corner it
+    /// should round, and relies on a resolver ([`Bodies`](crate::Bodies)) to slide it on.
+    /// Where the way is one straight line along lattice moves (a corridor's middle line
+    /// towards a goal on it) the two directions are the same.
+    ///
+    /// `None` if no node around `p` reaches the goal or `p` is on the goal.
+    ///
+    /// ```
+    /// use tileslide::{io::ascii, FlowField, NavConfig, NavGrid, Vec2};
+    ///
+    /// let map = ascii::parse("\
+    /// ########
+    /// #......#
+    /// ########", "hall.txt", 1.0)?;
+    /// let nav = NavGrid::new(&map, NavConfig::default())?;
+    /// let field = FlowField::new(&nav, &map, Vec2::new(6.5, 1.5), 0.3)?;
+    /// let p = Vec2::new(1.5, 1.5);
+    /// let cheap = field.lattice_direction(&nav, &map, p)?.unwrap();
+    /// assert!(cheap.abs_diff_eq(Vec2::X, 1e-6));
+    /// // Along the hall's middle line, the way is one straight run: the same direction.
+    /// let full = field.direction(&nav, &map, p)?.unwrap();
+    /// assert!(cheap.abs_diff_eq(full, 1e-6));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`NavError::NonFinite`] or [`NavError::OutOfRange`] for such a `p`;
+    /// [`NavError::Stale`] when `nav` or the field has not caught up with `map`'s edits;
+    /// [`NavError::OtherMap`] when `map` (or `nav`) is not the field's.
+    pub fn lattice_direction(
+        &self,
+        nav: &NavGrid,
+        map: &TileMap,
+        p: Vec2,
+    ) -> Result<Option<Vec2>, NavError> {
+        self.check(nav, map, p)?;
+        let lattice = &nav.table.lattice;
+        if self.distance.len() != lattice.len() {
+            return Err(NavError::OtherMap);
+        }
+        let base = lattice.local(p).floor();
+        let mut best: Option<(u64, usize)> = None;
+        for (di, dj) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)] {
+            let (i, j) = (base.x + di, base.y + dj);
+            if i < 0.0 || j < 0.0 || i >= lattice.nx as f32 || j >= lattice.ny as f32 {
+                continue;
+            }
+            let n = lattice.index(i as u32, j as u32);
+            if self.distance[n] == UNREACHED {
+                continue;
+            }
+            let to_node = lattice.cost_of_length(p.distance(lattice.position_of(n)));
+            let cost = u64::from(self.distance[n]) + u64::from(to_node);
+            if best.is_none_or(|(c, _)| cost < c) {
+                best = Some((cost, n));
+            }
+        }
+        let Some((_, mut n)) = best else {
+            return Ok(None);
+        };
+        // The node after `n` on the way, twice at most: once more when `p` is on it.
+        for _ in 0..2 {
+            let aim = match self.next[n] {
+                TO_GOAL => return Ok((self.goal - p).try_normalize()),
+                d => {
+                    let (i, j) = lattice.coords(n);
+                    let (dx, dy) = MOVES[usize::from(d)];
+                    n = lattice.index((i as i32 + dx) as u32, (j as i32 + dy) as u32);
+                    lattice.position_of(n)
+                }
+            };
+            if let Some(dir) = (aim - p).try_normalize() {
+                return Ok(Some(dir));
+            }
+        }
+        Ok(None)
+    }
+
     /// Catches up with `map`'s tile edits since the field was made or last synced, once
     /// `nav` has ([`NavGrid::sync`]): recomputes the field if an edit opened or closed a
     /// move into or out of a node the field reaches, or changed walls near enough to the
@@ -318,5 +406,36 @@ mod tests {
         let pairs = field.downhill_pairs(&nav);
         assert!(pairs.len() > 40, "{}", pairs.len());
         assert!(pairs.iter().all(|&(here, there)| there < here));
+    }
+
+    #[test]
+    fn lattice_direction_is_none_in_a_wall_and_on_the_goal_and_follows_the_bend() {
+        let map = ascii::parse("#####\n#...#\n###.#\n#####", "bend.txt", 1.0).unwrap();
+        let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let goal = Vec2::new(3.5, 2.5);
+        let field = FlowField::new(&nav, &map, goal, 0.3).unwrap();
+        let at = |x: f32, y: f32| {
+            field
+                .lattice_direction(&nav, &map, Vec2::new(x, y))
+                .unwrap()
+        };
+        assert_eq!(at(0.5, 0.5), None, "inside a wall");
+        assert_eq!(at(goal.x, goal.y), None, "on the goal");
+        // Along the top row towards the bend, then down it.
+        let near = |d: Option<Vec2>, want: Vec2| d.is_some_and(|d| d.abs_diff_eq(want, 1e-6));
+        assert!(near(at(1.5, 1.5), Vec2::X), "{:?}", at(1.5, 1.5));
+        assert!(near(at(3.5, 1.6), Vec2::Y), "{:?}", at(3.5, 1.6));
+    }
+
+    #[test]
+    fn lattice_direction_refuses_a_point_that_is_not_finite() {
+        let map = ascii::parse("####\n#..#\n####", "t.txt", 1.0).unwrap();
+        let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+        let field = FlowField::new(&nav, &map, Vec2::new(2.5, 1.5), 0.3).unwrap();
+        let nan = Vec2::new(f32::NAN, 1.5);
+        assert!(matches!(
+            field.lattice_direction(&nav, &map, nan),
+            Err(NavError::NonFinite { what: "p", .. })
+        ));
     }
 }
