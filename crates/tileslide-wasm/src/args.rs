@@ -33,6 +33,11 @@ pub fn finite(what: &str, value: f64) -> Result<f32, String> {
 /// The point or vector (`x`, `y`), each coordinate checked by [`finite`] and named
 /// `{what}.x` / `{what}.y`.
 pub fn vec2(what: &str, x: f64, y: f64) -> Result<Vec2, String> {
+    // The names are formatted only for an error: a game calls this every frame.
+    let (sx, sy) = (x as f32, y as f32);
+    if sx.is_finite() && sy.is_finite() {
+        return Ok(Vec2::new(sx, sy));
+    }
     Ok(Vec2::new(
         finite(&format!("{what}.x"), x)?,
         finite(&format!("{what}.y"), y)?,
