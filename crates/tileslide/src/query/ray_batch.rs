@@ -29,6 +29,10 @@ use crate::geometry::Ray;
 use crate::tiles::face_kind::{KIND_GENERAL, face_index};
 use crate::tiles::{Cell, TileMap};
 
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+#[path = "ray_batch_simd128.rs"]
+mod simd128;
+
 /// Rays stepped side by side: eight `f32` or `i32` lanes, two SSE registers or one AVX2
 /// register.
 const LANES: usize = 8;
@@ -276,6 +280,9 @@ impl TileMap {
             }
             for _ in 0..STEPS {
                 for group in &mut walkers {
+                    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+                    simd128::step(group, kinds);
+                    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
                     step(group, kinds);
                 }
             }
@@ -399,6 +406,11 @@ impl TileMap {
 /// the lanes compiles to vector instructions. A lane that stops keeps its state (the cell
 /// it stopped in).
 #[allow(clippy::needless_range_loop)] // as in `start_group`
+// (Builds with SIMD128 for WebAssembly step by `simd128::step`.)
+#[cfg_attr(
+    all(target_arch = "wasm32", target_feature = "simd128"),
+    allow(dead_code)
+)]
 #[inline(always)]
 fn step(group: &mut Group, kinds: &[u8]) {
     // The one read that cannot be a vector load: the kind of each lane's cell. An index
