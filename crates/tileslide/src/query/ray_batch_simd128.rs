@@ -9,8 +9,8 @@
 
 use core::arch::wasm32::{
     f32x4, f32x4_abs, f32x4_convert_i32x4, f32x4_gt, f32x4_le, f32x4_lt, f32x4_mul, f32x4_sub,
-    i32x4, i32x4_add, i32x4_eq, i32x4_extract_lane, i32x4_splat, v128, v128_and, v128_andnot,
-    v128_bitselect, v128_not, v128_or,
+    i32x4, i32x4_add, i32x4_bitmask, i32x4_eq, i32x4_extract_lane, i32x4_splat, v128, v128_and,
+    v128_andnot, v128_bitselect, v128_not, v128_or,
 };
 
 use super::{FACE, Group, LANES, MISS, SCALAR, WALKING};
@@ -138,4 +138,15 @@ fn half(group: &mut Group, kinds: &[u8], half: usize) {
             v128_andnot(entered, go),
         ),
     );
+}
+
+/// Bit `k` set for each lane `k` whose status is `value`: a compare and a `bitmask` per
+/// half (the portable version's byte packing and multiplication, unvectorized at
+/// `opt-level = "s"`, cost more than the compare).
+#[inline(always)]
+pub(super) fn lanes_equal(status: &[i32; LANES], value: i32) -> u32 {
+    let value = i32x4_splat(value);
+    let low = i32x4_bitmask(i32x4_eq(i32s(status, 0), value));
+    let high = i32x4_bitmask(i32x4_eq(i32s(status, 1), value));
+    u32::from(low) | (u32::from(high) << 4)
 }
