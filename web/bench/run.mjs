@@ -2,6 +2,8 @@
 // (10,000 circles, 100 steps a run) in wasm through the package, and natively in the same
 // run through the same Rust code (the tileslide-web-bench crate, release build), with the
 // medians, the wasm/native ratios, the answers' checksums (they must agree) and the CPU.
+// The runs are interleaved (a native run, then a wasm run of each scene, N times), so that
+// a machine whose load changes during the benchmark weighs on both sides alike.
 //
 // Options: --runs N (default 5), --no-build (use web/pkg as it is).
 import { execFileSync } from "node:child_process";
@@ -30,9 +32,10 @@ const wasmBytes = readFileSync(here("../pkg/tileslide_bg.wasm"));
 execFileSync("cargo", ["build", "--quiet", "--release", "-p", "tileslide-web-bench"], { cwd: root, stdio: "inherit" });
 const metadata = JSON.parse(execFileSync("cargo", ["metadata", "--format-version", "1", "--no-deps"], { cwd: root }));
 const dir = mkdtempSync(join(tmpdir(), "tileslide-bench-"));
-const native = JSON.parse(
-  execFileSync(join(metadata.target_directory, "release", "tileslide-web-bench"), ["time", dir, String(runs)], { cwd: root }),
-);
+const bench = join(metadata.target_directory, "release", "tileslide-web-bench");
+const nativeRun = () => JSON.parse(execFileSync(bench, ["time", dir, "1"], { cwd: root }));
+// The first run writes the scenes the wasm side reads.
+let native = nativeRun();
 
 const floats = (name) => {
   const bytes = readFileSync(join(dir, name));
@@ -41,27 +44,21 @@ const floats = (name) => {
 const map = TileMap.fromBaked(readFileSync(join(dir, "dungeon256.tsm")));
 const rays = floats("rays.f32");
 const crowd = floats("crowd.f32");
-rmSync(dir, { recursive: true });
 
-function median(n, work) {
-  const times = [];
-  for (let i = 0; i < n; i++) {
-    const start = process.hrtime.bigint();
-    work();
-    times.push(Number(process.hrtime.bigint() - start) / 1e9);
-  }
-  times.sort((a, b) => a - b);
-  return times[Math.floor(times.length / 2)];
-}
-
-let answers;
-const raysSeconds = median(runs, () => {
-  answers = map.castRays(rays);
-});
+const median = (times) => {
+  const sorted = [...times].sort((a, b) => a - b);
+  return sorted[Math.floor(sorted.length / 2)];
+};
+const seconds = (work) => {
+  const start = process.hrtime.bigint();
+  work();
+  return Number(process.hrtime.bigint() - start) / 1e9;
+};
 
 const steps = native.crowdSteps;
+let answers;
 let crowdHash;
-const crowdRun = median(Math.ceil(runs / 2), () => {
+const crowdOnce = () => {
   const bodies = new Bodies();
   const n = crowd.length / 4;
   const handles = new Float64Array(n);
@@ -76,13 +73,25 @@ const crowdRun = median(Math.ceil(runs / 2), () => {
   }
   crowdHash = fnv1a(bodies.positions());
   bodies.free();
-});
-const crowdStepSeconds = crowdRun / steps;
+};
+const times = { wasmRays: [], wasmCrowd: [], nativeRays: [], nativeCrowd: [] };
+for (let i = 0; i < runs; i++) {
+  if (i > 0) native = nativeRun();
+  times.nativeRays.push(native.raysSeconds);
+  times.nativeCrowd.push(native.crowdStepSeconds);
+  times.wasmRays.push(seconds(() => (answers = map.castRays(rays))));
+  times.wasmCrowd.push(seconds(crowdOnce) / steps);
+}
+rmSync(dir, { recursive: true });
+const raysSeconds = median(times.wasmRays);
+const crowdStepSeconds = median(times.wasmCrowd);
+native.raysSeconds = median(times.nativeRays);
+native.crowdStepSeconds = median(times.nativeCrowd);
 
 const raysChecksum = fnv1a(answers);
 const row = (name, wasm, nat, unit, scale, same) =>
   `${name.padEnd(26)} ${(wasm * scale).toFixed(2).padStart(9)} ${unit}  ${(nat * scale).toFixed(2).padStart(9)} ${unit}  ${(wasm / nat).toFixed(2).padStart(5)}×  ${same ? "same answers" : "ANSWERS DIFFER"}`;
-console.log(`CPU: ${cpus()[0]?.model ?? "unknown"}; Node ${process.version}; median of ${runs} runs (crowd: ${Math.ceil(runs / 2)} runs of ${steps} steps)`);
+console.log(`CPU: ${cpus()[0]?.model ?? "unknown"}; Node ${process.version}; median of ${runs} interleaved runs (crowd: ${steps} steps a run)`);
 console.log(`package: tileslide_bg.wasm ${statSync(here("../pkg/tileslide_bg.wasm")).size} bytes, ${gzipSync(wasmBytes, { level: 9 }).length} gzipped`);
 console.log(`${"scene".padEnd(26)} ${"wasm".padStart(12)}  ${"native".padStart(12)}  ratio`);
 console.log(row("rays dungeon256, 1M rays", raysSeconds, native.raysSeconds, "ms", 1e3, raysChecksum === native.raysChecksum));

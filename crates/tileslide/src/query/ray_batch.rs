@@ -29,6 +29,10 @@ use crate::geometry::Ray;
 use crate::tiles::face_kind::{KIND_GENERAL, face_index};
 use crate::tiles::{Cell, TileMap};
 
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+#[path = "ray_batch_simd128.rs"]
+mod simd128;
+
 /// Rays stepped side by side: eight `f32` or `i32` lanes, two SSE registers or one AVX2
 /// register.
 const LANES: usize = 8;
@@ -233,12 +237,12 @@ impl TileMap {
             for group in &mut walkers {
                 // The lanes to answer and refill, found without a branch per lane: which
                 // lanes finish is a coin toss for the branch predictor.
-                let mut stopped = lanes_where(&group.status, |s| s != WALKING);
+                let mut stopped = ALL_LANES & !lanes_equal(&group.status, WALKING);
                 if give_up {
-                    stopped = u32::MAX >> (32 - LANES);
+                    stopped = ALL_LANES;
                 }
                 if queued == rays.len() && waiting.next == waiting.len {
-                    stopped &= !lanes_where(&group.status, |s| s == IDLE);
+                    stopped &= !lanes_equal(&group.status, IDLE);
                 }
                 while stopped != 0 {
                     let k = stopped.trailing_zeros() as usize;
@@ -269,13 +273,16 @@ impl TileMap {
                         group.status[k] = IDLE;
                     }
                 }
-                busy |= group.status.iter().any(|&s| s != IDLE);
+                busy |= lanes_equal(&group.status, IDLE) != ALL_LANES;
             }
             if !busy {
                 break;
             }
             for _ in 0..STEPS {
                 for group in &mut walkers {
+                    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+                    simd128::step(group, kinds);
+                    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
                     step(group, kinds);
                 }
             }
@@ -399,6 +406,11 @@ impl TileMap {
 /// the lanes compiles to vector instructions. A lane that stops keeps its state (the cell
 /// it stopped in).
 #[allow(clippy::needless_range_loop)] // as in `start_group`
+// (Builds with SIMD128 for WebAssembly step by `simd128::step`.)
+#[cfg_attr(
+    all(target_arch = "wasm32", target_feature = "simd128"),
+    allow(dead_code)
+)]
 #[inline(always)]
 fn step(group: &mut Group, kinds: &[u8]) {
     // The one read that cannot be a vector load: the kind of each lane's cell. An index
@@ -438,18 +450,25 @@ fn step(group: &mut Group, kinds: &[u8]) {
     }
 }
 
-/// Bit `k` set for each lane `k` whose status passes `test`, without a branch per lane:
+/// Bit `k` set for each lane `k` whose status is `value`, without a branch per lane:
 /// eight 0/1 bytes (vector compares and packs) gathered into eight bits by one
 /// multiplication (byte `k` times `2^(56 − 7k)` lands in bit `56 + k`, and no two other
 /// products meet or carry into the top byte).
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
 #[inline(always)]
-fn lanes_where(status: &[i32; LANES], test: impl Fn(i32) -> bool) -> u32 {
+fn lanes_equal(status: &[i32; LANES], value: i32) -> u32 {
     let mut bytes = [0u8; LANES];
     for (byte, &s) in bytes.iter_mut().zip(status) {
-        *byte = u8::from(test(s));
+        *byte = u8::from(s == value);
     }
     (u64::from_le_bytes(bytes).wrapping_mul(0x0102_0408_1020_4080) >> 56) as u32
 }
+
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+use simd128::lanes_equal;
+
+/// Every lane's bit, as [`lanes_equal`] gives them.
+const ALL_LANES: u32 = u32::MAX >> (32 - LANES);
 
 /// Copies lane `k` of `from` to lane `to_k` of `to`.
 #[inline(always)]
