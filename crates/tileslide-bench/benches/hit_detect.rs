@@ -1,6 +1,6 @@
 //! What a frame of `HitWorld` costs: `begin_frame`, registering 2,000 objects and `detect`,
 //! on a sparse field (200 × 200 units, a few hundred hits) and a crowded one (60 × 60, a few
-//! thousand hits). Every object has a 1 × 1 body; a third also punch (a circle in front of
+//! thousand hits); and each half alone. Every object has a 1 × 1 body; a third also punch (a circle in front of
 //! them), and a tenth are fireballs (a circle swept along a move of up to 3 units, no body).
 //! `cargo bench -p tileslide-bench --bench hit_detect`.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, missing_docs)]
@@ -58,16 +58,28 @@ fn hit_detect(c: &mut Criterion) {
     for (name, side) in [("sparse", 200.0f32), ("crowded", 60.0)] {
         let list = objects(2000, side, 0x5eed_0b1e_c75e_ed00);
         let mut world = HitWorld::new();
-        group.bench_with_input(BenchmarkId::from_parameter(name), &list, |b, list| {
+        let register = |world: &mut HitWorld, list: &[Object]| {
+            world.begin_frame();
+            for o in list {
+                world
+                    .register(black_box(o.object), &o.attack, &o.vulnerable)
+                    .unwrap();
+            }
+        };
+        group.bench_with_input(BenchmarkId::new("frame", name), &list, |b, list| {
             b.iter(|| {
-                world.begin_frame();
-                for o in list {
-                    world
-                        .register(black_box(o.object), &o.attack, &o.vulnerable)
-                        .unwrap();
-                }
+                register(&mut world, list);
                 world.detect(&mut TeamRule).len()
             });
+        });
+        // The two halves: registering alone, and `detect` alone on the registered frame
+        // (without swings, detecting again finds the same hits).
+        group.bench_with_input(BenchmarkId::new("register", name), &list, |b, list| {
+            b.iter(|| register(&mut world, list));
+        });
+        register(&mut world, &list);
+        group.bench_function(BenchmarkId::new("detect", name), |b| {
+            b.iter(|| world.detect(&mut TeamRule).len());
         });
     }
     group.finish();
