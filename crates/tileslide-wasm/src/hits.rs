@@ -124,8 +124,8 @@ impl HitWorld {
     /// Adds this frame's objects to `out`, in the order they were registered: each attack
     /// volume as an `AttackVolume` circle or box, each vulnerability volume as a
     /// `VulnerabilityVolume`, and the box everything it sweeps during the frame as a
-    /// `BroadphaseBox`, with the object's owner; then the last `detect`'s events at the
-    /// middle of the victim's box, as `Hit` or `RefusedHit` points with the victim's owner.
+    /// `BroadphaseBox`, with the object's owner; then the last `detect`'s events where each
+    /// hit happened, as `Hit` or `RefusedHit` points with the victim's owner.
     #[wasm_bindgen(js_name = fillDebugLines)]
     pub fn fill_debug_lines(&self, out: &mut DebugLines) {
         self.world.debug_lines(out.lines_mut());

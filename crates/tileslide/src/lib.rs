@@ -42,6 +42,10 @@
 //!
 //! - `tiled` (default): Tiled maps, `.tmx` and `.tmj`, in [`io::tiled`].
 //! - `png` (default): tile sets traced from PNG tile sheets, in [`io::bitmap`].
+//! - `aim` (default): hit volumes that aim in any direction: [`HitObject::aim`] turns an
+//!   object's attack volumes, and capsule volumes (`Volume::capsule`). Without it,
+//!   [`HitWorld::register`] refuses an aim, and the hit volumes take less code (the web
+//!   package leaves it out).
 //! - `tiled-zstd`: zstd-compressed Tiled tile layers (builds the zstd C library).
 //! - `serde`: `Serialize` and `Deserialize` for the value types a game saves or sends:
 //!   shapes, configurations, filters, hits, contacts, reports, handles and ids (ids and

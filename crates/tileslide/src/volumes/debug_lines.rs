@@ -1,22 +1,27 @@
 //! The hit world's debug lines: this frame's volumes, the boxes the broadphase sorted, and
 //! the last `detect`'s hits.
 
+#[cfg(feature = "aim")]
+use glam::Vec2;
+
 use super::HitWorld;
-use super::volume::Placed;
-use super::world::place;
+use super::placed::Placed;
 use crate::debug::{DebugKind, DebugLines};
 use crate::geometry::Circle;
+#[cfg(feature = "aim")]
+use crate::geometry::Segment;
 use crate::owner::Owner;
 
 impl HitWorld {
     /// Adds this frame's objects to `out`, in the order they were registered: each
-    /// attack volume placed in the world (mirrored as the object faces) as an
-    /// [`AttackVolume`](DebugKind::AttackVolume) circle or box, each vulnerability volume
-    /// as a [`VulnerabilityVolume`](DebugKind::VulnerabilityVolume), and the box of
+    /// attack volume placed in the world (mirrored as the object faces, turned as it aims)
+    /// as an [`AttackVolume`](DebugKind::AttackVolume) circle or box (a turned rectangle as
+    /// its four sides, a capsule as its two end circles and two sides), each vulnerability
+    /// volume as a [`VulnerabilityVolume`](DebugKind::VulnerabilityVolume), and the box of
     /// everything its volumes sweep during the frame (what the broadphase sorts) as a
     /// [`BroadphaseBox`](DebugKind::BroadphaseBox), each with the object's owner; then the
-    /// last [`detect`](Self::detect)'s events at the middle of the victim's box, as
-    /// [`Hit`](DebugKind::Hit) or [`RefusedHit`](DebugKind::RefusedHit) points with the
+    /// last [`detect`](Self::detect)'s events where they happened (each event's `point`),
+    /// as [`Hit`](DebugKind::Hit) or [`RefusedHit`](DebugKind::RefusedHit) points with the
     /// victim's owner.
     ///
     /// ```
@@ -39,7 +44,9 @@ impl HitWorld {
     /// assert_eq!(lines.count(DebugKind::AttackVolume), 1);
     /// assert_eq!(lines.count(DebugKind::VulnerabilityVolume), 2);
     /// let hit = lines.points()[0];
-    /// assert_eq!((hit.kind, hit.owner, hit.point), (DebugKind::Hit, Owner(2), Vec2::new(2.0, 0.5)));
+    /// // Where the sword's circle meets the slime's body: the body's point nearest the
+    /// // circle's centre, which lies inside it.
+    /// assert_eq!((hit.kind, hit.owner, hit.point), (DebugKind::Hit, Owner(2), Vec2::new(1.5, 0.5)));
     /// # Ok::<(), tileslide::VolumeError>(())
     /// ```
     pub fn debug_lines(&self, out: &mut DebugLines) {
@@ -62,7 +69,12 @@ impl HitWorld {
                     continue;
                 }
                 for v in volumes {
-                    push_placed(out, kind, place(&e.object, v), owner);
+                    let placed = if kind == DebugKind::AttackVolume {
+                        e.attack_volume(v, e.object.position)
+                    } else {
+                        e.vulnerable_volume(v, e.object.position)
+                    };
+                    push_placed(out, kind, placed, owner);
                 }
             }
             // An object without volumes has a NaN box, skipped rather than drawn.
@@ -76,29 +88,46 @@ impl HitWorld {
             } else {
                 DebugKind::RefusedHit
             };
-            if let Some(victim) = self.object(event.victim) {
-                let middle = victim.position + victim.size * 0.5;
-                out.push_point(kind, middle, victim.owner);
-            }
+            out.push_point(kind, event.point, event.victim_owner);
         }
     }
 }
 
-/// Adds a placed volume as a circle or a box.
+/// Adds a placed volume as a circle, a box, or the sides and circles of its outline.
 fn push_placed(out: &mut DebugLines, kind: DebugKind, placed: Placed, owner: Owner) {
     match placed {
         Placed::Circle { center, radius } => {
             out.push_circle(kind, Circle::new(center, radius), owner);
         }
         Placed::Rect(b) => out.push_box(kind, b, owner),
+        #[cfg(feature = "aim")]
+        Placed::Turned { center, axis, half } => {
+            let corner = |x: f32, y: f32| center + axis.rotate(Vec2::new(x, y) * half);
+            let corners = [
+                corner(-1.0, -1.0),
+                corner(1.0, -1.0),
+                corner(1.0, 1.0),
+                corner(-1.0, 1.0),
+            ];
+            for i in 0..4 {
+                out.push_segment(kind, Segment::new(corners[i], corners[(i + 1) % 4]), owner);
+            }
+        }
+        #[cfg(feature = "aim")]
+        Placed::Capsule { a, b, radius } => {
+            let side = (b - a).perp().normalize_or_zero() * radius;
+            for offset in [side, -side] {
+                out.push_segment(kind, Segment::new(a + offset, b + offset), owner);
+            }
+            out.push_circle(kind, Circle::new(a, radius), owner);
+            out.push_circle(kind, Circle::new(b, radius), owner);
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used)]
-
-    use glam::Vec2;
 
     use super::*;
     use crate::volumes::{Facing, HitObject, HitTypes, TeamRule, Volume};

@@ -6,127 +6,96 @@ use std::collections::HashSet;
 use glam::Vec2;
 
 use super::HitTypes;
-use super::volume::{Facing, Placed, Volume, VolumeError, check_range};
+use super::contact::Contact;
+use super::event::{HitEvent, HitRule};
+use super::object::{HitObject, ObjectId};
+use super::placed::Placed;
+use super::volume::{Volume, VolumeError};
 use crate::broadphase::{PairFinder, PairMethod};
 use crate::geometry::{Aabb, Circle};
 use crate::owner::Owner;
-
-/// An object registered for one frame: where it is, how it faces, and who it is.
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct HitObject {
-    /// The caller's entity (stable across frames: "hit once per swing" remembers it).
-    pub owner: Owner,
-    /// Its position at the end of the frame (its volumes' local origin).
-    pub position: Vec2,
-    /// How far it moved during the frame: its volumes are tested along the whole move, so
-    /// a fast projectile cannot pass through a target between frames. Zero: a still test.
-    pub motion: Vec2,
-    /// Its size, about which volumes are mirrored.
-    pub size: Vec2,
-    /// Which way it faces.
-    pub facing: Facing,
-    /// Its team (see [`TeamRule`]).
-    pub team: u32,
-    /// Refuses every hit under [`TeamRule`] (a hero blinking after a hit).
-    pub invulnerable: bool,
-    /// The attack it is making, if it should hit each victim at most once until the attack
-    /// ends: the swing ends at the first frame in which no object registers it.
-    pub swing: Option<u64>,
-}
-
-impl HitObject {
-    /// An object of `owner` at `position` of `size`: still, facing right and up, team 0, no
-    /// swing.
-    #[must_use]
-    pub fn new(owner: Owner, position: Vec2, size: Vec2) -> Self {
-        Self {
-            owner,
-            position,
-            motion: Vec2::ZERO,
-            size,
-            facing: Facing::default(),
-            team: 0,
-            invulnerable: false,
-            swing: None,
-        }
-    }
-
-    /// Whether the object can be registered with its volumes: its position, where it
-    /// starts the frame (`position − motion`) and its size finite and within
-    /// [`MAX_COORD`](crate::limits::MAX_COORD), so that placing and sweeping its volumes cannot
-    /// overflow. [`HitWorld::register`] refuses an object this refuses.
-    ///
-    /// # Errors
-    /// [`VolumeError::NonFinite`] or [`VolumeError::OutOfRange`] naming the value.
-    pub fn check(&self) -> Result<(), VolumeError> {
-        check_range("position", self.position)?;
-        if !self.motion.is_finite() {
-            let (x, y) = (self.motion.x, self.motion.y);
-            return Err(VolumeError::NonFinite {
-                what: "motion",
-                x,
-                y,
-            });
-        }
-        check_range("start", self.position - self.motion)?;
-        check_range("size", self.size)
-    }
-}
-
-/// An object's index in the frame's registrations.
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[cfg_attr(feature = "serde", serde(transparent))]
-pub struct ObjectId(pub u32);
-
-/// One hit: an attack volume of `attacker` met a vulnerability volume of `victim` that
-/// accepts its type.
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct HitEvent {
-    /// Who hit.
-    pub attacker: ObjectId,
-    /// Who was hit.
-    pub victim: ObjectId,
-    /// The types dealt: the attack volume's types that the vulnerability volume accepts.
-    pub hit_type: HitTypes,
-    /// Whether the victim (the [`HitRule`]) took the hit.
-    pub accepted: bool,
-}
-
-/// Decides whether a victim takes a hit. The victim is asked first; the attacker learns
-/// the answer from [`HitEvent::accepted`].
-pub trait HitRule {
-    /// True when `victim` takes a hit of `hit_type` from `attacker`.
-    fn accept(&mut self, attacker: &HitObject, victim: &HitObject, hit_type: HitTypes) -> bool;
-}
-
-/// The built-in rule: a victim takes hits from other teams while it is not invulnerable.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct TeamRule;
-
-impl HitRule for TeamRule {
-    fn accept(&mut self, attacker: &HitObject, victim: &HitObject, _: HitTypes) -> bool {
-        attacker.team != victim.team && !victim.invulnerable
-    }
-}
-
-impl<F: FnMut(&HitObject, &HitObject, HitTypes) -> bool> HitRule for F {
-    fn accept(&mut self, attacker: &HitObject, victim: &HitObject, hit_type: HitTypes) -> bool {
-        self(attacker, victim, hit_type)
-    }
-}
 
 /// A registered object and where its volumes are.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Entry {
     pub(super) object: HitObject,
+    /// The unit vector its attack volumes are turned by ([`HitObject::aim`] normalized).
+    #[cfg(feature = "aim")]
+    turn: Option<Vec2>,
     /// Ranges in `attack` and `vulnerable`.
     pub(super) attack: (u32, u32),
     pub(super) vulnerable: (u32, u32),
     /// Every point any of its volumes takes during the frame.
     pub(super) reach: Aabb,
+}
+
+impl Entry {
+    /// Where the object's volumes' local origin is when the frame starts.
+    #[cfg_attr(feature = "aim", inline)]
+    fn start(&self) -> Vec2 {
+        self.object.position - self.object.motion
+    }
+
+    /// Attack volume `v` with the object's local origin at `position`: mirrored by its
+    /// facing, turned by its aim.
+    #[cfg_attr(feature = "aim", inline)]
+    pub(super) fn attack_volume(&self, v: &Volume, position: Vec2) -> Placed {
+        let o = &self.object;
+        match self.turn() {
+            #[cfg(feature = "aim")]
+            Some(turn) => Placed::turned(&v.shape, position, o.size, o.facing, turn),
+            _ => Placed::new(&v.shape, position, o.size, o.facing),
+        }
+    }
+
+    /// Vulnerability volume `v` with the object's local origin at `position`: mirrored by
+    /// its facing.
+    #[cfg_attr(feature = "aim", inline)]
+    pub(super) fn vulnerable_volume(&self, v: &Volume, position: Vec2) -> Placed {
+        let o = &self.object;
+        Placed::new(&v.shape, position, o.size, o.facing)
+    }
+
+    /// The unit vector its attack volumes are turned by (`None`: not turned).
+    #[cfg_attr(feature = "aim", inline)]
+    fn turn(&self) -> Option<Vec2> {
+        #[cfg(feature = "aim")]
+        return self.turn;
+        #[cfg(not(feature = "aim"))]
+        None
+    }
+}
+
+/// Calls `f` with each of `attack` (turned by `turn`), then each of `vulnerable`, of
+/// `object` placed where the frame ends.
+#[cfg_attr(feature = "aim", inline)]
+#[cfg_attr(not(feature = "aim"), allow(unused_variables))]
+fn each_placed(
+    object: &HitObject,
+    turn: Option<Vec2>,
+    attack: &[Volume],
+    vulnerable: &[Volume],
+    mut f: impl FnMut(Placed),
+) {
+    let o = object;
+    let upright = |v: &Volume| Placed::new(&v.shape, o.position, o.size, o.facing);
+    // Without turning, one loop: `f` is built once (the web package counts its bytes).
+    #[cfg(not(feature = "aim"))]
+    for v in attack.iter().chain(vulnerable) {
+        f(upright(v));
+    }
+    #[cfg(feature = "aim")]
+    {
+        for v in attack {
+            f(match turn {
+                Some(turn) => Placed::turned(&v.shape, o.position, o.size, o.facing, turn),
+                None => upright(v),
+            });
+        }
+        for v in vulnerable {
+            f(upright(v));
+        }
+    }
 }
 
 /// Attack and vulnerability volumes of the objects of one frame, and the hits between them
@@ -138,10 +107,12 @@ pub(super) struct Entry {
 /// volumes (over the frame's move) overlap, which never misses an overlap, unlike a
 /// bounding circle of `max(w, h) / 2`. In each direction, the **first attack volume** (in
 /// list order) that meets a vulnerability volume accepting one of its types gives one
-/// hit.
+/// hit, with the time and the point where it first touches such a vulnerability volume.
 ///
 /// Events come in a fixed order, whatever the broadphase: by pair `(i, j)`, `i < j` in
-/// registration order, then `i` hitting `j` before `j` hitting `i`.
+/// registration order, then `i` hitting `j` before `j` hitting `i`. They stay readable
+/// until the next `detect` ([`events`](Self::events)), or until taken
+/// ([`drain_events`](Self::drain_events)).
 ///
 /// ```
 /// use tileslide::{HitObject, HitTypes, HitWorld, Owner, TeamRule, Vec2, Volume};
@@ -156,8 +127,12 @@ pub(super) struct Entry {
 /// let hits = world.detect(&mut TeamRule);
 /// assert_eq!(hits.len(), 1);
 /// assert_eq!((hits[0].attacker, hits[0].victim), (hero, slime));
+/// assert_eq!((hits[0].attacker_owner, hits[0].victim_owner), (Owner(1), Owner(2)));
 /// assert_eq!(hits[0].hit_type, HitTypes::HIT);
 /// assert!(hits[0].accepted);
+/// // Nothing moved: they overlap from the start; the point is the body's point nearest
+/// // the fist's centre.
+/// assert_eq!((hits[0].t, hits[0].point), (0.0, Vec2::new(1.5, 1.0)));
 /// # Ok::<(), tileslide::VolumeError>(())
 /// ```
 #[derive(Clone, Debug, Default)]
@@ -169,6 +144,7 @@ pub struct HitWorld {
     finder: PairFinder,
     boxes: Vec<Aabb>,
     pairs: Vec<(u32, u32)>,
+    /// The last `detect`'s events, kept until the next one.
     pub(super) events: Vec<HitEvent>,
     /// Accepted hits per swing: `(swing, victim owner)`.
     swung: HashSet<(u64, Owner)>,
@@ -194,12 +170,11 @@ impl HitWorld {
     }
 
     /// Starts a frame: forgets the last frame's objects, and ends the swings nobody
-    /// registered in it.
+    /// registered in it. The last [`detect`](Self::detect)'s events stay readable.
     pub fn begin_frame(&mut self) {
         self.entries.clear();
         self.attack.clear();
         self.vulnerable.clear();
-        self.events.clear();
         std::mem::swap(&mut self.swings_before, &mut self.swings_now);
         self.swings_now.clear();
         let live = &self.swings_before;
@@ -213,27 +188,22 @@ impl HitWorld {
     ///
     /// What [`HitObject::check`] or [`Volume::check`] says of the object or of its first
     /// bad volume (a NaN, infinite or out-of-range position, start, size, centre or
-    /// corner); the world is unchanged. So every pair test computes within a few times
-    /// [`MAX_COORD`](crate::limits::MAX_COORD), where nothing overflows (a box at 3·10³⁸ once
-    /// missed a box it lay in, its centre overflowing to infinity).
+    /// corner, or an aim of zero); the world is unchanged. So every pair test computes
+    /// within a few times [`MAX_COORD`](crate::limits::MAX_COORD), where nothing overflows
+    /// (a box at 3·10³⁸ once missed a box it lay in, its centre overflowing to infinity).
     pub fn register(
         &mut self,
         object: HitObject,
         attack: &[Volume],
         vulnerable: &[Volume],
     ) -> Result<ObjectId, VolumeError> {
-        object.check()?;
+        #[cfg_attr(not(feature = "aim"), allow(unused_variables))]
+        let turn = object.checked_turn()?;
         for v in attack.iter().chain(vulnerable) {
             v.check()?;
         }
-        let id = ObjectId(self.entries.len() as u32);
-        let a0 = self.attack.len() as u32;
-        self.attack.extend_from_slice(attack);
-        let v0 = self.vulnerable.len() as u32;
-        self.vulnerable.extend_from_slice(vulnerable);
         let mut reach: Option<Aabb> = None;
-        for v in attack.iter().chain(vulnerable) {
-            let end = place(&object, v).aabb();
+        let mut add = |end: Aabb| {
             let start = Aabb {
                 min: end.min - object.motion,
                 max: end.max - object.motion,
@@ -246,12 +216,40 @@ impl HitWorld {
                 min: r.min.min(both.min),
                 max: r.max.max(both.max),
             }));
+        };
+        let o = &object;
+        let upright = |v: &Volume| Placed::new_aabb(&v.shape, o.position, o.size, o.facing);
+        // Without turning, one loop (the web package counts the bytes of each copy of `add`).
+        #[cfg(not(feature = "aim"))]
+        for v in attack.iter().chain(vulnerable) {
+            add(upright(v));
+        }
+        #[cfg(feature = "aim")]
+        {
+            for v in attack {
+                add(match turn {
+                    Some(turn) => {
+                        Placed::turned(&v.shape, o.position, o.size, o.facing, turn).aabb()
+                    }
+                    None => upright(v),
+                });
+            }
+            for v in vulnerable {
+                add(upright(v));
+            }
         }
         if let Some(swing) = object.swing {
             self.swings_now.insert(swing);
         }
+        let id = ObjectId(self.entries.len() as u32);
+        let a0 = self.attack.len() as u32;
+        self.attack.extend_from_slice(attack);
+        let v0 = self.vulnerable.len() as u32;
+        self.vulnerable.extend_from_slice(vulnerable);
         self.entries.push(Entry {
             object,
+            #[cfg(feature = "aim")]
+            turn,
             attack: (a0, self.attack.len() as u32),
             vulnerable: (v0, self.vulnerable.len() as u32),
             // An object without volumes gets a box that overlaps nothing (NaN compares
@@ -275,34 +273,52 @@ impl HitWorld {
     #[must_use]
     pub fn bounding_circle(&self, id: ObjectId) -> Option<Circle> {
         let e = self.entries.get(id.0 as usize)?;
-        let volumes = self.volumes_of(e);
-        let placed = volumes.clone().map(|v| place(&e.object, v));
+        let (attack, vulnerable) = self.volumes_of(e);
         let mut bounds: Option<Aabb> = None;
-        for p in placed.clone() {
+        each_placed(&e.object, e.turn(), attack, vulnerable, |p| {
             let b = p.aabb();
             bounds = Some(bounds.map_or(b, |r| Aabb {
                 min: r.min.min(b.min),
                 max: r.max.max(b.max),
             }));
-        }
+        });
         let center = (bounds?.min + bounds?.max) * 0.5;
-        let radius = placed.map(|p| p.reach_from(center)).fold(0.0f32, f32::max);
+        let mut radius = 0.0f32;
+        each_placed(&e.object, e.turn(), attack, vulnerable, |p| {
+            radius = radius.max(p.reach_from(center))
+        });
         // One part in a million more, so rounding in the distances never leaves a volume's
         // edge outside.
         Some(Circle::new(center, radius * (1.0 + 1e-6) + f32::EPSILON))
     }
 
-    fn volumes_of<'a>(&'a self, e: &Entry) -> impl Iterator<Item = &'a Volume> + Clone + 'a {
+    /// The attack and vulnerability volumes registered with `e`.
+    #[cfg_attr(feature = "aim", inline)]
+    pub(super) fn volumes_of(&self, e: &Entry) -> (&[Volume], &[Volume]) {
         let (a0, a1) = e.attack;
         let (v0, v1) = e.vulnerable;
-        self.attack[a0 as usize..a1 as usize]
-            .iter()
-            .chain(&self.vulnerable[v0 as usize..v1 as usize])
+        (
+            &self.attack[a0 as usize..a1 as usize],
+            &self.vulnerable[v0 as usize..v1 as usize],
+        )
     }
 
     /// Finds this frame's hits, asks `rule` whether each victim takes its hit, and returns
     /// the events (see the type's documentation for the order). An attack with a swing that
     /// already landed on a victim (accepted) does not hit it again until the swing ends.
+    ///
+    /// Each event says when and where the hit happened: `t`, the fraction of the frame's
+    /// move at which the attack volume first touched a vulnerability volume it hits, exact
+    /// for volumes that move (the time of impact along their relative move); and `point`,
+    /// where they touched then. Of the vulnerability volumes the attack volume meets, the
+    /// first it touches gives the event (on equal `t`, the first in list order). For
+    /// volumes that already overlap where the frame starts, `t` is 0 and `point` is a
+    /// point of the overlap: the middle of two upright rectangles' common rectangle; the
+    /// rectangle's point nearest a circle's centre; for two circles, the middle of the
+    /// stretch of the line between their centres that both cover; for a turned rectangle
+    /// or a capsule, the middle of the part the shapes' cores (the rectangle, the capsule's
+    /// segment, the circle's centre) share, or the middle of the stretch both cover between
+    /// their cores' nearest points.
     pub fn detect(&mut self, rule: &mut impl HitRule) -> &[HitEvent] {
         self.events.clear();
         self.boxes.clear();
@@ -319,8 +335,20 @@ impl HitWorld {
         &self.events
     }
 
+    /// The last [`detect`](Self::detect)'s events, readable until the next `detect` (a new
+    /// frame keeps them; [`drain_events`](Self::drain_events) takes them).
+    #[must_use]
+    pub fn events(&self) -> &[HitEvent] {
+        &self.events
+    }
+
+    /// Takes the last [`detect`](Self::detect)'s events, in order, leaving none.
+    pub fn drain_events(&mut self) -> std::vec::Drain<'_, HitEvent> {
+        self.events.drain(..)
+    }
+
     /// `a` attacking `v`: the first attack volume of `a` that meets a vulnerability volume
-    /// of `v` accepting one of its types.
+    /// of `v` accepting one of its types, at the first of those it touches.
     fn hit(&mut self, a: u32, v: u32, rule: &mut impl HitRule) {
         let (ea, ev) = (&self.entries[a as usize], &self.entries[v as usize]);
         if let Some(swing) = ea.object.swing
@@ -333,16 +361,23 @@ impl HitWorld {
         let attacks = &self.attack[ea.attack.0 as usize..ea.attack.1 as usize];
         let vulnerable = &self.vulnerable[ev.vulnerable.0 as usize..ev.vulnerable.1 as usize];
         let found = attacks.iter().find_map(|attack| {
-            let from = start_of(&ea.object, attack);
-            vulnerable.iter().find_map(|target| {
+            let from = ea.attack_volume(attack, ea.start());
+            vulnerable.iter().enumerate().find_map(|(k, target)| {
                 let dealt = attack.hit & target.hit;
-                (!dealt.is_empty() && from.meets(motion, &start_of(&ev.object, target)))
-                    .then_some(dealt)
+                (!dealt.is_empty() && from.meets(motion, &ev.vulnerable_volume(target, ev.start())))
+                    .then_some((attack, k, dealt))
             })
         });
-        let Some(hit_type) = found else {
+        let Some((attack, k, dealt)) = found else {
             return;
         };
+        let (hit_type, contact) = first_contact(
+            ea,
+            attack,
+            ev,
+            (&vulnerable[k], dealt),
+            &vulnerable[k + 1..],
+        );
         let accepted = rule.accept(&ea.object, &ev.object, hit_type);
         if accepted && let Some(swing) = ea.object.swing {
             self.swung.insert((swing, ev.object.owner));
@@ -350,23 +385,48 @@ impl HitWorld {
         self.events.push(HitEvent {
             attacker: ObjectId(a),
             victim: ObjectId(v),
+            attacker_owner: ea.object.owner,
+            victim_owner: ev.object.owner,
             hit_type,
             accepted,
+            t: contact.t,
+            point: contact.point,
         });
     }
 }
 
-/// Volume `v` of `object` where the frame ends.
-pub(super) fn place(object: &HitObject, v: &Volume) -> Placed {
-    Placed::new(&v.shape, object.position, object.size, object.facing)
-}
-
-/// Volume `v` of `object` where the frame starts.
-fn start_of(object: &HitObject, v: &Volume) -> Placed {
-    Placed::new(
-        &v.shape,
-        object.position - object.motion,
-        object.size,
-        object.facing,
-    )
+/// When and where `attack` of `ea` first touches a vulnerability volume of `ev`: `target`,
+/// the first it meets, dealing `dealt`, unless one of the `rest` that it meets and that
+/// accepts one of its types is touched earlier. With the types dealt. (Out of `hit`, which
+/// is built once per rule; placing the pair again costs less than carrying it out of the
+/// search.)
+fn first_contact(
+    ea: &Entry,
+    attack: &Volume,
+    ev: &Entry,
+    (target, dealt): (&Volume, HitTypes),
+    rest: &[Volume],
+) -> (HitTypes, Contact) {
+    let (ma, mv) = (ea.object.motion, ev.object.motion);
+    let from = ea.attack_volume(attack, ea.start());
+    let mut first = (
+        dealt,
+        from.contact(ma, &ev.vulnerable_volume(target, ev.start()), mv),
+    );
+    for target in rest {
+        if first.1.t == 0.0 {
+            // Nothing touches earlier.
+            break;
+        }
+        let dealt = attack.hit & target.hit;
+        let to = ev.vulnerable_volume(target, ev.start());
+        if dealt.is_empty() || !from.meets(ma - mv, &to) {
+            continue;
+        }
+        let contact = from.contact(ma, &to, mv);
+        if contact.t < first.1.t {
+            first = (dealt, contact);
+        }
+    }
+    first
 }
