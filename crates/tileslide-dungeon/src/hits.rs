@@ -2,7 +2,8 @@
 //! vulnerability volume and, while it swings, an attack volume in front of it; every
 //! fireball registers its circle as an attack volume moving along its step, so
 //! [`HitWorld`]'s exact swept test catches a target the fireball passes through between
-//! steps. The hit events become [`Event::Damage`].
+//! steps, and its time of impact says which target the fireball reached first. The hit
+//! events become [`Event::Damage`].
 
 use hecs::Entity;
 use tileslide::{HitObject, HitTypes, HitWorld, Owner, TeamRule, Vec2, Volume};
@@ -46,17 +47,9 @@ pub struct Blow {
 #[derive(Clone, Copy, Debug)]
 enum Registered {
     /// A fighter, swinging `damage` or not swinging (0).
-    Fighter {
-        entity: Entity,
-        position: Vec2,
-        damage: i32,
-    },
-    /// A fireball moving from `from`, dealing `damage`.
-    Fireball {
-        entity: Entity,
-        from: Vec2,
-        damage: i32,
-    },
+    Fighter { entity: Entity, damage: i32 },
+    /// A fireball, dealing `damage`.
+    Fireball { entity: Entity, damage: i32 },
 }
 
 /// The step's hit volumes and the [`HitWorld`] that tests them (kept between steps for
@@ -131,7 +124,6 @@ impl Hits {
             .register(object, attack.as_slice(), std::slice::from_ref(&body))?;
         self.registered.push(Registered::Fighter {
             entity: target.entity,
-            position: target.position,
             damage: blow.map_or(0, |b| b.damage),
         });
         Ok(())
@@ -157,32 +149,26 @@ impl Hits {
         };
         self.world
             .register(object, std::slice::from_ref(&self.fireball), &[])?;
-        self.registered.push(Registered::Fireball {
-            entity,
-            from,
-            damage,
-        });
+        self.registered
+            .push(Registered::Fireball { entity, damage });
         Ok(())
     }
 
     /// Tests the step's volumes (teams: heroes hit creatures and the other way round) and
-    /// turns the accepted hits into [`Event::Damage`]. A fireball hits one fighter: of
-    /// those its path meets, the one whose centre is nearest where it started.
+    /// turns the accepted hits into [`Event::Damage`]. A fireball hits one fighter: of those
+    /// its path meets, the first it reaches (the least time of impact along its step; on
+    /// equal times, the first registered).
     pub fn detect(&mut self, events: &mut Vec<Event>) {
+        // Per fireball (by its index in `registered`): the victim it reaches first, and when.
         let mut fireball_hits: Vec<(usize, Entity, f32)> = Vec::new();
-        for hit in self.world.detect(&mut TeamRule) {
+        self.world.detect(&mut TeamRule);
+        for hit in self.world.drain_events() {
             if !hit.accepted {
                 continue;
             }
             let (a, v) = (hit.attacker.0 as usize, hit.victim.0 as usize);
-            let (
-                Some(attacker),
-                Some(Registered::Fighter {
-                    entity: victim,
-                    position,
-                    ..
-                }),
-            ) = (self.registered.get(a), self.registered.get(v))
+            let (Some(attacker), Some(Registered::Fighter { entity: victim, .. })) =
+                (self.registered.get(a), self.registered.get(v))
             else {
                 continue;
             };
@@ -191,14 +177,11 @@ impl Hits {
                     target: *victim,
                     amount: damage,
                 }),
-                Registered::Fireball { from, .. } => {
-                    let d = position.distance(from);
-                    match fireball_hits.iter_mut().find(|h| h.0 == a) {
-                        Some(best) if d < best.2 => *best = (a, *victim, d),
-                        Some(_) => {}
-                        None => fireball_hits.push((a, *victim, d)),
-                    }
-                }
+                Registered::Fireball { .. } => match fireball_hits.iter_mut().find(|h| h.0 == a) {
+                    Some(first) if hit.t < first.2 => *first = (a, *victim, hit.t),
+                    Some(_) => {}
+                    None => fireball_hits.push((a, *victim, hit.t)),
+                },
             }
         }
         for (a, victim, _) in fireball_hits {
@@ -224,12 +207,16 @@ mod tests {
     use super::*;
 
     fn hero(world: &mut hecs::World, key: u64, x: f32) -> Target {
+        hero_at(world, key, Vec2::new(x, 0.0))
+    }
+
+    fn hero_at(world: &mut hecs::World, key: u64, position: Vec2) -> Target {
         Target {
             key,
             entity: world.spawn(()),
             team: Team::Heroes,
             kind: Kind::Hero,
-            position: Vec2::new(x, 0.0),
+            position,
         }
     }
 
@@ -253,11 +240,17 @@ mod tests {
 
     /// Heroes at `xs` on the x axis, a fireball from x = 2 to x = 8 in one step.
     fn fire_across(xs: &[f32]) -> Shot {
+        let at: Vec<_> = xs.iter().map(|&x| Vec2::new(x, 0.0)).collect();
+        fire_across_heroes_at(&at)
+    }
+
+    /// Heroes at `at`, a fireball from (2, 0) to (8, 0) in one step.
+    fn fire_across_heroes_at(at: &[Vec2]) -> Shot {
         let mut world = hecs::World::new();
         let mut hits = Hits::new(0.12).unwrap();
         let heroes: Vec<_> = (1..)
-            .zip(xs)
-            .map(|(k, &x)| hero(&mut world, k, x))
+            .zip(at)
+            .map(|(k, &p)| hero_at(&mut world, k, p))
             .collect();
         let ball = world.spawn(());
         hits.begin();
@@ -288,6 +281,17 @@ mod tests {
     fn a_fireball_hits_only_the_first_hero_on_its_path() {
         let shot = fire_across(&[6.0, 4.0]);
         assert_eq!(shot.dealt, vec![(shot.heroes[1], 6)]);
+    }
+
+    #[test]
+    fn a_fireball_hits_the_hero_it_reaches_first_not_the_nearest_centre() {
+        // Hero 0 stands 0.35 off the path at x = 4.5: the ball (reach 0.3 + 0.12) touches
+        // it when its centre is at 4.5 − √(0.42² − 0.35²) ≈ 4.27. Hero 1 stands on the path
+        // at x = 4.6: touched at 4.6 − 0.42 = 4.18, first, though its centre is farther
+        // from where the ball started (2.6 against 2.52).
+        let shot = fire_across_heroes_at(&[Vec2::new(4.5, 0.35), Vec2::new(4.6, 0.0)]);
+        assert_eq!(shot.dealt, vec![(shot.heroes[1], 6)]);
+        assert_eq!(shot.spent, vec![shot.ball]);
     }
 
     #[test]
