@@ -225,3 +225,30 @@ fn load_objects_reads_the_file_parse_objects_parses() {
     let from_file = replica::load_objects(dir.join(name)).unwrap();
     assert_eq!(from_file, load(&dir, name));
 }
+
+#[test]
+fn the_notes_table_names_every_kind_by_its_type_number() {
+    // docs/replica-island.md lists the kinds as `| type | kind |` cells, three pairs a row.
+    let note = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../docs/replica-island.md"
+    ))
+    .unwrap();
+    let mut listed: Vec<(u8, String)> = Vec::new();
+    for line in note.lines().filter(|l| l.starts_with("| ")) {
+        let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).collect();
+        for pair in cells.chunks(2) {
+            if let [number, name] = pair
+                && let Ok(number) = number.parse::<u8>()
+            {
+                listed.push((number, name.trim_matches('`').to_owned()));
+            }
+        }
+    }
+    listed.sort();
+    let kinds: Vec<(u8, String)> = ObjectKind::ALL
+        .iter()
+        .map(|k| (k.type_number(), k.name().to_owned()))
+        .collect();
+    assert_eq!(listed, kinds);
+}
