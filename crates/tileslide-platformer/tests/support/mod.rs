@@ -1,25 +1,18 @@
-//! Shared by the platformer's tests: where the Replica Island data is, and an independent
-//! check that a box is not inside solid.
+//! Shared by the platformer's tests: where the Replica Island data is (the core crate's
+//! test support, read in place), and an independent check that a box is not inside solid.
 #![allow(clippy::unwrap_used, dead_code)]
 
-use std::path::{Path, PathBuf};
+#[path = "../../../tileslide/tests/replica_support/mod.rs"]
+mod replica_support;
+
+use std::path::PathBuf;
 
 use tileslide::{Aabb, SegmentFlags, TileMap, Vec2};
 
 /// The Replica Island data beside the checkout, or `None` (with a note) when it is missing
 /// outside CI; in CI its absence fails the test.
 pub fn replica_dir() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/replica-island");
-    if dir.is_dir() {
-        return Some(dir);
-    }
-    assert!(
-        std::env::var_os("CI").is_none(),
-        "CI is set but the Replica Island data is missing at {}",
-        dir.display()
-    );
-    eprintln!("skipped: no Replica Island data at {}", dir.display());
-    None
+    replica_support::data_dir()
 }
 
 /// Whether a box at `center` overlaps a solid segment by more than a five-hundredth of a
