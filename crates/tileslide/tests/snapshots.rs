@@ -20,7 +20,8 @@ use serde::{Deserialize, Serialize};
 use tileslide::io::ascii;
 use tileslide::{
     Bodies, BodyDesc, BodyHandle, BodyShape, Cell, HitObject, HitTypes, HitWorld, MapEdits, Owner,
-    ResolveReport, Segment, SegmentFlags, TeamRule, TemporarySegment, TileMap, Vec2, Volume,
+    ResolveReport, Segment, SegmentFlags, SnapshotError, TeamRule, TemporarySegment, TileMap, Vec2,
+    Volume,
 };
 use tileslide_scenes::{
     CROWD_RADIUS, Fnv1a, SplitMix64, crowd_candidates, dungeon256, scene_crowd,
@@ -44,6 +45,8 @@ struct Game {
     /// constant move.
     crowd: Vec<(u64, BodyHandle, Vec2)>,
     next_id: u64,
+    /// Hits taken so far.
+    hits_taken: u64,
 }
 
 /// The state of a run.
@@ -118,6 +121,7 @@ impl Scene {
                 resolved: None,
                 crowd,
                 next_id,
+                hits_taken: 0,
             },
         }
     }
@@ -265,14 +269,16 @@ impl World {
             let attack: &[Volume] = if swings { &sword } else { &[] };
             self.hits.register(object, attack, &body).unwrap();
         }
-        self.hits.detect(&mut TeamRule).to_vec()
+        let hits = self.hits.detect(&mut TeamRule).to_vec();
+        self.game.hits_taken += hits.iter().filter(|h| h.accepted).count() as u64;
+        hits
     }
 
     /// The whole state after a step, as FNV-1a.
     fn hash(&self, report: &ResolveReport, hits: &[tileslide::HitEvent]) -> u64 {
         let mut h = Fnv1a::new();
         for (handle, b) in self.bodies.iter() {
-            h.write_bytes(&postcard::to_stdvec(&handle).unwrap());
+            h.write_bytes(&cbor(&handle));
             for v in [b.position(), b.proposed_move(), b.resolved_move()] {
                 h.write_f32(v.x);
                 h.write_f32(v.y);
@@ -281,11 +287,11 @@ impl World {
         for n in [report.moving, report.contact_count, report.cut_short] {
             h.write_u64(n as u64);
         }
-        h.write_bytes(&postcard::to_stdvec(hits).unwrap());
-        h.write_bytes(&postcard::to_stdvec(&self.map.edits()).unwrap());
+        h.write_bytes(&cbor(hits));
+        h.write_bytes(&cbor(&self.map.edits()));
         h.write_u64(self.map.active_segment_count() as u64);
-        h.write_bytes(&postcard::to_stdvec(&self.hits).unwrap());
-        h.write_bytes(&postcard::to_stdvec(&self.game).unwrap());
+        h.write_bytes(&cbor(&self.hits));
+        h.write_bytes(&cbor(&self.game));
         h.finish()
     }
 
@@ -308,6 +314,13 @@ impl World {
             game: saved.game,
         }
     }
+}
+
+/// `value` in CBOR.
+fn cbor<T: Serialize + ?Sized>(value: &T) -> Vec<u8> {
+    let mut bytes = Vec::new();
+    ciborium::into_writer(value, &mut bytes).unwrap();
+    bytes
 }
 
 /// The uninterrupted run: the hash after each step, and the map's edits before each.
@@ -363,19 +376,47 @@ fn a_run_restored_at_step_k_goes_on_to_the_end_bit_for_bit() {
     let scene = Scene::new();
     let mut world = scene.start();
     let mut hashes = Vec::new();
-    // At every twentieth step: the snapshot in postcard's bytes, and the world kept in memory
+    // At every twentieth step: the snapshot in CBOR, and the world kept in memory
     // (clones keep the resolver's memories, which catch up with the map's journal).
     let mut saved = Vec::new();
+    let mut swinging = 0;
     for s in 0..STEPS {
         if s % 20 == 0 {
-            let bytes = postcard::to_stdvec(&world.snapshot()).unwrap();
+            let bytes = cbor(&world.snapshot());
             saved.push((s, bytes, world.clone()));
         }
         hashes.push(world.step(&scene));
+        let memory = serde_json::to_value(&world.hits).unwrap();
+        swinging += usize::from(!memory["swung"].as_array().unwrap().is_empty());
     }
+    // The run exercises what it should: hits, and swings remembered over frames; bodies
+    // removed and slots reused; cells dug and built.
+    assert!(
+        world.game.hits_taken > 100,
+        "{} hits",
+        world.game.hits_taken
+    );
+    assert!(
+        swinging > STEPS as usize / 2,
+        "swing memory held at {swinging} steps"
+    );
+    let generations = serde_json::to_value(&world.bodies).unwrap()["slots"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|slot| slot["generation"].as_u64() > Some(0))
+        .count();
+    assert!(generations > 10, "{generations} slots reused or free");
+    let edited = world.map.edits().tiles().to_vec();
+    let dug = edited.iter().filter(|(_, t)| t.is_none()).count();
+    assert!(
+        dug >= 10 && edited.len() > dug,
+        "{} cells edited, {dug} dug",
+        edited.len()
+    );
     let end = world.map;
     for (k, bytes, kept) in saved {
-        let read: Snapshot = postcard::from_bytes(&bytes).unwrap();
+        let read: Snapshot = ciborium::from_reader(bytes.as_slice()).unwrap();
         let mut from_bytes = World::restored(end.clone(), read);
         // Every other one also from the world kept in memory, its map rolled back.
         let mut in_memory = (k % 40 == 20).then(|| {
@@ -390,5 +431,453 @@ fn a_run_restored_at_step_k_goes_on_to_the_end_bit_for_bit() {
                 assert_eq!(world.step(&scene), expected, "kept at {k}: step {s}");
             }
         }
+    }
+}
+
+// Bad data: truncated, inconsistent, NaN, out of range, of another map.
+
+const ROOM: &str = "\
+##########
+#........#
+#...##...#
+#........#
+##########";
+
+/// A small world with something in every part of its state: bodies (one a compound, one
+/// removed so its slot is free), proposed moves, swings remembered, a cell dug, a platform.
+fn small_world() -> World {
+    let mut map = ascii::parse(ROOM, "room.txt", 1.0).unwrap();
+    map.clear_tile(Cell::new(4, 2)).unwrap();
+    map.add_temporary(TemporarySegment {
+        segment: Segment::new(Vec2::new(6.0, 3.0), Vec2::new(8.0, 3.0)),
+        normal: Vec2::new(0.0, -1.0),
+        flags: SegmentFlags::ONE_WAY,
+        owner: Owner(9),
+        velocity: Vec2::new(0.5, 0.0),
+    })
+    .unwrap();
+    let mut bodies = Bodies::new();
+    let circle = BodyShape::circle(0.3).unwrap();
+    let cart = BodyShape::compound([
+        tileslide::Circle::new(Vec2::new(-0.3, 0.0), 0.2),
+        tileslide::Circle::new(Vec2::new(0.3, 0.0), 0.2),
+    ])
+    .unwrap();
+    let mut crowd = Vec::new();
+    for (id, (at, shape)) in [
+        (Vec2::new(1.5, 1.5), &circle),
+        (Vec2::new(3.25, 1.5), &circle),
+        (Vec2::new(6.5, 2.5), &cart),
+        (Vec2::new(8.5, 1.5), &circle),
+        (Vec2::new(7.0, 1.3), &circle),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let handle = bodies.add(BodyDesc::new(at, shape.clone())).unwrap();
+        crowd.push((id as u64, handle, Vec2::new(0.1, 0.05)));
+    }
+    let (_, removed, _) = crowd.remove(0);
+    bodies.remove(removed).unwrap();
+    let mut world = World {
+        map,
+        bodies,
+        hits: HitWorld::new(),
+        game: Game {
+            step: 0,
+            prepared: false,
+            resolved: None,
+            crowd,
+            next_id: 5,
+            hits_taken: 0,
+        },
+    };
+    world.detect_hits();
+    for &(_, handle, velocity) in &world.game.crowd {
+        world.bodies.propose(handle, velocity).unwrap();
+    }
+    world
+}
+
+/// `value` as JSON, changed by `edit`, read back as a `T`: the error's message.
+fn refused<T: for<'de> Deserialize<'de> + std::fmt::Debug>(
+    value: &impl Serialize,
+    edit: impl FnOnce(&mut serde_json::Value),
+) -> String {
+    let mut json = serde_json::to_value(value).unwrap();
+    edit(&mut json);
+    match serde_json::from_value::<T>(json) {
+        Ok(read) => panic!("read: {read:?}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// A change to a snapshot's JSON.
+type Edit = fn(&mut serde_json::Value);
+
+/// `message` names everything in `parts`.
+fn names(message: &str, parts: &[&str]) {
+    for part in parts {
+        assert!(message.contains(part), "{message:?} does not say {part:?}");
+    }
+}
+
+#[test]
+fn every_truncated_snapshot_is_refused_in_json_and_cbor() {
+    let world = small_world();
+    let snapshot = world.snapshot();
+    let json = serde_json::to_string(&snapshot).unwrap();
+    let bytes = cbor(&snapshot);
+    assert!(serde_json::from_str::<Snapshot>(&json).is_ok());
+    assert!(ciborium::from_reader::<Snapshot, _>(bytes.as_slice()).is_ok());
+    for n in 0..json.len() {
+        assert!(serde_json::from_str::<Snapshot>(&json[..n]).is_err(), "{n}");
+    }
+    for n in 0..bytes.len() {
+        let read = ciborium::from_reader::<Snapshot, _>(&bytes[..n]);
+        assert!(read.is_err(), "{n} of {} bytes", bytes.len());
+    }
+}
+
+#[test]
+fn nan_and_infinite_values_are_refused_naming_the_body() {
+    let world = small_world();
+    let bytes = cbor(&world.bodies);
+    // The body in slot 1 stands at x = 3.25, which CBOR writes once, as a half-precision
+    // float (0xf9, then 0x4280).
+    let found: Vec<usize> = (0..bytes.len() - 2)
+        .filter(|&at| bytes[at..at + 3] == [0xf9, 0x42, 0x80])
+        .collect();
+    assert_eq!(found.len(), 1, "{bytes:x?}");
+    // NaN, infinity and minus infinity as half-precision floats.
+    for bad in [[0x7e, 0x00], [0x7c, 0x00], [0xfc, 0x00]] {
+        let mut patched = bytes.clone();
+        patched[found[0] + 1..found[0] + 3].copy_from_slice(&bad);
+        let message = match ciborium::from_reader::<Bodies, _>(patched.as_slice()) {
+            Ok(read) => panic!("read: {read:?}"),
+            Err(e) => e.to_string(),
+        };
+        names(&message, &["slot 1", "position", "not finite"]);
+    }
+}
+
+#[test]
+fn values_beyond_the_limits_are_refused_with_what_is_wrong() {
+    let world = small_world();
+    let bodies = &world.bodies;
+    let body = |json: &mut serde_json::Value| json["slots"][2]["body"].take();
+    // Positions, moves and their end points beyond MAX_COORD.
+    let message = refused::<Bodies>(bodies, |json| {
+        json["slots"][1]["body"]["position"][0] = 1e30.into();
+    });
+    names(&message, &["slot 1", "position", "out of range"]);
+    let message = refused::<Bodies>(bodies, |json| {
+        json["slots"][3]["body"]["proposed"][1] = 2e7.into();
+    });
+    names(
+        &message,
+        &["slot 3", "proposed move's end point", "out of range"],
+    );
+    let message = refused::<Bodies>(bodies, |json| {
+        json["slots"][3]["body"]["resolved"][0] = (-3e7).into();
+    });
+    names(&message, &["slot 3", "resolved move's end point"]);
+    // Shapes: a radius beyond MAX_COORD, a negative one, no circles.
+    let message = refused::<Bodies>(bodies, |json| {
+        let mut cart = body(json);
+        cart["shape"][1]["radius"] = 1e9.into();
+        json["slots"][2]["body"] = cart;
+    });
+    names(&message, &["slot 2", "circle 1", "radius 1000000000"]);
+    let message = refused::<Bodies>(bodies, |json| {
+        json["slots"][1]["body"]["shape"][0]["radius"] = (-0.5).into();
+    });
+    names(&message, &["slot 1", "circle 0", "radius -0.5"]);
+    let message = refused::<Bodies>(bodies, |json| {
+        json["slots"][1]["body"]["shape"] = serde_json::json!([]);
+    });
+    names(&message, &["slot 1", "at least one circle"]);
+    // Settings out of their range.
+    let message = refused::<Bodies>(bodies, |json| json["config"]["gap"] = (-1.0).into());
+    names(&message, &["resolve settings", "gap = -1"]);
+    let message = refused::<Bodies>(bodies, |json| json["config"]["passes"] = 1000.into());
+    names(&message, &["resolve settings", "passes = 1000"]);
+    // A map larger than MAX_CELLS, empty, a cell outside it.
+    let edits = world.map.edits();
+    let message = refused::<MapEdits>(&edits, |json| {
+        json["width"] = 100_000.into();
+        json["height"] = 100_000.into();
+    });
+    names(&message, &["100000×100000", "too large"]);
+    let message = refused::<MapEdits>(&edits, |json| json["height"] = 0.into());
+    names(&message, &["10×0", "empty"]);
+    let message = refused::<MapEdits>(&edits, |json| {
+        json["tiles"][0][0]["col"] = 10.into();
+    });
+    names(
+        &message,
+        &["tile edit 0", "(10, 2)", "outside the 10×5 map"],
+    );
+    // Temporary segments: beyond MAX_COORD, of zero length, with a normal not normalised.
+    let message = refused::<MapEdits>(&edits, |json| {
+        json["temporaries"][0]["segment"]["b"][0] = 1e30.into();
+    });
+    names(&message, &["temporary segment 0", "MAX_COORD"]);
+    let message = refused::<MapEdits>(&edits, |json| {
+        let a = json["temporaries"][0]["segment"]["a"].clone();
+        json["temporaries"][0]["segment"]["b"] = a;
+    });
+    names(&message, &["temporary segment 0", "zero length"]);
+    let message = refused::<MapEdits>(&edits, |json| {
+        json["temporaries"][0]["normal"] = serde_json::json!([0.0, -2.0]);
+    });
+    names(
+        &message,
+        &["temporary segment 0", "(0, -2)", "not of unit length"],
+    );
+}
+
+#[test]
+fn slots_and_free_lists_no_calls_could_leave_are_refused() {
+    let world = small_world();
+    let bodies = &world.bodies;
+    // As saved: slot 0 free (generation 1), slots 1 to 4 hold bodies.
+    let json = serde_json::to_value(bodies).unwrap();
+    assert_eq!(json["free"], serde_json::json!([0]));
+    assert_eq!(json["slots"][0]["generation"], 1);
+    let cases: [(Edit, &[&str]); 6] = [
+        (
+            |json| json["slots"][0]["generation"] = 0.into(),
+            &["slot 0", "empty at generation 0"],
+        ),
+        (
+            |json| json["free"] = serde_json::json!([0, 2]),
+            &["entry 1", "slot 2", "holding a body"],
+        ),
+        (
+            |json| json["free"] = serde_json::json!([0, 0]),
+            &["entry 1", "slot 0", "listed before"],
+        ),
+        (
+            |json| json["free"] = serde_json::json!([0, 7]),
+            &["entry 1", "slot 7", "past the last slot"],
+        ),
+        (
+            |json| json["slots"][0]["generation"] = u32::MAX.into(),
+            &["entry 0", "slot 0", "retired"],
+        ),
+        (
+            |json| json["free"] = serde_json::json!([]),
+            &["slot 0", "not in the free list"],
+        ),
+    ];
+    for (edit, parts) in cases {
+        names(&refused::<Bodies>(bodies, edit), parts);
+    }
+    // A retired slot (its generation spent) is empty and in no free list.
+    let mut retired = serde_json::to_value(bodies).unwrap();
+    retired["slots"][0]["generation"] = u32::MAX.into();
+    retired["free"] = serde_json::json!([]);
+    let read: Bodies = serde_json::from_value(retired).unwrap();
+    assert_eq!(read.len(), 4);
+    // The swing memory's lists are sorted and hold each entry once.
+    let hits = &world.hits;
+    let memory = serde_json::to_value(hits).unwrap();
+    assert!(memory["swung"].as_array().unwrap().len() >= 2, "{memory}");
+    let message = refused::<HitWorld>(hits, |json| {
+        json["swung"].as_array_mut().unwrap().reverse();
+    });
+    names(
+        &message,
+        &["swing hits", "out of order or repeated at entry 1"],
+    );
+    let message = refused::<HitWorld>(hits, |json| {
+        let first = json["swings"][0].clone();
+        json["swings"].as_array_mut().unwrap().insert(0, first);
+    });
+    names(&message, &["swings", "entry 1"]);
+    // A missing field is named by serde.
+    let message = refused::<Bodies>(bodies, |json| {
+        json.as_object_mut().unwrap().remove("free");
+    });
+    names(&message, &["missing field `free`"]);
+}
+
+#[test]
+fn handles_of_other_generations_are_stale_in_a_restored_set() {
+    let world = small_world();
+    let json = serde_json::to_string(&world.bodies).unwrap();
+    let bodies: Bodies = serde_json::from_str(&json).unwrap();
+    let (_, handle, _) = world.game.crowd[0];
+    assert!(bodies.contains(handle));
+    // The game's own saved handle, with a generation the slot never had or no longer has.
+    for generation in [1, u32::MAX] {
+        let mut saved = serde_json::to_value(handle).unwrap();
+        saved["generation"] = generation.into();
+        let stale: BodyHandle = serde_json::from_value(saved).unwrap();
+        let mut bodies: Bodies = serde_json::from_str(&json).unwrap();
+        assert_eq!(
+            bodies.get(stale).unwrap_err(),
+            tileslide::BodyError::StaleHandle(stale)
+        );
+        assert!(bodies.propose(stale, Vec2::X).is_err() && bodies.remove(stale).is_err());
+        assert!(bodies.contains(handle), "the body is untouched");
+    }
+    // The freed slot is taken by the next body, at its next generation, as it would have
+    // been: slot 0, generation 1.
+    let mut bodies: Bodies = serde_json::from_str(&json).unwrap();
+    let added = bodies
+        .add(BodyDesc::new(
+            Vec2::new(1.5, 3.5),
+            BodyShape::circle(0.3).unwrap(),
+        ))
+        .unwrap();
+    let saved = serde_json::to_value(added).unwrap();
+    assert_eq!(saved, serde_json::json!({"index": 0, "generation": 1}));
+}
+
+#[test]
+fn edits_of_another_map_or_with_unknown_tiles_are_refused_and_change_nothing() {
+    let world = small_world();
+    let edits = world.map.edits();
+    let level = || ascii::parse(ROOM, "room.txt", 1.0).unwrap();
+    let mut map = level();
+    map.set_tile(Cell::new(1, 3), Some(ascii::SOLID)).unwrap();
+    let before = map.edits();
+    let revision = map.revision();
+    // Another level of the same size.
+    let mut other = ascii::parse(&ROOM.replace("##...", "#...."), "other.txt", 1.0).unwrap();
+    let e = other.restore_edits(&edits).unwrap_err();
+    assert!(matches!(e, SnapshotError::OtherBase { .. }), "{e}");
+    names(&e.to_string(), &["another map", "checksum"]);
+    // Another size.
+    let mut wide = ascii::parse(&ROOM.replace("#\n", "##\n"), "wide.txt", 1.0).unwrap();
+    let e = wide.restore_edits(&edits).unwrap_err();
+    names(&e.to_string(), &["10×5 map", "this map is 11×5"]);
+    // A tile the set lacks, read from a saved file.
+    let mut json = serde_json::to_value(&edits).unwrap();
+    json["tiles"]
+        .as_array_mut()
+        .unwrap()
+        .push(serde_json::json!([{"col": 9, "row": 4}, 99]));
+    let unknown: MapEdits = serde_json::from_value(json).unwrap();
+    let e = map.restore_edits(&unknown).unwrap_err();
+    assert_eq!(
+        e,
+        SnapshotError::UnknownTile {
+            cell: Cell::new(9, 4),
+            id: tileslide::TileId(99)
+        }
+    );
+    // Refused, the map is as it was, revision and all.
+    assert_eq!(map.edits(), before);
+    assert!(map.revision() == revision);
+    // The right edits on the right level: restored.
+    map.restore_edits(&edits).unwrap();
+    assert_eq!(map.edits(), edits);
+    assert_eq!(map.tile(Cell::new(1, 3)), None);
+    assert_eq!(map.tile(Cell::new(4, 2)), None);
+    assert_eq!(map.temporaries(), world.map.temporaries());
+}
+
+proptest::proptest! {
+    /// Bytes of a CBOR snapshot changed at random are read or refused, never a panic; what
+    /// is read is a state the calls could have left: a set whose handles, free slots and
+    /// steps work, edits that restore onto the level or are refused leaving it as it was, a
+    /// world that detects.
+    #[test]
+    fn mutated_snapshots_are_read_or_refused_and_what_is_read_works(
+        changes in proptest::collection::vec((0.0f64..1.0, proptest::num::u8::ANY), 0..3),
+        numbers in proptest::collection::vec((0.0f64..1.0, 0usize..NUMBERS.len()), 0..4),
+    ) {
+        // Numbers of the snapshot replaced (generations, free slots, coordinates, cells,
+        // tiles, swings), then bytes of its CBOR.
+        let world = small_world();
+        let mut json = serde_json::to_value(world.snapshot()).unwrap();
+        let count = number_count(&json);
+        for &(at, k) in &numbers {
+            let at = ((count as f64 * at) as usize).min(count - 1);
+            replace_number(&mut json, &mut { at }, &NUMBERS[k]);
+        }
+        let mut bytes = cbor(&json);
+        for &(at, byte) in &changes {
+            let at = ((bytes.len() as f64 * at) as usize).min(bytes.len() - 1);
+            bytes[at] = byte;
+        }
+        let Ok(read) = ciborium::from_reader::<Snapshot, _>(bytes.as_slice()) else {
+            return Ok(());
+        };
+        let Snapshot { map, mut bodies, mut hits, .. } = read;
+        // The set: as many bodies as it says, every handle it lists valid, new bodies into
+        // valid slots, and a step.
+        let handles: Vec<BodyHandle> = bodies.iter().map(|(h, _)| h).collect();
+        proptest::prop_assert_eq!(handles.len(), bodies.len());
+        let mut level = ascii::parse(ROOM, "room.txt", 1.0).unwrap();
+        for k in 0..3 {
+            let at = Vec2::new(1.5 + k as f32, 3.5);
+            let added = bodies.add(BodyDesc::new(at, BodyShape::circle(0.2).unwrap())).unwrap();
+            proptest::prop_assert!(bodies.contains(added) && !handles.contains(&added));
+        }
+        for &h in &handles {
+            bodies.propose(h, Vec2::new(0.3, -0.2)).unwrap();
+        }
+        bodies.step(&level);
+        for h in handles {
+            bodies.remove(h).unwrap();
+        }
+        proptest::prop_assert_eq!(bodies.len(), 3);
+        // The edits: restored, or refused with the level as it was.
+        match level.restore_edits(&map) {
+            Ok(()) => proptest::prop_assert_eq!(level.edits(), map),
+            Err(_) => proptest::prop_assert_eq!(level.edits(), ascii::parse(ROOM, "room.txt", 1.0).unwrap().edits()),
+        }
+        // The hit world: a frame.
+        hits.begin_frame();
+        let body = [Volume::rect(Vec2::ONE, Vec2::ONE, HitTypes::ANY).unwrap()];
+        hits.register(HitObject::new(Owner(1), Vec2::ONE, Vec2::ONE), &body, &body).unwrap();
+        hits.register(HitObject::new(Owner(2), Vec2::ONE, Vec2::ONE), &body, &body).unwrap();
+        let events = hits.detect(&mut TeamRule);
+        proptest::prop_assert!(events.len() == 2 && events.iter().all(|e| !e.accepted), "{events:?}");
+    }
+}
+
+/// What numbers of a snapshot are replaced with: edges of every range it checks.
+const NUMBERS: [f64; 10] = [0.0, 1.0, 2.0, 3.0, 9.0, -1.0, 0.5, 4294967295.0, 1e30, -2e7];
+
+/// How many numbers `json` holds.
+fn number_count(json: &serde_json::Value) -> usize {
+    match json {
+        serde_json::Value::Number(_) => 1,
+        serde_json::Value::Array(items) => items.iter().map(number_count).sum(),
+        serde_json::Value::Object(fields) => fields.values().map(number_count).sum(),
+        _ => 0,
+    }
+}
+
+/// Replaces the number at position `at` (counted as [`number_count`] counts) with `value`,
+/// an integer where it is one.
+fn replace_number(json: &mut serde_json::Value, at: &mut usize, value: &f64) {
+    match json {
+        serde_json::Value::Number(n) => {
+            if *at == 0 {
+                *json = match (n.is_f64(), *value) {
+                    (false, v) if v >= 0.0 && v.fract() == 0.0 => (v as u64).into(),
+                    (false, v) if v.fract() == 0.0 && v > -1e9 => (v as i64).into(),
+                    (_, v) => v.into(),
+                };
+            }
+            *at = at.wrapping_sub(1);
+        }
+        serde_json::Value::Array(items) => {
+            for item in items {
+                replace_number(item, at, value);
+            }
+        }
+        serde_json::Value::Object(fields) => {
+            for field in fields.values_mut() {
+                replace_number(field, at, value);
+            }
+        }
+        _ => {}
     }
 }
