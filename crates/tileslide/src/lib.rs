@@ -47,8 +47,8 @@
 //!   shapes, configurations, filters, hits, contacts, reports, handles and ids (ids and
 //!   flags as their numbers). A [`BodyShape`] is read through [`BodyShape::compound`], so a
 //!   saved shape is checked as a built one is; other values are checked where they enter a
-//!   system, as built ones are. Also snapshots: [`Bodies`], a [`HitWorld`]'s memory and
-//!   [`MapEdits`], saved at a step and restored to go on bit for bit as the run that was
+//!   system, as built ones are. Also snapshots: [`Bodies`], a [`HitWorld`]'s memory, a
+//!   [`Character`] and [`MapEdits`], saved at a step and restored to go on bit for bit as the run that was
 //!   never interrupted (rollback netcode, replays), and checked as they are read.
 //!
 //! ## Quick start

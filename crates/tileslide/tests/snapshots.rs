@@ -7,9 +7,10 @@
 //! generations moving on), a moving platform submitted as a temporary segment most steps,
 //! and every body registered with hit volumes, a third of them swinging an attack that lasts
 //! six frames. Snapshots are taken between steps, between proposing the moves and
-//! resolving them, and between resolving and moving. After every step the whole state is hashed: every body's position and moves
-//! and handle, the resolve's report, the hits, the map's edits, the swing memory and the
-//! game's own state.
+//! resolving them, and between resolving and moving. After every step the whole state is
+//! hashed: every body's position and moves and handle, the resolve's report, the hits, the
+//! map's edits, the swing memory and the game's own state. A platformer character, run
+//! through a scripted level, is restored the same way.
 //!
 //! These run in the debug build with every `cargo test`; the release build is checked with
 //! `cargo test --release -p tileslide --features serde --test snapshots`.
@@ -880,4 +881,174 @@ fn replace_number(json: &mut serde_json::Value, at: &mut usize, value: &f64) {
         }
         _ => {}
     }
+}
+
+// The character.
+
+/// A platformer level (y down): a floor with one-way platforms, a ramp up a step, and a pit a
+/// platform glides across.
+const LEVEL: &str = "\
+##############################
+#............................#
+#............................#
+#............................#
+#............................#
+#............................#
+#............................#
+#............................#
+#............................#
+#...====..../##.........==...#
+#################......#######
+##############################";
+
+/// The character's game: its velocity and the step, saved beside it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+struct Runner {
+    step: u32,
+    velocity: Vec2,
+}
+
+impl Runner {
+    /// One step: the platform moves, then the character runs (turning every 90 steps),
+    /// jumps every 40th step when on the ground, drops through one-way platforms from the
+    /// 100th step on, and falls. The hash of its state and contacts after.
+    fn step(&mut self, map: &mut TileMap, hero: &mut tileslide::Character) -> u64 {
+        let s = self.step;
+        let dt = 1.0 / 30.0;
+        let phase = (s % 120) as f32 / 120.0 * std::f32::consts::TAU;
+        let at = Vec2::new(20.0 + 2.0 * phase.sin(), 10.0);
+        map.clear_temporaries();
+        map.add_temporary(TemporarySegment {
+            segment: Segment::new(at - Vec2::X, at + Vec2::X),
+            normal: Vec2::new(0.0, -1.0),
+            flags: SegmentFlags::SOLID,
+            owner: Owner(7),
+            velocity: Vec2::new(2.0 * phase.cos() * std::f32::consts::TAU / 4.0, 0.0),
+        })
+        .unwrap();
+        let run = if (s / 90).is_multiple_of(2) {
+            6.0
+        } else {
+            -6.0
+        };
+        self.velocity.x = run;
+        if s.is_multiple_of(40) && hero.ground().is_some() {
+            self.velocity.y = -9.0;
+        }
+        self.velocity.y += 25.0 * dt;
+        let options = tileslide::MoveOptions {
+            drop_through: s >= 100 && s.is_multiple_of(7),
+        };
+        let contacts = hero
+            .move_and_slide(map, &mut self.velocity, dt, options)
+            .unwrap();
+        self.step += 1;
+        let mut h = Fnv1a::new();
+        h.write_bytes(&cbor(&*hero));
+        h.write_bytes(&cbor(&contacts));
+        h.write_bytes(&cbor(self));
+        h.write_bytes(&cbor(&map.edits()));
+        h.finish()
+    }
+}
+
+#[test]
+fn a_character_restored_at_every_step_moves_on_bit_for_bit() {
+    let level = ascii::parse(LEVEL, "level.txt", 1.0).unwrap();
+    let box_shape = tileslide::CharacterShape::rect(Vec2::new(0.3, 0.45)).unwrap();
+    let ball = tileslide::CharacterShape::circle(0.45).unwrap();
+    let mut corners = Vec::new();
+    for shape in [box_shape, ball] {
+        let start = || {
+            let config = tileslide::ControllerConfig::default();
+            let at = Vec2::new(2.5, 9.5);
+            let hero = tileslide::Character::new(shape, at, Vec2::NEG_Y, config).unwrap();
+            let runner = Runner {
+                step: 0,
+                velocity: Vec2::ZERO,
+            };
+            (hero, runner)
+        };
+        let (mut hero, mut runner) = start();
+        let mut map = level.clone();
+        let mut hashes = Vec::new();
+        let (mut riding, mut on_corner) = (0, 0);
+        for _ in 0..STEPS {
+            hashes.push(runner.step(&mut map, &mut hero));
+            let source = hero.ground().map(|g| g.source);
+            riding += usize::from(matches!(
+                source,
+                Some(tileslide::SegmentSource::Temporary { .. })
+            ));
+            let saved = serde_json::to_value(&hero).unwrap();
+            on_corner += usize::from(saved["ground_corner"] == true);
+        }
+        assert!(riding > 5, "{shape:?} rode {riding} steps");
+        // Restored from JSON before every step, onto the level as loaded.
+        let (mut hero, mut runner) = start();
+        let mut map = level.clone();
+        for (s, &expected) in hashes.iter().enumerate() {
+            let json = serde_json::to_string(&(&hero, &runner, map.edits())).unwrap();
+            let (read, again, edits): (tileslide::Character, Runner, MapEdits) =
+                serde_json::from_str(&json).unwrap();
+            (hero, runner, map) = (read, again, level.clone());
+            map.restore_edits(&edits).unwrap();
+            assert_eq!(
+                runner.step(&mut map, &mut hero),
+                expected,
+                "{shape:?}: step {s}"
+            );
+        }
+        corners.push(on_corner);
+    }
+    // The ball stood on rounded corners (at ledges), so that memory was restored too.
+    assert!(corners[0] == 0 && corners[1] > 5, "{corners:?}");
+}
+
+#[test]
+fn a_character_that_no_moves_could_leave_is_refused() {
+    let mut map = ascii::parse(LEVEL, "level.txt", 1.0).unwrap();
+    let shape = tileslide::CharacterShape::circle(0.4).unwrap();
+    let config = tileslide::ControllerConfig::default();
+    let mut hero = tileslide::Character::new(shape, Vec2::new(2.5, 9.4), Vec2::NEG_Y, config);
+    let hero = hero.as_mut().unwrap();
+    hero.move_by(&map, Vec2::new(0.0, 0.5), Default::default())
+        .unwrap();
+    assert!(hero.ground().is_some());
+    map.clear_temporaries();
+    let message =
+        refused::<tileslide::Character>(&*hero, |json| json["up"] = serde_json::json!([0.0, -2.0]));
+    names(&message, &["up", "(0, -2)", "unit length"]);
+    let message =
+        refused::<tileslide::Character>(&*hero, |json| json["up"] = serde_json::json!([0.0, 0.0]));
+    names(&message, &["the character", "up"]);
+    let message = refused::<tileslide::Character>(&*hero, |json| json["position"][0] = 1e30.into());
+    names(&message, &["position", "beyond the coordinate range"]);
+    let message = refused::<tileslide::Character>(&*hero, |json| {
+        json["ground"]["normal"] = serde_json::json!([3.0, 0.0]);
+    });
+    names(&message, &["ground normal", "(3, 0)"]);
+    let message = refused::<tileslide::Character>(&*hero, |json| {
+        json["ground"] = serde_json::Value::Null;
+        json["riding"] =
+            serde_json::json!({"owner": 7, "middle": [1.0, 2.0], "normal": [0.0, -1.0]});
+    });
+    names(&message, &["platform", "on the ground"]);
+    let message = refused::<tileslide::Character>(&*hero, |json| {
+        json["config"]["max_slope_degrees"] = 95.0.into();
+    });
+    names(&message, &["max_slope_degrees"]);
+    // As saved, it reads back and writes the same, its up direction bit for bit.
+    let json = serde_json::to_string(&*hero).unwrap();
+    let read: tileslide::Character = serde_json::from_str(&json).unwrap();
+    assert_eq!(serde_json::to_string(&read).unwrap(), json);
+    let tilted =
+        tileslide::Character::new(shape, Vec2::new(2.5, 5.0), Vec2::new(1.0, -3.0), config);
+    let tilted = tilted.unwrap();
+    let json = serde_json::to_string(&tilted).unwrap();
+    let read: tileslide::Character = serde_json::from_str(&json).unwrap();
+    assert_eq!(
+        read.up().to_array().map(f32::to_bits),
+        tilted.up().to_array().map(f32::to_bits)
+    );
 }

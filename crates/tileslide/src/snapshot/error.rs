@@ -3,6 +3,7 @@
 use thiserror::Error;
 
 use crate::bodies::BodyError;
+use crate::controller::ControllerError;
 use crate::tiles::{Cell, MapError, TemporaryError, TileId};
 
 /// Why saved state (a [`Bodies`](crate::Bodies) set, a [`HitWorld`](crate::HitWorld)'s
@@ -60,6 +61,23 @@ pub enum SnapshotError {
     LostSlot {
         /// The slot.
         slot: u32,
+    },
+    /// The character's position, shape, up direction or settings, refused as
+    /// [`Character::new`](crate::Character::new) refuses them.
+    #[error("the character: {0}")]
+    Character(ControllerError),
+    /// A vector of the character's state (its up direction, its ground's normal, the
+    /// platform it rides) that no move could leave it with.
+    #[error("the character's {what} ({x}, {y}) must be {must}")]
+    CharacterValue {
+        /// Which vector.
+        what: &'static str,
+        /// Its x.
+        x: f32,
+        /// Its y.
+        y: f32,
+        /// What it must be.
+        must: &'static str,
     },
     /// A list that is kept sorted is out of order or repeats an entry.
     #[error("the {what} are out of order or repeated at entry {index}")]

@@ -14,6 +14,8 @@
 //!   resolved) and the free list, so later handles and steps are as they would have been.
 //! - [`HitWorld`](crate::HitWorld), with the `serde` feature: its broadphase and "hit once
 //!   per swing" memory.
+//! - [`Character`](crate::Character), with the `serde` feature: its position, shape, up
+//!   direction and settings, its ground and the platform it rides.
 //!
 //! What only makes a step cheaper (the resolver's candidate pairs, kept walls and settled
 //! bodies, the map revision they were kept for) changes no result and is not saved: the
@@ -27,6 +29,8 @@ mod map_edits;
 
 #[cfg(feature = "serde")]
 mod bodies;
+#[cfg(feature = "serde")]
+mod character;
 #[cfg(feature = "serde")]
 mod hit_world;
 
