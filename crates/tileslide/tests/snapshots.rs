@@ -770,6 +770,20 @@ fn edits_of_another_map_or_with_unknown_tiles_are_refused_and_change_nothing() {
             id: tileslide::TileId(99)
         }
     );
+    // An edit that is none: the cell as the map was built.
+    let mut json = serde_json::to_value(&edits).unwrap();
+    json["tiles"]
+        .as_array_mut()
+        .unwrap()
+        .push(serde_json::json!([{"col": 9, "row": 4}, 1]));
+    let no_change: MapEdits = serde_json::from_value(json).unwrap();
+    let e = map.restore_edits(&no_change).unwrap_err();
+    assert_eq!(
+        e,
+        SnapshotError::NoChange {
+            cell: Cell::new(9, 4)
+        }
+    );
     // Refused, the map is as it was, revision and all.
     assert_eq!(map.edits(), before);
     assert!(map.revision() == revision);

@@ -147,6 +147,13 @@ pub enum SnapshotError {
         /// This map's.
         map: u32,
     },
+    /// A tile edit that puts the tile the cell held when the map was built: the edits list
+    /// only cells that differ from it.
+    #[error("the edit of cell {cell} puts the tile the map was built with there, which is no edit")]
+    NoChange {
+        /// The cell.
+        cell: Cell,
+    },
     /// A tile edit with a tile the map's tile set lacks.
     #[error("the edit of cell {cell} puts tile {id}, which is not in the map's tile set")]
     UnknownTile {

@@ -95,8 +95,9 @@ impl TileMap {
     ///
     /// # Errors
     /// [`SnapshotError::OtherMapSize`] or [`SnapshotError::OtherBase`] for edits of another
-    /// map, [`SnapshotError::UnknownTile`] for a tile the tile set lacks: the map is then
-    /// unchanged. [`SnapshotError::Map`] with [`MapError::TooManySegments`] if the map
+    /// map, [`SnapshotError::UnknownTile`] for a tile the tile set lacks,
+    /// [`SnapshotError::NoChange`] for an edit that puts the tile the map was built with:
+    /// the map is then unchanged. [`SnapshotError::Map`] with [`MapError::TooManySegments`] if the map
     /// cannot hold the segments (about 2³² of them): the edits made are then undone.
     pub fn restore_edits(&mut self, edits: &MapEdits) -> Result<(), SnapshotError> {
         let (map_width, map_height) = (self.width(), self.height());
@@ -120,6 +121,9 @@ impl TileMap {
                 && self.tile_set().shape(id).is_none()
             {
                 return Err(SnapshotError::UnknownTile { cell, id });
+            }
+            if id == self.base_tile(cell) {
+                return Err(SnapshotError::NoChange { cell });
             }
         }
         // Every cell that differs from the base now or in the edits: the union of two
