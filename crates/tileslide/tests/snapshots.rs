@@ -111,9 +111,16 @@ impl Scene {
                 (id, bodies.add(desc).unwrap(), b.velocity)
             })
             .collect();
+        World::new(self.level.clone(), bodies, crowd)
+    }
+}
+
+impl World {
+    /// The run at step 0 with `bodies`, the game driving `crowd` (ids from 0 up).
+    fn new(map: TileMap, bodies: Bodies, crowd: Vec<(u64, BodyHandle, Vec2)>) -> Self {
         let next_id = crowd.len() as u64;
         World {
-            map: self.level.clone(),
+            map,
             bodies,
             hits: HitWorld::new(),
             game: Game {
@@ -126,9 +133,7 @@ impl Scene {
             },
         }
     }
-}
 
-impl World {
     /// One step of the game (edits, bodies, platform, moves, resolve, hits); the hash of
     /// the whole state after it.
     fn step(&mut self, scene: &Scene) -> u64 {
@@ -441,7 +446,7 @@ const ROOM: &str = "\
 ##########
 #........#
 #...##...#
-#........#
+#..#.....#
 ##########";
 
 /// A small world with something in every part of its state: bodies (one a compound, one
@@ -480,19 +485,8 @@ fn small_world() -> World {
     }
     let (_, removed, _) = crowd.remove(0);
     bodies.remove(removed).unwrap();
-    let mut world = World {
-        map,
-        bodies,
-        hits: HitWorld::new(),
-        game: Game {
-            step: 0,
-            prepared: false,
-            resolved: None,
-            crowd,
-            next_id: 5,
-            hits_taken: 0,
-        },
-    };
+    let mut world = World::new(map, bodies, crowd);
+    world.game.next_id = 5;
     world.detect_hits();
     for &(_, handle, velocity) in &world.game.crowd {
         world.bodies.propose(handle, velocity).unwrap();
@@ -755,35 +749,20 @@ fn edits_of_another_map_or_with_unknown_tiles_are_refused_and_change_nothing() {
     let mut wide = ascii::parse(&ROOM.replace("#\n", "##\n"), "wide.txt", 1.0).unwrap();
     let e = wide.restore_edits(&edits).unwrap_err();
     names(&e.to_string(), &["10×5 map", "this map is 11×5"]);
-    // A tile the set lacks, read from a saved file.
-    let mut json = serde_json::to_value(&edits).unwrap();
-    json["tiles"]
-        .as_array_mut()
-        .unwrap()
-        .push(serde_json::json!([{"col": 9, "row": 4}, 99]));
-    let unknown: MapEdits = serde_json::from_value(json).unwrap();
-    let e = map.restore_edits(&unknown).unwrap_err();
-    assert_eq!(
-        e,
-        SnapshotError::UnknownTile {
-            cell: Cell::new(9, 4),
-            id: tileslide::TileId(99)
-        }
-    );
-    // An edit that is none: the cell as the map was built.
-    let mut json = serde_json::to_value(&edits).unwrap();
-    json["tiles"]
-        .as_array_mut()
-        .unwrap()
-        .push(serde_json::json!([{"col": 9, "row": 4}, 1]));
-    let no_change: MapEdits = serde_json::from_value(json).unwrap();
-    let e = map.restore_edits(&no_change).unwrap_err();
-    assert_eq!(
-        e,
-        SnapshotError::NoChange {
-            cell: Cell::new(9, 4)
-        }
-    );
+    // The edits read from a file with one more cell, at tile `tile`.
+    let with_cell = |tile: u32| -> MapEdits {
+        let mut json = serde_json::to_value(&edits).unwrap();
+        let cell = serde_json::json!([{"col": 9, "row": 4}, tile]);
+        json["tiles"].as_array_mut().unwrap().push(cell);
+        serde_json::from_value(json).unwrap()
+    };
+    // A tile the set lacks; an edit that is none (the cell as the map was built).
+    let cell = Cell::new(9, 4);
+    let id = tileslide::TileId(99);
+    let e = map.restore_edits(&with_cell(99)).unwrap_err();
+    assert_eq!(e, SnapshotError::UnknownTile { cell, id });
+    let e = map.restore_edits(&with_cell(1)).unwrap_err();
+    assert_eq!(e, SnapshotError::NoChange { cell });
     // Refused, the map is as it was, revision and all.
     assert_eq!(map.edits(), before);
     assert!(map.revision() == revision);

@@ -8,11 +8,10 @@
 //! Neither is anything a resolve only reports on (a trace).
 
 use glam::Vec2;
-use serde::de::Error as _;
 use serde::ser::SerializeSeq;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-use super::SnapshotError;
+use super::{SnapshotError, read_checked};
 use crate::bodies::set::Slot;
 use crate::bodies::{Bodies, Body, BodyError, BodyFilter, BodyShape, ResolveConfig};
 use crate::geometry::{Circle, in_range};
@@ -90,9 +89,10 @@ impl Serialize for SlotsOut<'_> {
     }
 }
 
-/// Written with the `serde` feature: everything that decides the set's later steps (see
-/// the [`snapshot`](crate::MapEdits) contract in the crate docs). The resolver's memories are
-/// not written; the first resolve after reading the set gathers them again.
+/// Written with the `serde` feature: everything that decides the set's later steps, so a set
+/// read back goes on bit for bit as this one (the settings, every slot with its generation
+/// and body, the free list). The resolver's memories are not written; the first resolve
+/// after reading the set gathers them again.
 impl Serialize for Bodies {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         BodiesOut {
@@ -108,8 +108,7 @@ impl Serialize for Bodies {
 /// [`SnapshotError`] message), never a panic or a set in a state no calls could leave it.
 impl<'de> Deserialize<'de> for Bodies {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let data = BodiesIn::deserialize(deserializer)?;
-        Bodies::try_from(data).map_err(D::Error::custom)
+        read_checked::<D, BodiesIn, Self>(deserializer)
     }
 }
 

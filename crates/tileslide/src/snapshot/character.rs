@@ -4,10 +4,9 @@
 //! walks, snaps, rides and drops through as it would have.
 
 use glam::Vec2;
-use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-use super::SnapshotError;
+use super::{SnapshotError, read_checked};
 use crate::controller::character::side_of;
 use crate::controller::platform::Riding;
 use crate::controller::{Character, CharacterShape, Contact, ControllerConfig};
@@ -66,8 +65,7 @@ impl Serialize for Character {
 /// its ground's and platform's vectors too (a [`SnapshotError`] message otherwise).
 impl<'de> Deserialize<'de> for Character {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let data = CharacterData::deserialize(deserializer)?;
-        Character::try_from(data).map_err(D::Error::custom)
+        read_checked::<D, CharacterData, Self>(deserializer)
     }
 }
 

@@ -8,10 +8,9 @@
 //! restored world holds no objects and no hits until the game registers and detects. The
 //! memory is written sorted, so equal worlds give equal bytes.
 
-use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-use super::SnapshotError;
+use super::{SnapshotError, read_checked};
 use crate::broadphase::PairMethod;
 use crate::owner::Owner;
 use crate::volumes::HitWorld;
@@ -26,8 +25,8 @@ struct HitWorldData {
     swung: Vec<(u64, Owner)>,
 }
 
-/// Written with the `serde` feature: the memory that decides later frames' hits (see the
-/// module documentation of [`HitWorld`]'s snapshot in the crate docs).
+/// Written with the `serde` feature: the memory that decides later frames' hits (the
+/// broadphase and the swing memory, sorted). This frame's objects and hits are not written.
 impl Serialize for HitWorld {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let mut swings: Vec<u64> = self.swings_now.iter().copied().collect();
@@ -47,8 +46,7 @@ impl Serialize for HitWorld {
 /// [`SnapshotError`] message otherwise).
 impl<'de> Deserialize<'de> for HitWorld {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let data = HitWorldData::deserialize(deserializer)?;
-        HitWorld::try_from(data).map_err(D::Error::custom)
+        read_checked::<D, HitWorldData, Self>(deserializer)
     }
 }
 

@@ -97,7 +97,7 @@ impl TileMap {
     /// [`SnapshotError::OtherMapSize`] or [`SnapshotError::OtherBase`] for edits of another
     /// map, [`SnapshotError::UnknownTile`] for a tile the tile set lacks,
     /// [`SnapshotError::NoChange`] for an edit that puts the tile the map was built with:
-    /// the map is then unchanged. [`SnapshotError::Map`] with [`MapError::TooManySegments`] if the map
+    /// the map is then unchanged. [`SnapshotError::Map`] with [`MapError::TooManySegments`](crate::MapError::TooManySegments) if the map
     /// cannot hold the segments (about 2³² of them): the edits made are then undone.
     pub fn restore_edits(&mut self, edits: &MapEdits) -> Result<(), SnapshotError> {
         let (map_width, map_height) = (self.width(), self.height());
@@ -246,7 +246,7 @@ mod read {
         }
     }
 
-    /// A saved temporary segment: checked as [`TileMap::add_temporary`] checks one, with the
+    /// A saved temporary segment: checked as [`TileMap::add_temporary`](crate::TileMap::add_temporary) checks one, with the
     /// normal it was saved with (normalising it again could move its last bit).
     fn check_temporary(index: usize, t: &TemporarySegment) -> Result<(), SnapshotError> {
         t.validated()

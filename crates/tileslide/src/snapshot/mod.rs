@@ -36,3 +36,17 @@ mod hit_world;
 
 pub use error::SnapshotError;
 pub use map_edits::MapEdits;
+
+/// Reads a `T` as the data `S` it is written as, then checks it (`T::try_from`): what
+/// every snapshot's `Deserialize` does, the refusal reported as the deserializer's error.
+#[cfg(feature = "serde")]
+fn read_checked<'de, D, S, T>(deserializer: D) -> Result<T, D::Error>
+where
+    D: serde::Deserializer<'de>,
+    S: serde::Deserialize<'de>,
+    T: TryFrom<S, Error = SnapshotError>,
+{
+    use serde::de::Error as _;
+    let data = S::deserialize(deserializer)?;
+    T::try_from(data).map_err(D::Error::custom)
+}
