@@ -47,7 +47,9 @@
 //!   shapes, configurations, filters, hits, contacts, reports, handles and ids (ids and
 //!   flags as their numbers). A [`BodyShape`] is read through [`BodyShape::compound`], so a
 //!   saved shape is checked as a built one is; other values are checked where they enter a
-//!   system, as built ones are.
+//!   system, as built ones are. Also snapshots: [`Bodies`], a [`HitWorld`]'s memory, a
+//!   [`Character`] and [`MapEdits`], saved at a step and restored to go on bit for bit as the run that was
+//!   never interrupted (rollback netcode, replays), and checked as they are read.
 //!
 //! ## Quick start
 //!
@@ -84,6 +86,7 @@ pub mod limits;
 mod owner;
 mod path;
 mod query;
+mod snapshot;
 mod tiles;
 mod volumes;
 
@@ -103,6 +106,7 @@ pub use glam::Vec2;
 pub use owner::Owner;
 pub use path::{FlowField, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, NavPath};
 pub use query::{CastError, CircleHit, Faces, QueryFilter, RayHit, SegmentOverlap, SegmentSource};
+pub use snapshot::{MapEdits, SnapshotError};
 pub use tiles::{
     ActiveSegment, Cell, JournalError, MapError, MapRevision, SegmentFlags, SegmentRef, ShapeError,
     TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet, TileSetError,

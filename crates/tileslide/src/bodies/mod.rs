@@ -23,7 +23,7 @@ mod map_watch;
 mod near_walls;
 mod neighbours;
 mod resolver;
-mod set;
+pub(crate) mod set;
 mod settled;
 
 pub use body::{Body, BodyDesc, BodyFilter, BodyShape};

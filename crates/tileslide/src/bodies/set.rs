@@ -12,10 +12,12 @@ use crate::geometry::in_range;
 use crate::owner::Owner;
 use crate::tiles::TileMap;
 
+/// A slot of a set: its body, if any, and its generation (the generation of its next
+/// handle once the body is removed).
 #[derive(Clone, Debug)]
-struct Slot {
-    generation: u32,
-    body: Option<Body>,
+pub(crate) struct Slot {
+    pub(crate) generation: u32,
+    pub(crate) body: Option<Body>,
 }
 
 /// Free-moving bodies (circles and compounds of circles) and the three loops of a step:
@@ -42,10 +44,11 @@ struct Slot {
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct Bodies {
-    slots: Vec<Slot>,
-    free: Vec<u32>,
-    len: usize,
-    config: ResolveConfig,
+    pub(crate) slots: Vec<Slot>,
+    /// Empty slots to reuse, the last first.
+    pub(crate) free: Vec<u32>,
+    pub(crate) len: usize,
+    pub(crate) config: ResolveConfig,
     pub(super) resolver: Resolver,
 }
 

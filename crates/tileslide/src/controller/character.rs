@@ -149,24 +149,31 @@ pub struct MoveOptions {
 pub struct Character {
     /// The shape's centre, in world coordinates.
     pub position: Vec2,
-    shape: CharacterShape,
-    up: Vec2,
+    pub(crate) shape: CharacterShape,
+    pub(crate) up: Vec2,
     /// The sideways axis (towards higher x, perpendicular to `up`).
-    side: Vec2,
-    config: ControllerConfig,
+    pub(crate) side: Vec2,
+    pub(crate) config: ControllerConfig,
     /// Cosine of the slope limit.
     walkable: f32,
     /// The ground under the character after its last move.
-    pub(super) ground: Option<Contact>,
+    pub(crate) ground: Option<Contact>,
     /// Whether that ground is a rounded corner (a circle on a segment's end).
-    ground_corner: bool,
+    pub(crate) ground_corner: bool,
     /// The moving platform it stands on, if its ground is one.
-    pub(super) riding: Option<Riding>,
+    pub(crate) riding: Option<Riding>,
     /// Scratch: the segments near the current sweep.
     walls: Vec<Wall>,
     /// Scratch: where whether a walk has ground below it can change (see
     /// [`edge`](Self::edge)).
     events: Vec<f32>,
+}
+
+/// The sideways axis of a character whose unit up is `up`: the map's x axis made
+/// perpendicular to up (so "left" and "right" are the screen's whichever way y points);
+/// for an up along x, up turned a quarter.
+pub(crate) fn side_of(up: Vec2) -> Vec2 {
+    (Vec2::X - up * up.x).try_normalize().unwrap_or(up.perp())
 }
 
 /// Moves shorter than this are not swept (they are rounding, not motion).
@@ -221,14 +228,11 @@ impl Character {
             value: up,
         })?;
         config.validate()?;
-        // Sideways is the map's x axis made perpendicular to up (so "left" and "right" are
-        // the screen's whichever way y points); for an up along x, up turned a quarter.
-        let side = (Vec2::X - up * up.x).try_normalize().unwrap_or(up.perp());
         Ok(Self {
             position,
             shape,
             up,
-            side,
+            side: side_of(up),
             walkable: config.max_slope_degrees.to_radians().cos(),
             config,
             ground: None,

@@ -6,10 +6,10 @@
 //! edges, then snaps the box flush and casts short alignment rays; tileslide sweeps the
 //! whole shape exactly instead (see `docs/controller.md` for how the two differ and why).
 
-mod character;
+pub(crate) mod character;
 mod contact;
 mod debug_lines;
-mod platform;
+pub(crate) mod platform;
 mod shape;
 mod velocity;
 

@@ -21,11 +21,11 @@ use crate::tiles::{Owner, SegmentFlags, TileMap};
 
 /// The moving platform a character stands on.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Riding {
-    owner: Owner,
+pub(crate) struct Riding {
+    pub(crate) owner: Owner,
     /// The segment stood on: its midpoint and (corrected) normal when last seen.
-    middle: Vec2,
-    normal: Vec2,
+    pub(crate) middle: Vec2,
+    pub(crate) normal: Vec2,
 }
 
 impl Riding {

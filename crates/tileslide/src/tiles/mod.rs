@@ -5,6 +5,7 @@
 //! per cell, the *active* segments left after seam culling, each knowing which segment its
 //! ends continue into.
 
+mod base;
 mod cell;
 mod continuity;
 mod culling;

@@ -162,7 +162,7 @@ pub(super) struct Entry {
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct HitWorld {
-    broadphase: PairMethod,
+    pub(crate) broadphase: PairMethod,
     pub(super) entries: Vec<Entry>,
     pub(super) attack: Vec<Volume>,
     pub(super) vulnerable: Vec<Volume>,
@@ -171,9 +171,9 @@ pub struct HitWorld {
     pairs: Vec<(u32, u32)>,
     pub(super) events: Vec<HitEvent>,
     /// Accepted hits per swing: `(swing, victim owner)`.
-    swung: HashSet<(u64, Owner)>,
+    pub(crate) swung: HashSet<(u64, Owner)>,
     /// Swings registered this frame and the last.
-    swings_now: HashSet<u64>,
+    pub(crate) swings_now: HashSet<u64>,
     swings_before: HashSet<u64>,
 }
 
