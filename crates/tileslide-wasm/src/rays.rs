@@ -58,6 +58,7 @@ pub fn ray(which: &str, x0: f32, y0: f32, x1: f32, y1: f32) -> Result<Ray, Strin
 
 /// [`ray`], with the ray's name made only when there is an error to name it in: a batch of a
 /// million rays formats no names.
+#[inline(always)]
 fn ray_named(
     which: impl FnOnce() -> String,
     x0: f32,
@@ -142,6 +143,7 @@ const CHUNK: usize = 4096;
 
 /// One answer of [`cast_flat`]: `t, x, y, nx, ny`, or five NaNs for a miss.
 #[must_use]
+#[inline(always)]
 pub fn flat_hit(hit: Option<&RayHit>) -> [f32; RAY_OUT] {
     match hit {
         Some(h) => [h.t, h.point.x, h.point.y, h.normal.x, h.normal.y],
