@@ -335,28 +335,22 @@ impl<'a> Layers<'a> {
         let width = r.i32("width")?;
         let height_at = r.offset();
         let height = r.i32("height")?;
-        let mut size = [0u32; 2];
-        for ((field, value, offset), out) in
-            [("width", width, width_at), ("height", height, height_at)]
-                .into_iter()
-                .zip(&mut size)
-        {
-            *out = u32::try_from(value)
-                .ok()
-                .filter(|&v| v > 0)
-                .ok_or_else(|| {
-                    r.error_at(
-                        offset,
-                        LoadErrorKind::BadSize {
-                            field,
-                            value: value.into(),
-                            reason: "must be at least 1".into(),
-                        },
-                    )
-                })?;
+        for (field, value, offset) in [("width", width, width_at), ("height", height, height_at)] {
+            if value <= 0 {
+                return Err(r.error_at(
+                    offset,
+                    LoadErrorKind::BadSize {
+                        field,
+                        value: value.into(),
+                        reason: "must be at least 1".into(),
+                    },
+                ));
+            }
         }
+        // Both are positive, so they fit a u32.
+        let (width, height) = (width as u32, height as u32);
         // Check the size against the bytes actually present before allocating anything.
-        let cell_count = u64::from(size[0]) * u64::from(size[1]);
+        let cell_count = u64::from(width) * u64::from(height);
         let cells_at = r.offset();
         let present = r.remaining() as u64;
         let cells = if cell_count > present {
@@ -370,8 +364,8 @@ impl<'a> Layers<'a> {
             index: self.read - 1,
             kind,
             type_at,
-            width: size[0],
-            height: size[1],
+            width,
+            height,
             width_at,
             cells_at,
             cell_count,
