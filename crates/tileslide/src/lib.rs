@@ -104,9 +104,10 @@ pub use owner::Owner;
 pub use path::{FlowField, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, NavPath};
 pub use query::{CastError, CircleHit, Faces, QueryFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use tiles::{
-    ActiveSegment, Cell, JournalError, MapError, MapRevision, SegmentFlags, SegmentRef, ShapeError,
-    TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet, TileSetError,
-    TileShape,
+    ActivePiece, ActiveSegment, Cell, CellExplanation, CellSide, EndJoin, HiddenPart, JournalError,
+    MapError, MapRevision, PieceEnd, PlacedSegment, SegmentExplanation, SegmentFlags, SegmentRef,
+    ShapeError, TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet,
+    TileSetError, TileShape, WallSource,
 };
 pub use volumes::{
     Facing, HitEvent, HitObject, HitRule, HitTypes, HitWorld, ObjectId, TeamRule, Volume,
