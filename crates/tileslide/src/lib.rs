@@ -88,8 +88,9 @@ mod tiles;
 mod volumes;
 
 pub use bodies::{
-    Bodies, Body, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, ResolveConfig,
-    ResolveReport, SlideMode,
+    Bodies, Body, BodyDesc, BodyError, BodyFate, BodyFilter, BodyHandle, BodyShape, BodyTrace,
+    ContactPart, ContactSource, ContactTrace, PassTrace, ResolveConfig, ResolveReport,
+    ResolveTrace, Response, SlideMode,
 };
 pub use controller::{
     Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
