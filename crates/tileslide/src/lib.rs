@@ -93,7 +93,8 @@ pub use bodies::{
     ResolveTrace, Response, SlideMode,
 };
 pub use controller::{
-    Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
+    Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveEvent,
+    MoveHit, MoveOptions, MoveTrace, OneWayPass, SlideResponse, Surface, SweepPurpose, SweepTrace,
 };
 pub use debug::{DebugKind, DebugLines};
 pub use geometry::aabb::Aabb;
