@@ -111,6 +111,9 @@ impl Resolver {
     }
 
     /// The resolve, reporting to `sink` (with [`NoTrace`], nothing is built to report).
+    /// Kept out of line, as `resolve` was before it took a sink: inlined into
+    /// `Bodies::resolve`, the crowd's step took 0.6 % more instructions.
+    #[inline(never)]
     fn resolve_into<S: Sink>(
         &mut self,
         bodies: &mut [&mut Body],
@@ -291,11 +294,10 @@ impl Resolver {
             let step = remaining * hit.t;
             let taken = step.length() >= gap * MIN_STEP;
             self.position[bi] += Vec2::new(keep_if(taken, step.x), keep_if(taken, step.y));
-            let blocked = remaining * (1.0 - hit.t);
             if pass == config.passes {
                 if S::ON {
                     let decision = Decision {
-                        blocked,
+                        blocked: remaining * (1.0 - hit.t),
                         normal: hit.normal,
                         obstacle,
                         slide: Vec2::ZERO,
@@ -308,6 +310,7 @@ impl Resolver {
                 report.cut_short += 1;
                 return;
             }
+            let blocked = remaining * (1.0 - hit.t);
             remaining = slide(blocked, hit.normal, obstacle, b, config.slide);
             // A slide that would end past MAX_COORD is not taken, so every body stays in
             // range: a move ends within it (checked by `propose`), and every later position
