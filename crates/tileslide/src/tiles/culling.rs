@@ -115,14 +115,14 @@ pub(crate) fn covers_across(
         .segments()
         .iter()
         .enumerate()
-        .filter_map(move |(j, t)| {
-            (t.flags.contains(SegmentFlags::SOLID)
+        .filter(move |(_, t)| {
+            t.flags.contains(SegmentFlags::SOLID)
                 && facing.holds(t, size, eps)
-                && t.normal.dot(facing.outward()) > 0.0)
-                .then(|| {
-                    let (u0, u1) = (side.along(t.a), side.along(t.b));
-                    (j, (u0.min(u1), u0.max(u1)))
-                })
+                && t.normal.dot(facing.outward()) > 0.0
+        })
+        .map(move |(j, t)| {
+            let (u0, u1) = (side.along(t.a), side.along(t.b));
+            (j, (u0.min(u1), u0.max(u1)))
         })
 }
 
