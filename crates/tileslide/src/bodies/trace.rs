@@ -29,11 +29,12 @@ use crate::tiles::{TileMap, WallSource};
 /// #####", "doc.txt", 1.0)?;
 /// let mut bodies = Bodies::new();
 /// let ball = bodies.add(BodyDesc::new(Vec2::new(1.5, 1.5), BodyShape::circle(0.4)?))?;
-/// bodies.propose(ball, Vec2::new(2.0, 0.1))?;
+/// bodies.propose(ball, Vec2::new(3.0, 0.05))?;
 /// let mut trace = ResolveTrace::of(ball);
 /// bodies.resolve_traced(&map, &mut trace);
 /// let story = trace.body(ball).unwrap();
-/// // The first pass meets the right wall (cell (4, 1)) and slides down along it.
+/// // The first pass meets the right wall (cell (4, 1)) and slides along it, the way the
+/// // move leans (+y).
 /// let pass = &story.passes[0];
 /// let contact = pass.chosen().unwrap();
 /// assert!(matches!(contact.source, ContactSource::Wall(tileslide::WallSource::Tile { segment, .. })
@@ -221,7 +222,7 @@ pub enum Response {
     /// Stopped in a concave corner: the slide along the last pass's wall ran straight into
     /// this one.
     StoppedInCorner,
-    /// Stopped at the contact: the settings' [`SlideMode::Stop`](crate::SlideMode::Stop).
+    /// Stopped at the contact: the settings' [`SlideMode::Stop`].
     NoSlide,
     /// The last pass's contact: the move is cut there (the passes are used up).
     CutShort,
