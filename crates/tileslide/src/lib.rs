@@ -91,11 +91,13 @@ mod tiles;
 mod volumes;
 
 pub use bodies::{
-    Bodies, Body, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, ResolveConfig,
-    ResolveReport, SlideMode,
+    Bodies, Body, BodyDesc, BodyError, BodyFate, BodyFilter, BodyHandle, BodyShape, BodyTrace,
+    ContactPart, ContactSource, ContactTrace, PassTrace, ResolveConfig, ResolveReport,
+    ResolveTrace, Response, SlideMode,
 };
 pub use controller::{
-    Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
+    Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveEvent,
+    MoveHit, MoveOptions, MoveTrace, OneWayPass, SlideResponse, Surface, SweepPurpose, SweepTrace,
 };
 pub use debug::{DebugKind, DebugLines};
 pub use geometry::aabb::Aabb;
@@ -108,9 +110,10 @@ pub use path::{FlowField, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, Na
 pub use query::{CastError, CircleHit, Faces, QueryFilter, RayHit, SegmentOverlap, SegmentSource};
 pub use snapshot::{MapEdits, SnapshotError};
 pub use tiles::{
-    ActiveSegment, Cell, JournalError, MapError, MapRevision, SegmentFlags, SegmentRef, ShapeError,
-    TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet, TileSetError,
-    TileShape,
+    ActivePiece, ActiveSegment, Cell, CellExplanation, CellSide, EndJoin, HiddenPart, JournalError,
+    MapError, MapRevision, PieceEnd, PlacedSegment, SegmentExplanation, SegmentFlags, SegmentRef,
+    ShapeError, TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet,
+    TileSetError, TileShape, WallSource,
 };
 pub use volumes::{
     Facing, HitEvent, HitObject, HitRule, HitTypes, HitWorld, ObjectId, TeamRule, Volume,

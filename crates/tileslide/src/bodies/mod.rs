@@ -25,9 +25,14 @@ mod neighbours;
 mod resolver;
 pub(crate) mod set;
 mod settled;
+mod trace;
 
 pub use body::{Body, BodyDesc, BodyFilter, BodyShape};
 pub use config::{ResolveConfig, ResolveReport, SlideMode};
 pub use error::BodyError;
 pub use handle::BodyHandle;
 pub use set::Bodies;
+pub use trace::{
+    BodyFate, BodyTrace, ContactPart, ContactSource, ContactTrace, PassTrace, ResolveTrace,
+    Response,
+};

@@ -11,11 +11,15 @@ mod contact;
 mod debug_lines;
 pub(crate) mod platform;
 mod shape;
+mod trace;
 mod velocity;
 
 pub use character::{Character, ControllerConfig, MoveOptions};
-pub use contact::{Contact, Contacts};
+pub use contact::{Contact, Contacts, Surface};
 pub use shape::CharacterShape;
+pub use trace::{
+    MoveEvent, MoveHit, MoveTrace, OneWayPass, SlideResponse, SweepPurpose, SweepTrace,
+};
 
 use glam::Vec2;
 

@@ -6,7 +6,7 @@ use glam::Vec2;
 use super::SegmentRef;
 use super::base::BaseTiles;
 use super::continuity::link_cell;
-use super::culling::{Side, active_segments};
+use super::culling::{CellSide, active_segments};
 use super::face_kind::{canonical_faces, kind_of};
 use super::journal::Journal;
 use super::store::{HotSegment, Links, SegmentStore};
@@ -349,7 +349,7 @@ impl TileMap {
         let index = (row * self.width + col) as usize;
         let base = self.cell_corner(Cell::new(col, row));
         if let Some(shape) = self.shape_of_raw(self.tiles[index]) {
-            let neighbour = |side: Side| -> Option<&TileShape> {
+            let neighbour = |side: CellSide| -> Option<&TileShape> {
                 let (dc, dr) = side.neighbour_offset();
                 let (c, r) = self.in_bounds(col as i64 + dc, row as i64 + dr)?;
                 self.shape_of_raw(self.tiles[(r * self.width + c) as usize])
