@@ -4,6 +4,7 @@ import { test } from "node:test";
 import assert from "node:assert/strict";
 import { existsSync, readFileSync } from "node:fs";
 import { fileURLToPath } from "node:url";
+import { gzipSync } from "node:zlib";
 
 import { initSync, TileMap } from "../pkg/tileslide.js";
 
@@ -12,6 +13,12 @@ const wasm = initSync({ module: readFileSync(here("../pkg/tileslide_bg.wasm")) }
 const cave = readFileSync(here("../../examples/maps/cave.txt"), "utf8");
 
 const ROOM = "#####\n#...#\n#...#\n#####";
+
+test("the package's wasm stays under 400 KB gzipped", () => {
+  // The budget a web game pays to download; `npm run build` prints the size too.
+  const gzipped = gzipSync(readFileSync(here("../pkg/tileslide_bg.wasm")), { level: 9 }).length;
+  assert.ok(gzipped < 400_000, `tileslide_bg.wasm is ${gzipped} bytes gzipped`);
+});
 
 test("a map drawn in ASCII answers a ray with the CLI's fields", () => {
   const map = TileMap.fromAscii(ROOM);

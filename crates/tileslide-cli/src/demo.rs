@@ -6,9 +6,10 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, bail};
 use clap::Subcommand;
 use indicatif::{ProgressBar, ProgressStyle};
+use tileslide::io::replica::ObjectKind;
 use tileslide::{Aabb, Vec2};
 use tileslide_dungeon::{Game, STEPS_PER_SECOND, Screen, Summary};
-use tileslide_platformer::{Goal, Level, MAX_STEPS};
+use tileslide_platformer::{Goal, IgnoredObjects, Level, MAX_STEPS};
 use tileslide_render::{Canvas, Framing, ImageAnimation, Picture, RenderOptions, YAxis};
 
 use crate::output;
@@ -41,6 +42,13 @@ pub enum DemoCommand {
     },
     /// Platformer: a scripted character runs a level of ramps, one-way platforms, a moving
     /// platform, coins and enemies (the bundled level, or a Replica Island level).
+    ///
+    /// A Replica Island level is played with the objects of its object layer: the player
+    /// starts at its PLAYER spawn; COIN, RUBY and DIARY are coins; BROBOT, SNAILBOMB,
+    /// SHADOWSLIME, MUDMAN, SKELETON and ONION walk back and forth; BAT, STING and KARAGUIN
+    /// fly back and forth. Every other object (story characters, bosses, turrets, doors,
+    /// buttons, cannons, spawners, breakable blocks, signs, effects) is ignored and counted
+    /// in the summary by type number; the hot-spot layer is not used.
     Platformer {
         /// A level: an ASCII map with the demo's markers (`.txt`, see
         /// examples/maps/platformer.txt) or a Replica Island level (`.bin`, needs
@@ -240,6 +248,7 @@ fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: b
     } else {
         PLATFORMER_FRAME_EVERY
     };
+    let ignored = level.ignored_objects.clone();
     let mut game = tileslide_platformer::Game::new(level)?;
     let mut animation = ImageAnimation::new(canvas.width(), canvas.height(), &options.style)?;
     animation.set_frame_delay(5);
@@ -279,6 +288,11 @@ fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: b
                 Goal::RightEnd => "right_end",
             },
             "reached": s.reached_goal,
+            "ignored_objects": ignored.iter().map(|i| serde_json::json!({
+                "type": i.type_number,
+                "kind": i.kind.map(ObjectKind::name),
+                "count": i.count,
+            })).collect::<Vec<_>>(),
             "gif": output.display().to_string(),
             "png": png.display().to_string(),
             "audit": {
@@ -314,10 +328,27 @@ fn platformer(map: Option<&Path>, tileset: Option<&Path>, output: &Path, json: b
         Goal::Marked => println!("  goal {reached}"),
         Goal::RightEnd => println!("  right end {reached} (the level has no goal)"),
     }
+    if !ignored.is_empty() {
+        let count: usize = ignored.iter().map(|i| i.count).sum();
+        let each: Vec<String> = ignored
+            .iter()
+            .map(|i| format!("{} ×{}", object_name(i), i.count))
+            .collect();
+        println!("  objects ignored {count}: {}", each.join(", "));
+    }
     println!(
         "  audit: steps inside solid {}, tunnels {}, max penetration {} cells",
         audit.inside_solid, audit.tunnels, audit.max_penetration
     );
     println!("  wrote {} and {}", output.display(), png.display());
     Ok(())
+}
+
+/// An ignored object's name in the summary: the game's name and type number, `DOOR_RED
+/// (32)`, or `type 4` for a number the game does not define.
+fn object_name(i: &IgnoredObjects) -> String {
+    match i.kind {
+        Some(kind) => format!("{kind} ({})", i.type_number),
+        None => format!("type {}", i.type_number),
+    }
 }

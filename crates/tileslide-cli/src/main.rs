@@ -10,6 +10,7 @@ use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 #[cfg(feature = "peers")]
 mod bench;
 mod demo;
+mod explain;
 mod info;
 mod json;
 mod map_file;
@@ -18,6 +19,7 @@ mod path;
 mod point_arg;
 mod raycast;
 mod render;
+mod scene;
 mod simulate;
 
 /// Collision detection for tile-based 2D games: inspect, cast rays, find paths, simulate,
@@ -152,6 +154,11 @@ enum Command {
         #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
         args: Vec<String>,
     },
+    /// Tell why: the story of a body (`--body K`) or of the character (`--character`) of a
+    /// scene, every contact with the tile, segment or body it came from and what was done
+    /// with it; or why each segment of a map's cell (`--cell C,R`) is active or hidden and
+    /// how its ends join. `-o OUT.png` draws it.
+    Explain(explain::ExplainArgs),
     /// Run a demo game headless and write a GIF, a final PNG and a summary.
     Demo {
         #[command(subcommand)]
@@ -251,6 +258,7 @@ fn main() -> ExitCode {
         Command::Bench { which } => bench::run(which),
         #[cfg(not(feature = "peers"))]
         Command::Bench { args } => bench_without_peers(&args),
+        Command::Explain(args) => explain::run(&args),
         Command::Demo { which } => demo::run(which),
     };
     match result {

@@ -1,23 +1,20 @@
 //! `tileslide simulate SCENE.json`: circles with constant proposed moves, stepped with the
-//! resolver, audited at the end; with `--gif`, recorded as an animated GIF.
+//! resolver, audited at the end (and a character run from its script); with `--gif`,
+//! recorded as an animated GIF.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
-use serde::Deserialize;
 use serde_json::json;
-use tileslide::io::ascii;
-use tileslide::{Bodies, BodyDesc, BodyHandle, BodyShape, Circle, SegmentFlags, TileMap, Vec2};
+use tileslide::{Bodies, BodyHandle, Circle, TileMap, Vec2};
 use tileslide_render::{Animation, Canvas, Picture, categorical};
 
 use crate::json::number;
-use crate::map_file::{self, MapFormat};
+use crate::map_file::MapFormat;
 use crate::output;
 use crate::render;
-
-/// Most steps a scene may ask for (a typo of a few zeros should not run for days).
-const MAX_STEPS: u64 = 10_000_000;
+use crate::scene::{Scene, audit_skin, penetration};
 
 /// Most frames a GIF may have (each a full picture of the map).
 const MAX_GIF_FRAMES: u64 = 10_000;
@@ -31,37 +28,6 @@ pub struct GifArgs {
     pub every: u64,
     /// Pixels per cell.
     pub scale: f32,
-}
-
-/// The scene file.
-#[derive(Deserialize, Debug)]
-#[serde(deny_unknown_fields)]
-struct SceneFile {
-    /// A map file, relative to the scene file: any format the other commands read.
-    map: Option<String>,
-    /// Or an ASCII map itself.
-    ascii: Option<String>,
-    /// Cell size of an ASCII map (default 1).
-    cell: Option<f32>,
-    /// The tile set of a Replica Island level, relative to the scene file.
-    tileset: Option<String>,
-    /// The collision layer of a Tiled map.
-    layer: Option<String>,
-    /// Steps to run, unless `--steps` says otherwise.
-    steps: Option<u64>,
-    bodies: Vec<BodyEntry>,
-}
-
-#[derive(Deserialize, Debug)]
-#[serde(deny_unknown_fields)]
-struct BodyEntry {
-    x: f32,
-    y: f32,
-    r: f32,
-    #[serde(default)]
-    vx: f32,
-    #[serde(default)]
-    vy: f32,
 }
 
 /// What the end of a simulation looks like.
@@ -86,62 +52,20 @@ pub fn run(
             bail!("--every 0: steps between frames must be at least 1");
         }
     }
-    let text = std::fs::read_to_string(scene_path)
-        .with_context(|| format!("{}: cannot read the scene", scene_path.display()))?;
-    let scene: SceneFile = serde_json::from_str(&text)
-        .with_context(|| format!("{}: not a valid scene", scene_path.display()))?;
-    let (map, format) = load_map(scene_path, &scene)?;
-    let steps = steps.or(scene.steps).unwrap_or(100);
-    if steps > MAX_STEPS {
-        bail!(
-            "{}: steps: {steps} is more than the {MAX_STEPS} allowed",
-            scene_path.display()
-        );
-    }
+    let scene = Scene::load(scene_path)?;
+    let steps = scene.steps(steps, scene_path)?;
+    let (map, format) = (&scene.map, scene.format);
     let canvas = gif
-        .map(|g| gif_canvas(g, steps, &map, format, scene_path))
+        .map(|g| gif_canvas(g, steps, map, format, scene_path))
         .transpose()?;
     let mut recording = canvas
         .as_ref()
         .zip(gif)
         .map(|(c, g)| Recording::new(c, g.every))
         .transpose()?;
-    // The resolver's default gap suits cells of side 1: scaled to this map's cells.
-    let gap = tileslide::ResolveConfig::default().gap * map.cell_size().min_element();
-    let mut bodies = Bodies::with_config(tileslide::ResolveConfig {
-        gap,
-        ..tileslide::ResolveConfig::default()
-    })?;
-    let skin = 1e-4 * map.cell_size().min_element();
-    let mut crowd: Vec<(BodyHandle, Vec2)> = Vec::with_capacity(scene.bodies.len());
-    for (i, b) in scene.bodies.iter().enumerate() {
-        let at = |field: &str| format!("{}: bodies[{i}].{field}", scene_path.display());
-        let shape = BodyShape::circle(b.r).with_context(|| at("r"))?;
-        let handle = bodies
-            .add(BodyDesc::new(Vec2::new(b.x, b.y), shape))
-            .with_context(|| at("x/y"))?;
-        // The resolver keeps bodies out of walls; one that starts in a wall has no answer.
-        let depth = penetration(&map, &Circle::new(Vec2::new(b.x, b.y), b.r));
-        if depth > skin {
-            bail!(
-                "{}: the circle at ({}, {}) of radius {} starts inside a wall (by {depth})",
-                at("x/y"),
-                b.x,
-                b.y,
-                b.r
-            );
-        }
-        let velocity = Vec2::new(b.vx, b.vy);
-        if !velocity.is_finite() {
-            bail!(
-                "{}: the move ({}, {}) is not finite",
-                at("vx/vy"),
-                b.vx,
-                b.vy
-            );
-        }
-        crowd.push((handle, velocity));
-    }
+    let skin = audit_skin(map);
+    let (mut bodies, crowd) = scene.bodies(scene_path)?;
+    let mut character = scene.character(scene_path)?;
     let mut elapsed = 0.0f64;
     if let Some(r) = &mut recording {
         r.record(&bodies, &crowd)?;
@@ -155,8 +79,12 @@ pub fn run(
                 .with_context(|| format!("{}: bodies[{i}] at step {step}", scene_path.display()))?;
         }
         let start = Instant::now();
-        bodies.step(&map);
+        bodies.step(map);
         elapsed += start.elapsed().as_secs_f64();
+        if let Some(run) = &mut character {
+            run.step(map, None)
+                .with_context(|| format!("{}: character at step {step}", scene_path.display()))?;
+        }
         if let Some(r) = &mut recording
             && (step.is_multiple_of(r.every) || step == steps)
         {
@@ -170,7 +98,7 @@ pub fn run(
             Ok(Circle::new(body.position(), body.shape().bounding_radius()))
         })
         .collect::<Result<_>>()?;
-    let audit = audit(&map, &circles, skin);
+    let audit = audit(map, &circles, skin);
     let ms_per_step = if steps == 0 {
         0.0
     } else {
@@ -181,7 +109,7 @@ pub fn run(
             .iter()
             .map(|c| json!({"x": number(c.center.x), "y": number(c.center.y)}))
             .collect();
-        let out = json!({
+        let mut out = json!({
             "steps": steps,
             "bodies": bodies,
             "audit": {
@@ -192,6 +120,14 @@ pub fn run(
             },
             "ms_per_step": ms_per_step,
         });
+        if let Some(run) = &character {
+            let c = &run.character;
+            out["character"] = json!({
+                "x": number(c.position.x),
+                "y": number(c.position.y),
+                "grounded": c.ground().is_some(),
+            });
+        }
         println!("{out}");
     } else {
         println!(
@@ -208,6 +144,15 @@ pub fn run(
             audit.wall_penetrations,
             audit.max_penetration
         );
+        if let Some(run) = &character {
+            let c = &run.character;
+            let state = if c.ground().is_some() {
+                "on the ground"
+            } else {
+                "in the air"
+            };
+            println!("character: ({}, {}), {state}", c.position.x, c.position.y);
+        }
     }
     if let (Some(r), Some(gif)) = (recording, gif) {
         r.save(&gif.path, json_out)?;
@@ -283,65 +228,6 @@ impl<'c> Recording<'c> {
         self.animation.push(&self.picture)?;
         Ok(())
     }
-}
-
-fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<(TileMap, MapFormat)> {
-    let cell = scene.cell.unwrap_or(1.0);
-    if scene.map.is_none() && (scene.tileset.is_some() || scene.layer.is_some()) {
-        bail!(
-            "{}: \"tileset\" and \"layer\" go with a \"map\" file",
-            scene_path.display()
-        );
-    }
-    if !(cell > 0.0 && cell.is_finite()) {
-        bail!(
-            "{}: cell: {cell} must be a positive number",
-            scene_path.display()
-        );
-    }
-    match (&scene.map, &scene.ascii) {
-        (Some(_), Some(_)) => bail!(
-            "{}: give either \"map\" (a file) or \"ascii\" (the map itself), not both",
-            scene_path.display()
-        ),
-        (None, None) => bail!(
-            "{}: missing the map: add \"map\": \"file.txt\" or \"ascii\": \"...\"",
-            scene_path.display()
-        ),
-        (Some(file), None) => {
-            let dir = scene_path.parent().unwrap_or(Path::new("."));
-            let args = map_file::MapArgs {
-                map: dir.join(file),
-                tileset: scene.tileset.as_ref().map(|t| dir.join(t)),
-                cell: scene.cell,
-                layer: scene.layer.clone(),
-                limits: map_file::TiledLimits::default(),
-            };
-            map_file::load(&args)
-        }
-        (None, Some(text)) => {
-            let name = format!("{} (field \"ascii\")", scene_path.display());
-            Ok((ascii::parse(text, &name, cell)?, MapFormat::Ascii))
-        }
-    }
-}
-
-/// How deep `c` is in a wall: how much closer its centre is than its radius to a solid
-/// (not one-way) segment it is in front of, or its radius when its centre is in solid; 0
-/// when it is clear.
-fn penetration(map: &TileMap, c: &Circle) -> f32 {
-    let mut worst = 0.0f32;
-    for s in map.segments_overlapping_circle(c) {
-        if s.flags.contains(SegmentFlags::ONE_WAY) || (c.center - s.segment.a).dot(s.normal) < 0.0 {
-            continue;
-        }
-        let depth = c.radius - s.segment.distance_squared_to(c.center).sqrt();
-        worst = worst.max(depth);
-    }
-    if map.is_point_solid(c.center) {
-        worst = worst.max(c.radius);
-    }
-    worst
 }
 
 /// Pairs overlapping by more than `skin`, and circles whose centre is in front of a solid

@@ -1,5 +1,5 @@
 //! `tileslide demo platformer`: writes a GIF and a PNG and prints the summary, on the
-//! bundled level and on a Replica Island level.
+//! bundled level and on Replica Island levels played with their objects.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 mod support;
@@ -7,6 +7,8 @@ mod support;
 use std::path::{Path, PathBuf};
 
 use support::{replica_dir, stderr, stdout, tileslide};
+use tileslide::io::replica::{self, ObjectKind};
+use tileslide_platformer::ReplicaRole;
 
 fn scratch(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli_platformer");
@@ -62,6 +64,7 @@ fn demo_platformer_json_summary() {
     assert_eq!(s["reached"], true);
     assert_eq!(s["coins_collected"], s["coins_total"]);
     assert_eq!(s["enemies_defeated"], 2);
+    assert_eq!(s["ignored_objects"], serde_json::json!([]));
     assert_eq!(s["audit"]["inside_solid"], 0);
     assert_eq!(s["audit"]["tunnels"], 0);
 }
@@ -98,7 +101,76 @@ fn demo_platformer_crosses_replica_island_levels_without_entering_solid() {
         assert_eq!(s["audit"]["tunnels"], 0, "{s}");
         let (_, frames) = gif_frames(&gif);
         assert!(frames > 10, "{name}: {frames} frames");
+        // The level's objects, as the loader reads them: every one a coin, an enemy, the
+        // start or counted as ignored.
+        let objects = replica::load_objects(&level).unwrap().objects;
+        let count = |role| {
+            (objects.iter())
+                .filter(|o| o.kind.and_then(ReplicaRole::of) == Some(role))
+                .count()
+        };
+        assert_eq!(s["coins_total"], count(ReplicaRole::Coin), "{name}");
+        let enemies = count(ReplicaRole::Walker) + count(ReplicaRole::Flyer);
+        assert_eq!(s["enemies_total"], enemies, "{name}");
+        let ignored: u64 = (s["ignored_objects"].as_array().unwrap().iter())
+            .map(|i| i["count"].as_u64().unwrap())
+            .sum();
+        assert_eq!(
+            ignored as usize,
+            objects.len() - 1 - count(ReplicaRole::Coin) - enemies
+        );
     }
+}
+
+#[test]
+fn demo_platformer_plays_level_1_2_island_with_its_objects() {
+    let Some(dir) = replica_dir() else {
+        return;
+    };
+    let gif = scratch("level_1_2_island_text.gif");
+    let out = tileslide(&[
+        "demo",
+        "platformer",
+        dir.join("level_1_2_island.bin").to_str().unwrap(),
+        "--tileset",
+        dir.join("collision.bin").to_str().unwrap(),
+        "-o",
+        gif.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    // The whole run, as deterministic as the bundled one: 45 coins (42 pearls, 3 gems) and
+    // 7 enemies (5 brobots, a karaguin, a snail bomb) placed, its doors and buttons
+    // ignored; the runner takes a coin and stomps an enemy on its way out.
+    let expected = "\
+platformer (level_1_2_island.bin): 303 steps (5.0 game s)
+  coins 1/45, enemies defeated 1/7, hits taken 0, jumps 3, steps riding the platform 0
+  right end reached (the level has no goal)
+  objects ignored 6: DOOR_RED (32) ×2, DOOR_BLUE (33) ×1, BUTTON_RED (35) ×2, BUTTON_BLUE (36) ×1
+  audit: steps inside solid 0, tunnels 0, max penetration 0 cells
+";
+    let text = stdout(&out);
+    let (summary, wrote) = text.split_at(text.find("  wrote ").unwrap());
+    assert_eq!(summary, expected);
+    assert!(wrote.contains("level_1_2_island_text.gif"), "{wrote}");
+}
+
+#[test]
+fn demo_platformer_help_names_every_object_it_places() {
+    let out = tileslide(&["demo", "platformer", "--help"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let help = stdout(&out);
+    let placed: Vec<&str> = (ObjectKind::ALL.iter())
+        .filter(|&&k| ReplicaRole::of(k).is_some())
+        .map(|k| k.name())
+        .collect();
+    assert_eq!(placed.len(), 13);
+    for name in placed {
+        assert!(help.contains(name), "{name} is not in the help:\n{help}");
+    }
+    assert!(
+        help.contains("is ignored and counted in the summary"),
+        "{help}"
+    );
 }
 
 #[test]

@@ -98,7 +98,8 @@ impl PlatformerGame {
 
     /// A Replica Island level: the bytes of a level file (`level_*.bin`) and of the game's
     /// `collision.bin`, as the CLI's `demo platformer LEVEL --tileset collision.bin` loads
-    /// them. Its y axis points up; its goal is its last three columns.
+    /// them, with the coins and enemies of the level's object layer. Its y axis points up;
+    /// its goal is its last three columns.
     #[wasm_bindgen(js_name = fromReplicaIsland)]
     pub fn from_replica_island(level: &[u8], tile_set: &[u8]) -> Result<PlatformerGame, JsError> {
         start(Level::parse_replica(level, "level.bin", tile_set, "collision.bin").map_err(error)?)

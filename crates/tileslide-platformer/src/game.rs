@@ -70,7 +70,7 @@ impl Game {
         let enemies = level
             .enemies
             .iter()
-            .map(|&feet| Enemy::new(feet, level.up, s, config))
+            .map(|&start| Enemy::new(start, level.up, s, config))
             .collect::<Result<Vec<_>, _>>()?;
         let coins = level
             .coins

@@ -8,7 +8,7 @@ use thiserror::Error;
 use tileslide::io::{LoadError, ascii, replica};
 use tileslide::{Aabb, TileMap, Vec2};
 
-use crate::replica_spawn;
+use crate::replica_objects::{self, EnemyStart, IgnoredObjects};
 
 /// The bundled level's text (`examples/maps/platformer.txt`).
 pub const BUNDLED_LEVEL: &str = include_str!("../../../examples/maps/platformer.txt");
@@ -92,10 +92,13 @@ pub struct Level {
     pub goal_kind: Goal,
     /// Coin centres.
     pub coins: Vec<Vec2>,
-    /// Enemies' feet at the start.
-    pub enemies: Vec<Vec2>,
+    /// The enemies' starts.
+    pub enemies: Vec<EnemyStart>,
     /// The moving platform, if any.
     pub platform: Option<PlatformTrack>,
+    /// The objects of a Replica Island level the demo leaves out, by type number (empty
+    /// for an ASCII level).
+    pub ignored_objects: Vec<IgnoredObjects>,
 }
 
 impl Level {
@@ -135,7 +138,10 @@ impl Level {
                     'P' => set_once(&mut start, corner, path, number, c)?,
                     'G' => set_once(&mut goal, corner, path, number, c)?,
                     'o' => coins.push(corner + Vec2::splat(0.5)),
-                    'E' => enemies.push(corner + Vec2::new(0.5, 1.0)),
+                    'E' => enemies.push(EnemyStart {
+                        feet: corner + Vec2::new(0.5, 1.0),
+                        flies: false,
+                    }),
                     'M' => match &mut platform {
                         None => platform = Some((row, col, col + 1)),
                         Some((r, _, end)) if *r == row && *end == col => *end += 1,
@@ -180,12 +186,16 @@ impl Level {
             coins,
             enemies,
             platform,
+            ignored_objects: Vec::new(),
         })
     }
 
     /// A Replica Island level (`level_*.bin`) with its tile set (`collision.bin`): y up,
-    /// 32-pixel cells, the player spawn from the object layer, the goal the last three
-    /// columns; no coins, enemies or platforms.
+    /// 32-pixel cells, the goal the last three columns, and from the level's object layer
+    /// the player's start, coins and enemies ([`ReplicaRole`] says which objects become
+    /// what; the rest are listed in [`Level::ignored_objects`]); no moving platform.
+    ///
+    /// [`ReplicaRole`]: crate::ReplicaRole
     pub fn load_replica(
         level: impl AsRef<Path>,
         tile_set: impl AsRef<Path>,
@@ -208,22 +218,21 @@ impl Level {
         let path = level_path.as_ref();
         let set = replica::parse_tile_set(tile_set, tile_set_path)?;
         let map = replica::parse_level(level, path, Arc::new(set))?;
-        let cell = replica_spawn::player_spawn(level)
+        let scale = map.cell_size().x;
+        let placed = replica_objects::place(&replica::parse_objects(level, path)?, scale)
             .ok_or_else(|| LevelError::NoStart(path.to_owned()))?;
-        let size = map.cell_size();
-        let corner = map.cell_corner(cell);
         let goal = right_end(&map);
         Ok(Self {
             name: file_name(path),
             up: Vec2::Y,
-            scale: size.x,
-            // The game puts its objects' feet a pixel above the bottom of the spawn cell.
-            start: corner + Vec2::new(0.5 * size.x, 1.0),
+            scale,
+            start: placed.start,
             goal,
             goal_kind: Goal::RightEnd,
-            coins: Vec::new(),
-            enemies: Vec::new(),
+            coins: placed.coins,
+            enemies: placed.enemies,
             platform: None,
+            ignored_objects: placed.ignored,
             map,
         })
     }

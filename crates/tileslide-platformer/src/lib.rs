@@ -14,6 +14,11 @@
 //! - every step an [`Audit`] checks with the map's own queries that no character is inside
 //!   solid and no centre crossed a solid face.
 //!
+//! A Replica Island level ([`Level::load_replica`]) is played with its objects: the player
+//! starts at the level's spawn, and its coins and simple enemies are placed where it puts
+//! them ([`ReplicaRole`] lists which of the game's objects become what; the rest are counted
+//! in [`Level::ignored_objects`]).
+//!
 //! The step is fixed ([`STEPS_PER_SECOND`]) and nothing reads a clock, so a run is
 //! deterministic.
 //!
@@ -26,7 +31,7 @@
 //! ```
 
 // The modules import each other in one direction only. At the bottom: `input`, `error`,
-// `fall`, `coin`, `hits`, `audit`, `level` (with `replica_spawn`), `summary`. Above them
+// `fall`, `coin`, `hits`, `audit`, `replica_objects`, `level`, `summary`. Above them
 // the moving things, each on its own: `player`, `enemy`, `platform`. `script` reads the
 // level and those things and returns an `Input`; `game` owns them all, asks the script
 // for its input every step and moves everything; `picture` draws a `Game`.
@@ -43,7 +48,7 @@ mod level;
 mod picture;
 mod platform;
 mod player;
-mod replica_spawn;
+mod replica_objects;
 mod script;
 mod summary;
 
@@ -59,7 +64,7 @@ pub use level::{BUNDLED_LEVEL, Goal, Level, LevelError, MARKERS, PlatformTrack};
 pub use picture::{COIN_COLOR, ENEMY_COLOR, PLAYER_COLOR, legend};
 pub use platform::PLATFORM_OWNER;
 pub use player::{JUMP_SPEED, Player, RUN_SPEED};
-pub use replica_spawn::player_spawn;
+pub use replica_objects::{EnemyStart, IgnoredObjects, ReplicaRole};
 pub use summary::Summary;
 
 /// The longest run, in steps: a minute of game time.

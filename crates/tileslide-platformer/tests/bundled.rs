@@ -3,19 +3,11 @@
 //! independently of the game's audit); and the run is deterministic.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use tileslide::{Aabb, SegmentFlags, TileMap, Vec2};
-use tileslide_platformer::{Game, Level, MAX_STEPS, Summary};
+mod support;
 
-/// Whether a box at `center` overlaps a solid segment by more than a five-hundredth of a
-/// cell, or its centre is in a solid tile.
-fn inside_solid(map: &TileMap, center: Vec2, half: Vec2) -> bool {
-    let probe = Aabb::from_center(center, half - Vec2::splat(0.002));
-    map.is_point_solid(center)
-        || map
-            .segments_overlapping_aabb(&probe)
-            .iter()
-            .any(|s| s.flags.contains(SegmentFlags::SOLID))
-}
+use support::inside_solid;
+use tileslide::Vec2;
+use tileslide_platformer::{Game, Level, MAX_STEPS, Summary};
 
 fn run_checked() -> (Summary, Game) {
     let mut game = Game::new(Level::bundled().unwrap()).unwrap();
@@ -23,14 +15,14 @@ fn run_checked() -> (Summary, Game) {
         game.step().unwrap();
         let p = &game.player;
         assert!(
-            !inside_solid(&game.level.map, p.body.position, p.half()),
+            !inside_solid(&game.level.map, p.body.position, p.half(), 1.0),
             "step {}: the player is inside solid at {:?}",
             game.summary().steps,
             p.body.position
         );
         for e in game.enemies.iter().filter(|e| e.alive) {
             assert!(
-                !inside_solid(&game.level.map, e.body.position, e.half()),
+                !inside_solid(&game.level.map, e.body.position, e.half(), 1.0),
                 "step {}: an enemy is inside solid at {:?}",
                 game.summary().steps,
                 e.body.position

@@ -3,8 +3,9 @@
 //! files.
 #![allow(clippy::unwrap_used, clippy::panic)]
 
-use std::path::Path;
+mod support;
 
+use support::replica_dir;
 use tileslide_platformer::{Game, Input, Level};
 
 const RIGHT: Input = Input {
@@ -69,16 +70,7 @@ fn a_run_of_nan_stands_still_and_a_run_beyond_one_is_a_run_of_one() {
 
 #[test]
 fn a_replica_island_level_from_bytes_is_the_one_from_files() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/replica-island");
-    if !dir.is_dir() {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "{} is missing",
-            dir.display()
-        );
-        eprintln!("skipped: no Replica Island data at {}", dir.display());
-        return;
-    }
+    let Some(dir) = replica_dir() else { return };
     let (level, tiles) = (dir.join("level_1_1_island.bin"), dir.join("collision.bin"));
     let from_files = Level::load_replica(&level, &tiles).unwrap();
     let from_bytes = Level::parse_replica(
@@ -91,6 +83,9 @@ fn a_replica_island_level_from_bytes_is_the_one_from_files() {
     assert_eq!(from_bytes.name, from_files.name);
     assert_eq!(from_bytes.start, from_files.start);
     assert_eq!(from_bytes.goal, from_files.goal);
+    assert_eq!(from_bytes.coins, from_files.coins);
+    assert_eq!(from_bytes.enemies, from_files.enemies);
+    assert_eq!(from_bytes.ignored_objects, from_files.ignored_objects);
     assert_eq!(
         tileslide::io::baked::to_bytes(&from_bytes.map),
         tileslide::io::baked::to_bytes(&from_files.map)

@@ -53,15 +53,29 @@ impl RayOptions {
 /// coordinate when one is NaN or infinite, or when the two ends are too far apart for an
 /// `f32`.
 pub fn ray(which: &str, x0: f32, y0: f32, x1: f32, y1: f32) -> Result<Ray, String> {
+    ray_named(|| which.to_owned(), x0, y0, x1, y1)
+}
+
+/// [`ray`], with the ray's name made only when there is an error to name it in: a batch of a
+/// million rays formats no names.
+#[inline(always)]
+fn ray_named(
+    which: impl FnOnce() -> String,
+    x0: f32,
+    y0: f32,
+    x1: f32,
+    y1: f32,
+) -> Result<Ray, String> {
     for (name, v) in [("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1)] {
         if !v.is_finite() {
-            return Err(format!("{which}: {name} is {v}, not a finite number"));
+            return Err(format!("{}: {name} is {v}, not a finite number", which()));
         }
     }
     let ray = Ray::between(Vec2::new(x0, y0), Vec2::new(x1, y1));
     if !ray.delta.is_finite() {
         return Err(format!(
-            "{which}: its end points ({x0}, {y0}) and ({x1}, {y1}) are too far apart for a 32-bit float"
+            "{}: its end points ({x0}, {y0}) and ({x1}, {y1}) are too far apart for a 32-bit float",
+            which()
         ));
     }
     Ok(ray)
@@ -74,26 +88,62 @@ pub fn ray(which: &str, x0: f32, y0: f32, x1: f32, y1: f32) -> Result<Ray, Strin
 /// A length that is not a multiple of `RAY_IN`, or a ray [`ray`] refuses (named by its
 /// index).
 pub fn cast_flat(map: &TileMap, rays: &[f32], filter: &QueryFilter) -> Result<Vec<f32>, String> {
+    cast_flat_with(rays, |chunk, hits| map.cast_rays_into(chunk, filter, hits))
+}
+
+/// [`cast_flat`] with the casting of each chunk of checked rays left to `cast`, which
+/// answers them into the buffer it is given (as [`TileMap::cast_rays_into`] does); the
+/// native benchmark times other walks through it.
+///
+/// # Errors
+/// As [`cast_flat`].
+pub fn cast_flat_with(
+    rays: &[f32],
+    mut cast: impl FnMut(&[Ray], &mut Vec<Option<RayHit>>),
+) -> Result<Vec<f32>, String> {
     if !rays.len().is_multiple_of(RAY_IN) {
         return Err(format!(
             "castRays: {} floats is not a whole number of rays (4 floats a ray: x0, y0, x1, y1)",
             rays.len()
         ));
     }
-    let rays = rays
-        .chunks_exact(RAY_IN)
-        .enumerate()
-        .map(|(i, r)| ray(&format!("castRays: ray {i}"), r[0], r[1], r[2], r[3]))
-        .collect::<Result<Vec<Ray>, String>>()?;
-    let mut out = Vec::with_capacity(rays.len() * RAY_OUT);
-    for hit in map.cast_rays(&rays, filter) {
-        out.extend_from_slice(&flat_hit(hit.as_ref()));
+    // In chunks, so that the rays and answers in flight stay small and in cache while the
+    // answers are written straight into the one output buffer.
+    let mut out = vec![0.0; rays.len() / RAY_IN * RAY_OUT];
+    let mut chunk = Vec::with_capacity(CHUNK);
+    let mut hits = Vec::with_capacity(CHUNK);
+    let answers = out.chunks_mut(CHUNK * RAY_OUT);
+    for (c, (floats, answers)) in rays.chunks(CHUNK * RAY_IN).zip(answers).enumerate() {
+        chunk.clear();
+        for (i, r) in floats.chunks_exact(RAY_IN).enumerate() {
+            let index = c * CHUNK + i;
+            chunk.push(ray_named(
+                || format!("castRays: ray {index}"),
+                r[0],
+                r[1],
+                r[2],
+                r[3],
+            )?);
+        }
+        cast(&chunk, &mut hits);
+        for (answer, hit) in answers.chunks_exact_mut(RAY_OUT).zip(&hits) {
+            let [t, x, y, nx, ny] = flat_hit(hit.as_ref());
+            answer[0] = t;
+            answer[1] = x;
+            answer[2] = y;
+            answer[3] = nx;
+            answer[4] = ny;
+        }
     }
     Ok(out)
 }
 
+/// Rays [`cast_flat`] checks and casts at a time.
+const CHUNK: usize = 4096;
+
 /// One answer of [`cast_flat`]: `t, x, y, nx, ny`, or five NaNs for a miss.
 #[must_use]
+#[inline(always)]
 pub fn flat_hit(hit: Option<&RayHit>) -> [f32; RAY_OUT] {
     match hit {
         Some(h) => [h.t, h.point.x, h.point.y, h.normal.x, h.normal.y],
@@ -162,14 +212,42 @@ mod tests {
         let map = cave();
         let rays = checksum_rays();
         let out = cast_flat(&map, &rays, &QueryFilter::both_sides()).unwrap();
+        assert_each_is_cast_ray(&map, &rays, &out, &QueryFilter::both_sides());
+    }
+
+    /// Every answer of `out` is, bit for bit, `cast_ray`'s for its ray of `rays`.
+    fn assert_each_is_cast_ray(map: &TileMap, rays: &[f32], out: &[f32], filter: &QueryFilter) {
+        assert_eq!(rays.len() / RAY_IN, out.len() / RAY_OUT);
         for (r, o) in rays.chunks(RAY_IN).zip(out.chunks(RAY_OUT)) {
             let ray = ray("test", r[0], r[1], r[2], r[3]).unwrap();
-            let want = flat_hit(map.cast_ray(ray, &QueryFilter::both_sides()).as_ref());
+            let want = flat_hit(map.cast_ray(ray, filter).as_ref());
             assert_eq!(
                 o.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
                 want.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
             );
         }
+    }
+
+    #[test]
+    fn answers_and_errors_carry_across_chunks() {
+        let map = cave();
+        let base = checksum_rays();
+        // More rays than three chunks, so every chunk boundary is crossed.
+        let mut rays = Vec::new();
+        while rays.len() < (3 * CHUNK + 7) * RAY_IN {
+            rays.extend_from_slice(&base);
+        }
+        rays.truncate((3 * CHUNK + 7) * RAY_IN);
+        let out = cast_flat(&map, &rays, &QueryFilter::default()).unwrap();
+        assert_eq!(out.len(), (3 * CHUNK + 7) * RAY_OUT);
+        assert_each_is_cast_ray(&map, &rays, &out, &QueryFilter::default());
+        let bad = CHUNK + 5;
+        rays[bad * RAY_IN + 2] = f32::INFINITY;
+        let e = cast_flat(&map, &rays, &QueryFilter::default()).unwrap_err();
+        assert!(
+            e.contains(&format!("ray {bad}:")) && e.contains("x1 is inf"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -24,7 +24,7 @@ use tileslide::io::baked;
 use tileslide::{BodyDesc, BodyShape, QueryFilter, TileMap, Vec2};
 use tileslide_scenes::{CROWD_RADIUS, Fnv1a, dungeon256, scene_crowd, scene_rays};
 use tileslide_wasm::body_set::BodySet;
-use tileslide_wasm::rays::cast_flat;
+use tileslide_wasm::rays::{cast_flat, cast_flat_with};
 
 /// Rays in the rays scene.
 pub const RAYS: usize = 1_000_000;
@@ -129,6 +129,21 @@ pub fn floats_hash(floats: &[f32]) -> u64 {
 /// A ray `cast_flat` refuses.
 pub fn cast_scene_rays(scenes: &Scenes) -> Result<Vec<f32>, BenchError> {
     cast_flat(&scenes.map, &scenes.rays, &QueryFilter::default()).map_err(fail)
+}
+
+/// [`cast_scene_rays`] through the portable batch walk ([`TileMap::cast_rays_portable`]),
+/// which on x86-64 is SSE2 code whose eight lanes are two 128-bit halves, as in the wasm
+/// build, where `cast_rays` runs 256-bit AVX2 when the processor has it: the native figure
+/// at the package's SIMD width. The answers are the same.
+///
+/// # Errors
+/// A ray `cast_flat` refuses.
+pub fn cast_scene_rays_portable(scenes: &Scenes) -> Result<Vec<f32>, BenchError> {
+    let filter = QueryFilter::default();
+    cast_flat_with(&scenes.rays, |chunk, hits| {
+        *hits = scenes.map.cast_rays_portable(chunk, &filter);
+    })
+    .map_err(fail)
 }
 
 /// The first `n` circles of the crowd in a [`BodySet`], and their handles and moves, as a

@@ -7,7 +7,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use tileslide_web_bench::{
-    BenchError, CROWD, Crowd, Scenes, cast_scene_rays, floats_hash, median_seconds,
+    BenchError, CROWD, Crowd, Scenes, cast_scene_rays, cast_scene_rays_portable, floats_hash,
+    median_seconds,
 };
 
 /// Steps a crowd run makes (BENCHMARKS.md's 100).
@@ -50,6 +51,16 @@ fn time(dir: PathBuf, runs: usize) -> Result<(), BenchError> {
         answers = cast_scene_rays(&scenes)?;
         Ok(())
     })?;
+    let mut portable_answers = Vec::new();
+    let rays_portable = median_seconds(runs, || {
+        portable_answers = cast_scene_rays_portable(&scenes)?;
+        Ok(())
+    })?;
+    if floats_hash(&portable_answers) != floats_hash(&answers) {
+        return Err(BenchError::from_message(
+            "the portable walk's answers differ from cast_rays'",
+        ));
+    }
     let mut hash = 0;
     let crowd = median_seconds(runs.div_ceil(2), || {
         let mut crowd = Crowd::new(&scenes, CROWD)?;
@@ -60,7 +71,7 @@ fn time(dir: PathBuf, runs: usize) -> Result<(), BenchError> {
         Ok(())
     })? / CROWD_STEPS as f64;
     println!(
-        "{{\"raysSeconds\": {rays}, \"raysChecksum\": \"{:016x}\", \"crowdStepSeconds\": {crowd}, \"crowdHash\": \"{hash:016x}\", \"crowdSteps\": {CROWD_STEPS}}}",
+        "{{\"raysSeconds\": {rays}, \"raysChecksum\": \"{:016x}\", \"raysPortableSeconds\": {rays_portable}, \"crowdStepSeconds\": {crowd}, \"crowdHash\": \"{hash:016x}\", \"crowdSteps\": {CROWD_STEPS}}}",
         floats_hash(&answers)
     );
     Ok(())

@@ -51,7 +51,9 @@
 //!   shapes, configurations, filters, hits, contacts, reports, handles and ids (ids and
 //!   flags as their numbers). A [`BodyShape`] is read through [`BodyShape::compound`], so a
 //!   saved shape is checked as a built one is; other values are checked where they enter a
-//!   system, as built ones are.
+//!   system, as built ones are. Also snapshots: [`Bodies`], a [`HitWorld`]'s memory, a
+//!   [`Character`] and [`MapEdits`], saved at a step and restored to go on bit for bit as the run that was
+//!   never interrupted (rollback netcode, replays), and checked as they are read.
 //!
 //! ## Quick start
 //!
@@ -88,15 +90,18 @@ pub mod limits;
 mod owner;
 mod path;
 mod query;
+mod snapshot;
 mod tiles;
 mod volumes;
 
 pub use bodies::{
-    Bodies, Body, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, ResolveConfig,
-    ResolveReport, SlideMode,
+    Bodies, Body, BodyDesc, BodyError, BodyFate, BodyFilter, BodyHandle, BodyShape, BodyTrace,
+    ContactPart, ContactSource, ContactTrace, PassTrace, ResolveConfig, ResolveReport,
+    ResolveTrace, Response, SlideMode,
 };
 pub use controller::{
-    Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveOptions,
+    Character, CharacterShape, Contact, Contacts, ControllerConfig, ControllerError, MoveEvent,
+    MoveHit, MoveOptions, MoveTrace, OneWayPass, SlideResponse, Surface, SweepPurpose, SweepTrace,
 };
 pub use debug::{DebugKind, DebugLines};
 pub use geometry::aabb::Aabb;
@@ -107,10 +112,12 @@ pub use glam::Vec2;
 pub use owner::Owner;
 pub use path::{FlowField, NAV_MOVES, NavChange, NavConfig, NavError, NavGrid, NavPath};
 pub use query::{CastError, CircleHit, Faces, QueryFilter, RayHit, SegmentOverlap, SegmentSource};
+pub use snapshot::{MapEdits, SnapshotError};
 pub use tiles::{
-    ActiveSegment, Cell, JournalError, MapError, MapRevision, SegmentFlags, SegmentRef, ShapeError,
-    TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet, TileSetError,
-    TileShape,
+    ActivePiece, ActiveSegment, Cell, CellExplanation, CellSide, EndJoin, HiddenPart, JournalError,
+    MapError, MapRevision, PieceEnd, PlacedSegment, SegmentExplanation, SegmentFlags, SegmentRef,
+    ShapeError, TemporaryError, TemporarySegment, TileId, TileMap, TileSegment, TileSet,
+    TileSetError, TileShape, WallSource,
 };
 pub use volumes::{
     Facing, HitEvent, HitObject, HitRule, HitTypes, HitWorld, ObjectId, TeamRule, Volume,

@@ -1,7 +1,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 //! Proves, by seeded-random (proptest) inputs, that the loaders never panic: random bytes,
 //! and random mutations and truncations of the real `collision.bin` and levels, give `Ok` or
-//! `Err` from `parse_tile_set` / `parse_level`; random text and cell sizes never panic the
+//! `Err` from `parse_tile_set` / `parse_level` / `parse_objects`; random text and cell sizes never panic the
 //! ASCII parser, which also agrees cell by cell with a brute-force reference reading.
 
 mod replica_support;
@@ -12,7 +12,7 @@ use proptest::collection::vec;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 use replica_support::{data_dir, raw_level, read};
-use tileslide::io::{LoadErrorKind, Location, ascii, replica};
+use tileslide::io::{LoadError, LoadErrorKind, Location, ascii, replica};
 use tileslide::{Cell, QueryFilter, Ray, TileId, TileMap, TileSet, Vec2};
 
 /// 256 cases per property unless `PROPTEST_CASES` says otherwise (for long fuzz runs).
@@ -170,6 +170,7 @@ fn random_bytes_never_panic_parse_tile_set() {
         .run(&vec(any::<u8>(), 0..400), |data| {
             let _ = replica::parse_tile_set(&data, "random.bin");
             let _ = replica::parse_level(&data, "random.bin", Arc::clone(&empty));
+            let _ = replica::parse_objects(&data, "random.bin");
             Ok(())
         })
         .unwrap();
@@ -206,6 +207,7 @@ fn random_bytes_behind_valid_signatures_never_panic_the_loaders() {
             if let Ok(map) = replica::parse_level(&level, "level.bin", Arc::clone(&square)) {
                 poke(&map);
             }
+            let _ = replica::parse_objects(&level, "level.bin");
             Ok(())
         })
         .unwrap();
@@ -264,7 +266,7 @@ fn mutated_collision_bin_that_loads_builds_real_levels_without_panicking() {
 }
 
 #[test]
-fn mutated_real_levels_never_panic_parse_level() {
+fn mutated_real_levels_never_panic_parse_level_or_parse_objects() {
     let Some(dir) = data_dir() else { return };
     let set = collision_set(&dir);
     let levels = [
@@ -283,14 +285,31 @@ fn mutated_real_levels_never_panic_parse_level() {
                 edits.push(Edit::Set(header_edits % 18, (header_edits * 37) as u8));
             }
             let data = mutate(base, &edits, &floats[which], keep);
+            let check = |e: &LoadError| {
+                prop_assert!(e.to_string().starts_with("level.bin"));
+                if let Location::Byte(at) = e.location {
+                    prop_assert!(at <= data.len() as u64);
+                }
+                Ok(())
+            };
             match replica::parse_level(&data, "level.bin", Arc::clone(&set)) {
                 Ok(map) => poke(&map),
-                Err(e) => {
-                    prop_assert!(e.to_string().starts_with("level.bin"));
-                    if let Location::Byte(at) = e.location {
-                        prop_assert!(at <= data.len() as u64);
+                Err(e) => check(&e)?,
+            }
+            match replica::parse_objects(&data, "level.bin") {
+                // Every object and hot spot lies on the grid.
+                Ok(level) => {
+                    for o in &level.objects {
+                        prop_assert!(o.cell.col < level.width && o.cell.row < level.height);
+                    }
+                    if let Some(spots) = &level.hot_spots {
+                        prop_assert_eq!(
+                            (spots.width(), spots.height()),
+                            (level.width, level.height)
+                        );
                     }
                 }
+                Err(e) => check(&e)?,
             }
             Ok(())
         })

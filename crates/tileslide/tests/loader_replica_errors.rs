@@ -1,9 +1,12 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 //! Proves that every error of the Replica Island loaders (tile set and level) is reported
-//! with the right kind at the right byte offset, and that its message names the file.
+//! with the right kind at the right byte offset, and that its message names the file; and
+//! that a level's objects and hot spots are read from hand-made bytes as FORMAT.md and the
+//! game lay them out.
 
 use std::sync::Arc;
 
+use tileslide::io::replica::{HotSpotKind, ObjectKind};
 use tileslide::io::{LoadError, LoadErrorKind, Location, replica};
 use tileslide::{Cell, ShapeError, TileId, TileMap, TileSet, TileSetError, Vec2};
 
@@ -689,4 +692,250 @@ fn loaded_map_matches_one_built_directly() {
             assert!(map.active_segments(cell).eq(direct.active_segments(cell)));
         }
     }
+}
+
+// ---------------------------------------------------------------------------------------
+// Objects and hot spots (`parse_objects`).
+
+fn objects_err(data: &[u8]) -> LoadError {
+    replica::parse_objects(data, "levels/level_9_9.bin").unwrap_err()
+}
+
+/// Offset of the `n`-th layer's `type` byte in a level of `w × h` layers.
+fn layer_at(n: usize, w: i32, h: i32) -> u64 {
+    (FIRST_LAYER + n * (15 + (w * h) as usize)) as u64
+}
+
+#[test]
+fn objects_are_read_with_their_type_number_kind_cell_and_pixels() {
+    // 3 × 2 cells, top row first: a coin and a bat on top, the player bottom right; -1
+    // and -7 are empty, 4 is a number the game does not define.
+    let data = level_bytes(&[
+        layer_bytes(0, 5, 1, &[1; 5]),
+        layer_bytes(1, 3, 2, &[-1; 6]),
+        layer_bytes(2, 3, 2, &[1, 6, -1, 4, -7, 0]),
+        layer_bytes(3, 3, 2, &[9, -1, 39, -1, -1, 13]),
+    ]);
+    let level = replica::parse_objects(&data, "l.bin").unwrap();
+    assert_eq!((level.width, level.height), (3, 2));
+    let got: Vec<(u8, Option<ObjectKind>, Cell, Vec2)> = level
+        .objects
+        .iter()
+        .map(|o| (o.type_number, o.kind, o.cell, o.position))
+        .collect();
+    assert_eq!(
+        got,
+        [
+            (
+                1,
+                Some(ObjectKind::Coin),
+                Cell::new(0, 1),
+                Vec2::new(0.0, 32.0)
+            ),
+            (
+                6,
+                Some(ObjectKind::Bat),
+                Cell::new(1, 1),
+                Vec2::new(32.0, 32.0)
+            ),
+            (4, None, Cell::new(0, 0), Vec2::new(0.0, 0.0)),
+            (
+                0,
+                Some(ObjectKind::Player),
+                Cell::new(2, 0),
+                Vec2::new(64.0, 0.0)
+            ),
+        ]
+    );
+    assert_eq!(level.player_spawn().unwrap().cell, Cell::new(2, 0));
+    assert_eq!(level.of_kind(ObjectKind::Bat).count(), 1);
+    let spots = level.hot_spots.as_ref().unwrap();
+    assert_eq!(spots.kind(Cell::new(0, 1)), Some(HotSpotKind::Die));
+    assert_eq!(
+        spots.kind(Cell::new(2, 1)),
+        Some(HotSpotKind::NpcSelectDialog {
+            character: 2,
+            entry: 2
+        })
+    );
+    assert_eq!(spots.kind(Cell::new(2, 0)), Some(HotSpotKind::EndLevel));
+    assert_eq!(spots.iter().count(), 3);
+    assert_eq!(level.cut_short, None);
+}
+
+#[test]
+fn objects_of_a_level_without_object_or_hot_spot_layers_are_none() {
+    let level =
+        replica::parse_objects(&level_bytes(&[layer_bytes(1, 2, 1, &[1, 1])]), "l").unwrap();
+    assert!(level.objects.is_empty());
+    assert_eq!(level.hot_spots, None);
+    assert_eq!(level.player_spawn(), None);
+}
+
+#[test]
+fn objects_the_game_spawns_twice_start_the_player_at_the_last() {
+    // The game spawns a player at each `PLAYER` cell and plays the last one spawned.
+    let data = level_bytes(&[
+        layer_bytes(1, 2, 2, &[-1; 4]),
+        layer_bytes(2, 2, 2, &[0, -1, -1, 0]),
+    ]);
+    let level = replica::parse_objects(&data, "l").unwrap();
+    assert_eq!(level.of_kind(ObjectKind::Player).count(), 2);
+    assert_eq!(level.player_spawn().unwrap().cell, Cell::new(1, 0));
+}
+
+#[test]
+fn objects_a_cut_short_last_object_or_hot_spot_layer_is_read_as_empty_and_reported() {
+    for layer_type in [2, 3] {
+        let data = level_bytes(&[
+            layer_bytes(1, 2, 2, &[1; 4]),
+            layer_bytes(layer_type, 2, 2, &[0, 1]),
+        ]);
+        let level = replica::parse_objects(&data, "l").unwrap();
+        let cut = level.cut_short.unwrap();
+        assert_eq!(
+            (cut.index, cut.layer_type, cut.cells, cut.present),
+            (1, layer_type, 4, 2)
+        );
+        assert_eq!(cut.cells_at, layer_at(1, 2, 2) + 15);
+        assert!(level.objects.is_empty() && level.hot_spots.is_none());
+    }
+}
+
+#[test]
+fn objects_a_cut_short_layer_that_is_not_the_last_is_an_error() {
+    // Three layers declared, the file ends in the second.
+    let mut data = level_bytes(&[layer_bytes(1, 2, 2, &[1; 4]), layer_bytes(2, 2, 2, &[0, 1])]);
+    data[1] = 3;
+    let e = objects_err(&data);
+    assert_eq!(e.location, Location::Byte(layer_at(1, 2, 2) + 7));
+    assert!(
+        e.to_string().contains("need 4 bytes but only 2 remain"),
+        "{e}"
+    );
+    assert_names_file(&e, "levels/level_9_9.bin");
+    // A cut-short background or collision layer is an error even when it is the last.
+    for layer_type in [0, 1] {
+        let data = level_bytes(&[
+            layer_bytes(1, 2, 2, &[1; 4]),
+            layer_bytes(layer_type, 2, 2, &[1; 3]),
+        ]);
+        let e = objects_err(&data);
+        assert!(e.to_string().contains("only 3 remain"), "{layer_type}: {e}");
+    }
+    // And so is a cut-short last object layer whose size is not the collision layer's.
+    let data = level_bytes(&[layer_bytes(1, 2, 2, &[1; 4]), layer_bytes(2, 3, 2, &[0])]);
+    let e = objects_err(&data);
+    assert_eq!(e.location, Location::Byte(layer_at(1, 2, 2) + 7));
+    assert!(
+        e.to_string().contains("3×2 cells, the collision layer 2×2"),
+        "{e}"
+    );
+}
+
+#[test]
+fn objects_absurd_object_layer_size_is_refused_before_allocating() {
+    let data = level_bytes(&[
+        layer_bytes(1, 2, 2, &[1; 4]),
+        layer_bytes(2, i32::MAX, i32::MAX, &[0; 8]),
+        layer_bytes(3, 2, 2, &[0; 4]),
+    ]);
+    let e = objects_err(&data);
+    assert_eq!(e.location, Location::Byte(layer_at(1, 2, 2) + 7));
+    let expected = i64::from(i32::MAX) * i64::from(i32::MAX);
+    assert!(
+        matches!(&e.kind, LoadErrorKind::BadSize { value, .. } if *value == expected),
+        "{e}"
+    );
+    assert!(e.to_string().contains("only 27 remain"), "{e}");
+    // A negative size is refused at its field.
+    let data = level_bytes(&[layer_bytes(1, 2, 2, &[1; 4]), layer_bytes(2, 2, -2, &[])]);
+    let e = objects_err(&data);
+    assert_eq!(e.location, Location::Byte(layer_at(1, 2, 2) + 11));
+    assert!(
+        matches!(
+            e.kind,
+            LoadErrorKind::BadSize {
+                field: "height",
+                ..
+            }
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn objects_a_layer_of_another_size_than_the_collision_layer_is_refused() {
+    for layer_type in [2, 3] {
+        // Before the collision layer, or after it: the same error at the layer's width.
+        let (small, big) = (
+            layer_bytes(layer_type, 1, 2, &[0, 0]),
+            layer_bytes(1, 2, 2, &[1; 4]),
+        );
+        let e = objects_err(&level_bytes(&[small.clone(), big.clone()]));
+        assert_eq!(e.location, Location::Byte(WIDTH_AT));
+        assert!(
+            e.to_string().contains(&format!(
+                "the layer of type {layer_type} has 1×2 cells, the collision layer 2×2"
+            )),
+            "{e}"
+        );
+        let e = objects_err(&level_bytes(&[big, small]));
+        assert_eq!(e.location, Location::Byte(layer_at(1, 2, 2) + 7));
+    }
+}
+
+#[test]
+fn objects_a_second_object_or_hot_spot_layer_is_refused_at_its_type() {
+    for layer_type in [2, 3] {
+        let data = level_bytes(&[
+            layer_bytes(1, 1, 1, &[1]),
+            layer_bytes(layer_type, 1, 1, &[0]),
+            layer_bytes(layer_type, 1, 1, &[0]),
+        ]);
+        let e = objects_err(&data);
+        assert_eq!(e.location, Location::Byte(layer_at(2, 1, 1)));
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "levels/level_9_9.bin: byte {}: layer 2: `type` is {layer_type} again, \
+                 expected at most one object layer (2) and one hot-spot layer (3)",
+                layer_at(2, 1, 1)
+            )
+        );
+    }
+}
+
+#[test]
+fn objects_bytes_after_the_last_layer_are_refused() {
+    let mut data = level_bytes(&[layer_bytes(1, 1, 1, &[1]), layer_bytes(2, 1, 1, &[0])]);
+    let end = data.len() as u64;
+    data.extend([7, 7]);
+    let e = objects_err(&data);
+    assert_eq!(e.location, Location::Byte(end));
+    assert!(matches!(e.kind, LoadErrorKind::TrailingBytes(2)), "{e}");
+}
+
+#[test]
+fn objects_of_a_file_that_is_not_a_level_are_refused_as_parse_level_refuses_them() {
+    let set = tile_set_bytes(&[(1, &SQUARE)]);
+    for data in [
+        set.as_slice(),
+        &[96],
+        &[96, 0xff, 0],
+        &[96, 0, 0],
+        &[96, 1, 0, 1, 0, 0, 0, 0, 0, 41],
+    ] {
+        let e = objects_err(data);
+        let f = level_err(data);
+        assert_eq!((e.location, e.to_string()), (f.location, f.to_string()));
+    }
+}
+
+#[test]
+fn objects_loaded_from_disk_name_the_path_they_were_given() {
+    let path = "/nonexistent-tileslide-dir/level_1_1_island.bin";
+    let e = replica::load_objects(path).unwrap_err();
+    assert_eq!(e.io_error_kind(), Some(std::io::ErrorKind::NotFound), "{e}");
+    assert!(e.to_string().starts_with(path), "{e}");
 }

@@ -202,14 +202,14 @@ impl BodyDesc {
 /// A body's state.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Body {
-    pub(super) position: Vec2,
-    pub(super) shape: BodyShape,
-    pub(super) filter: BodyFilter,
-    pub(super) owner: Owner,
+    pub(crate) position: Vec2,
+    pub(crate) shape: BodyShape,
+    pub(crate) filter: BodyFilter,
+    pub(crate) owner: Owner,
     /// The move the caller proposed for this step.
-    pub(super) proposed: Vec2,
+    pub(crate) proposed: Vec2,
     /// The move `resolve` settled on (the proposed one until then).
-    pub(super) resolved: Vec2,
+    pub(crate) resolved: Vec2,
 }
 
 impl Body {

@@ -59,7 +59,7 @@ pub(super) fn band(distance2: f32, radius: f32, gap: f32) -> f32 {
 /// than `1 − TANGENT_EPSILON²/2` of the centres' distance anywhere along it, so it is not a
 /// contact. Only for round obstacles: along a flat side a lean adds up with the length of
 /// the move, so the same tolerance would let a body creep into the wall.
-fn grazes(hit: SweepHit, motion: Vec2) -> bool {
+pub(super) fn grazes(hit: SweepHit, motion: Vec2) -> bool {
     hit.t == 0.0 && hit.normal.dot(motion) >= -TANGENT_EPSILON * motion.length()
 }
 
@@ -156,6 +156,14 @@ pub(super) fn slide(
     } else {
         slid
     }
+}
+
+/// Whether a remainder `blocked` meets a contact with `normal` head-on: its projection on the
+/// tangent is within [`TIE_EPSILON`] of its length, the test `slide` makes (a wall then
+/// stops the body; two bodies take the tie-break).
+pub(super) fn is_head_on(blocked: Vec2, normal: Vec2) -> bool {
+    let perp = Vec2::new(normal.y, -normal.x);
+    blocked.dot(perp).abs() <= TIE_EPSILON * blocked.length()
 }
 
 /// Negation when `yes`, by flipping the sign bit with an integer mask: the same bits as

@@ -23,11 +23,16 @@ mod map_watch;
 mod near_walls;
 mod neighbours;
 mod resolver;
-mod set;
+pub(crate) mod set;
 mod settled;
+mod trace;
 
 pub use body::{Body, BodyDesc, BodyFilter, BodyShape};
 pub use config::{ResolveConfig, ResolveReport, SlideMode};
 pub use error::BodyError;
 pub use handle::BodyHandle;
 pub use set::Bodies;
+pub use trace::{
+    BodyFate, BodyTrace, ContactPart, ContactSource, ContactTrace, PassTrace, ResolveTrace,
+    Response,
+};

@@ -10,6 +10,7 @@ use edge::Footing;
 
 use super::contact::{Contact, Contacts, Surface};
 use super::platform::Riding;
+use super::trace::{Log, MoveEvent, MoveTrace, OneWayPass, SlideResponse, SweepPurpose};
 use super::{CharacterShape, ControllerError};
 use crate::geometry::{Aabb, MAX_COORD, Segment, SweepHit, in_range};
 use crate::query::{Capsule, QueryFilter, SegmentSource, Wall};
@@ -149,24 +150,31 @@ pub struct MoveOptions {
 pub struct Character {
     /// The shape's centre, in world coordinates.
     pub position: Vec2,
-    shape: CharacterShape,
-    up: Vec2,
+    pub(crate) shape: CharacterShape,
+    pub(crate) up: Vec2,
     /// The sideways axis (towards higher x, perpendicular to `up`).
-    side: Vec2,
-    config: ControllerConfig,
+    pub(crate) side: Vec2,
+    pub(crate) config: ControllerConfig,
     /// Cosine of the slope limit.
     walkable: f32,
     /// The ground under the character after its last move.
-    pub(super) ground: Option<Contact>,
+    pub(crate) ground: Option<Contact>,
     /// Whether that ground is a rounded corner (a circle on a segment's end).
-    ground_corner: bool,
+    pub(crate) ground_corner: bool,
     /// The moving platform it stands on, if its ground is one.
-    pub(super) riding: Option<Riding>,
+    pub(crate) riding: Option<Riding>,
     /// Scratch: the segments near the current sweep.
     walls: Vec<Wall>,
     /// Scratch: where whether a walk has ground below it can change (see
     /// [`edge`](Self::edge)).
     events: Vec<f32>,
+}
+
+/// The sideways axis of a character whose unit up is `up`: the map's x axis made
+/// perpendicular to up (so "left" and "right" are the screen's whichever way y points);
+/// for an up along x, up turned a quarter.
+pub(crate) fn side_of(up: Vec2) -> Vec2 {
+    (Vec2::X - up * up.x).try_normalize().unwrap_or(up.perp())
 }
 
 /// Moves shorter than this are not swept (they are rounding, not motion).
@@ -221,14 +229,11 @@ impl Character {
             value: up,
         })?;
         config.validate()?;
-        // Sideways is the map's x axis made perpendicular to up (so "left" and "right" are
-        // the screen's whichever way y points); for an up along x, up turned a quarter.
-        let side = (Vec2::X - up * up.x).try_normalize().unwrap_or(up.perp());
         Ok(Self {
             position,
             shape,
             up,
-            side,
+            side: side_of(up),
             walkable: config.max_slope_degrees.to_radians().cos(),
             config,
             ground: None,
@@ -283,6 +288,38 @@ impl Character {
         displacement: Vec2,
         options: MoveOptions,
     ) -> Result<Contacts, ControllerError> {
+        self.move_logged(map, displacement, options, &mut Log::off())
+    }
+
+    /// [`move_by`](Self::move_by), recording into `trace` what the move did: each sweep
+    /// with the surface it met (a tile's cell, tile and segment, or a temporary segment's
+    /// owner and index), time of impact, point and normal; what the move did with it
+    /// (landed, walked on, slid, stopped, rolled round a corner); steps up, one-way
+    /// platforms passed from below or dropped through, the platform carry and pushes,
+    /// crushes, where a walk left the ground, and the ground it ends on. The character moves
+    /// exactly as `move_by` moves it.
+    ///
+    /// # Errors
+    /// What [`move_by`](Self::move_by) refuses (the trace then holds no event).
+    pub fn move_by_traced(
+        &mut self,
+        map: &TileMap,
+        displacement: Vec2,
+        options: MoveOptions,
+        trace: &mut MoveTrace,
+    ) -> Result<Contacts, ControllerError> {
+        let mut log = Log::recording(trace, self.position, displacement);
+        self.move_logged(map, displacement, options, &mut log)
+    }
+
+    /// [`move_by`](Self::move_by), telling `log`.
+    fn move_logged(
+        &mut self,
+        map: &TileMap,
+        displacement: Vec2,
+        options: MoveOptions,
+        log: &mut Log<'_>,
+    ) -> Result<Contacts, ControllerError> {
         finite("displacement", displacement)?;
         // (`position` is a public field: checked here too.)
         placed("position", self.position)?;
@@ -295,8 +332,8 @@ impl Character {
         let mut contacts = Contacts::default();
         // Platforms moved first (the game submitted their new segments): go along with the
         // one stood on, and out of any that moved into the character.
-        self.ride(map, options);
-        self.push_out(map, options, &mut contacts);
+        self.ride(map, options, log);
+        self.push_out(map, options, &mut contacts, log);
         let rise = displacement.dot(self.up);
         let sideways = displacement.dot(self.side);
         // On the ground and neither jumping nor dropping through it: walk along it, and let
@@ -311,15 +348,15 @@ impl Character {
         let (mut ends, last, mut left) = if let Some(ground) = walking {
             let walk = along(ground.normal, self.side, sideways);
             let line = self.ground_line(ground.normal, self.ground_corner);
-            self.slide(map, walk, Some(line), None, options, &mut contacts)
+            self.slide(map, walk, Some(line), None, options, &mut contacts, log)
         } else {
-            self.slide(map, displacement, None, None, options, &mut contacts)
+            self.slide(map, displacement, None, None, options, &mut contacts, log)
         };
         // Find the ground under the character: within the snap distance when it walked (so
         // it follows ramps down and steps down small ledges; a landing walks on, as the
         // next step would), within two skins otherwise (touching, not snapping).
         if left.is_none() {
-            contacts.ground = self.settle(map, self.reach(ends), options);
+            contacts.ground = self.settle(map, self.reach(ends), options, log);
             // No ground at the end of a walk whose last leg seemed to have some all along
             // (rounding at an edge): the walk ends where it does along that leg.
             if contacts.ground.is_none()
@@ -327,7 +364,7 @@ impl Character {
                 && let Some((from, leg)) = last
                 && let Some((f, footing)) = self.edge(map, from, leg, false, options)
             {
-                self.step_off(map, from + leg * f, &footing, options);
+                self.step_off(map, from + leg * f, &footing, options, log);
                 left = Some(footing);
             }
         }
@@ -344,11 +381,15 @@ impl Character {
             // as the move presses it there, as a circle meeting it in the air does.
             let mut first = None;
             if let Some(corner) = footing.corner {
-                (rest, first) = self.roll(map, corner, rest, options);
+                (rest, first) = self.roll(map, corner, rest, options, log);
             }
-            (ends, _, _) = self.slide(map, rest, None, first, options, &mut contacts);
-            contacts.ground = self.settle(map, self.reach(ends), options);
+            (ends, _, _) = self.slide(map, rest, None, first, options, &mut contacts, log);
+            contacts.ground = self.settle(map, self.reach(ends), options, log);
         }
+        if contacts.ground.is_none() {
+            log.push(MoveEvent::Airborne);
+        }
+        log.end(self.position);
         self.ground = contacts.ground;
         self.riding = contacts.ground.and_then(|ground| Riding::on(map, &ground));
         Ok(contacts)
@@ -376,7 +417,8 @@ impl Character {
         options: MoveOptions,
     ) -> Option<(SweepHit, Wall, f32)> {
         let down = -self.up * reach;
-        let ((first, _), (hit, wall)) = match self.first_hits(map, down, options, None) {
+        let probe = &mut Log::off();
+        let ((first, _), (hit, wall)) = match self.first_hits(map, down, options, None, probe) {
             (Some(first), Some(ground)) => (first, ground),
             _ => return None,
         };
@@ -398,6 +440,7 @@ impl Character {
     /// clear to its end, that leg (its start and motion); and when a walk left the ground
     /// (see [`edge`](Self::edge)), the ground just before, the character having stopped
     /// there.
+    #[allow(clippy::too_many_arguments)]
     fn slide(
         &mut self,
         map: &TileMap,
@@ -406,6 +449,7 @@ impl Character {
         mut first: Option<Met>,
         options: MoveOptions,
         contacts: &mut Contacts,
+        log: &mut Log<'_>,
     ) -> (Phase, Option<(Vec2, Vec2)>, Option<Footing>) {
         let mut remaining = motion;
         for _ in 0..self.config.max_slides {
@@ -415,9 +459,14 @@ impl Character {
                 Phase::Air
             };
             let from = self.position;
+            log.purpose(if phase == Phase::Walk {
+                SweepPurpose::Walk
+            } else {
+                SweepPurpose::Air
+            });
             let gone = match first.take() {
                 Some((hit, wall)) => Some((hit, wall, remaining)),
-                None => self.go(map, remaining, options, None),
+                None => self.go(map, remaining, options, None, log),
             };
             // The walk leaves the ground where the ground ends under this leg, even if there
             // is ground again further on: a gap is not stepped over, however long the step.
@@ -425,7 +474,7 @@ impl Character {
                 && let leg = self.position - from
                 && let Some((f, footing)) = self.edge(map, from, leg, true, options)
             {
-                self.step_off(map, from + leg * f, &footing, options);
+                self.step_off(map, from + leg * f, &footing, options, log);
                 return (phase, None, Some(footing));
             }
             let Some((hit, wall, rest)) = gone else {
@@ -450,7 +499,7 @@ impl Character {
             if let Some(line) = line
                 && self.config.step_height > 0.0
                 && matches!(surface, Surface::Left | Surface::Right)
-                && self.step_up(map, rest, &line, options)
+                && self.step_up(map, rest, &line, options, log)
             {
                 return (Phase::Walk, None, None);
             }
@@ -469,24 +518,38 @@ impl Character {
                 surface == Surface::Ground && (phase == Phase::Walk || rest.dot(self.up) <= 0.0);
             if phase == Phase::Air && !landing && self.at_rounded_corner(&hit, &wall) {
                 let corner = nearest_end(&wall.capsule.segment, self.position);
-                (remaining, first) = self.roll(map, corner, rest, options);
+                (remaining, first) = self.roll(map, corner, rest, options, log);
+                if log.is_on() {
+                    let (response, next) = (SlideResponse::Rolled, remaining);
+                    log.push(MoveEvent::Slide {
+                        surface,
+                        response,
+                        next,
+                    });
+                }
                 continue;
             }
             let slid = rest - hit.normal * rest.dot(hit.normal);
-            remaining = match (phase, surface) {
+            let response;
+            (remaining, response) = match (phase, surface) {
                 // Walking onto walkable ground (a ramp up, or down onto a floor), or landing
                 // on it: on along it, keeping the sideways progress still to make (a smaller
                 // step would walk on from there in its next steps).
                 (_, Surface::Ground) if landing => {
                     line = Some(self.ground_line(hit.normal, self.at_rounded_corner(&hit, &wall)));
-                    along(hit.normal, self.side, rest.dot(self.side))
+                    let on = along(hit.normal, self.side, rest.dot(self.side));
+                    if phase == Phase::Air {
+                        (on, SlideResponse::Landed)
+                    } else {
+                        (on, SlideResponse::WalkedOn)
+                    }
                 }
                 // A wall or steep slope: slide along it, but a walk never climbs it.
                 (Phase::Walk, Surface::Left | Surface::Right) => {
                     if slid.dot(self.up) > 0.0 {
-                        Vec2::ZERO
+                        (Vec2::ZERO, SlideResponse::Stopped)
                     } else {
-                        slid
+                        (slid, SlideResponse::SlidAlong)
                     }
                 }
                 // In the air, sideways motion does not carry the character up a steep slope
@@ -497,10 +560,18 @@ impl Character {
                 {
                     let vertical = self.up * rest.dot(self.up);
                     let into = vertical.dot(hit.normal).min(0.0);
-                    vertical - hit.normal * into
+                    (vertical - hit.normal * into, SlideResponse::SlidDown)
                 }
-                _ => slid,
+                _ => (slid, SlideResponse::SlidAlong),
             };
+            if log.is_on() {
+                let next = remaining;
+                log.push(MoveEvent::Slide {
+                    surface,
+                    response,
+                    next,
+                });
+            }
         }
         let phase = if line.is_some() {
             Phase::Walk
@@ -554,6 +625,7 @@ impl Character {
         motion: Vec2,
         options: MoveOptions,
         exclude: Option<Owner>,
+        log: &mut Log<'_>,
     ) -> Option<(SweepHit, Wall, Vec2)> {
         let length = motion.length();
         // (Not finite only for absurd displacements scaled up along a steep ramp.)
@@ -562,8 +634,10 @@ impl Character {
         }
         let dir = motion / length;
         let reach = length + self.config.skin;
-        let Some((hit, wall)) = self.first_hit(map, dir * reach, options, exclude) else {
+        let from = self.position;
+        let Some((hit, wall)) = self.first_hit(map, dir * reach, options, exclude, log) else {
             self.position += motion;
+            log.sweep(map, from, motion, None, self.position);
             return None;
         };
         let approach = -dir.dot(hit.normal);
@@ -574,6 +648,13 @@ impl Character {
         };
         let advance = (reach * hit.t - back).clamp(0.0, length);
         self.position += dir * advance;
+        log.sweep(
+            map,
+            from,
+            motion,
+            Some((hit, &wall, dir * reach)),
+            self.position,
+        );
         Some((hit, wall, motion - dir * advance))
     }
 
@@ -591,26 +672,39 @@ impl Character {
         rest: Vec2,
         line: &GroundLine,
         options: MoveOptions,
+        log: &mut Log<'_>,
     ) -> bool {
         let start = self.position;
         let forward = self.side * rest.dot(self.side);
         if forward.length() <= MIN_MOVE {
             return false;
         }
-        self.go(map, self.up * self.config.step_height, options, None);
+        log.purpose(SweepPurpose::StepUp);
+        self.go(map, self.up * self.config.step_height, options, None, log);
         let raised = (self.position - start).dot(self.up);
         let lifted = self.position;
-        self.go(map, forward, options, None);
+        self.go(map, forward, options, None, log);
         let progress = (self.position - lifted).dot(self.side).abs();
         let landed = progress > self.config.skin
             && self
-                .go(map, -self.up * (raised + self.config.skin), options, None)
+                .go(
+                    map,
+                    -self.up * (raised + self.config.skin),
+                    options,
+                    None,
+                    log,
+                )
                 .is_some_and(|(hit, _, _)| {
                     Surface::of(hit.normal, self.up, self.side, self.walkable) == Surface::Ground
                         && self.climb(line, hit.normal) <= self.config.step_height + self.slack()
                 });
-        if !landed {
+        if landed {
+            log.push(MoveEvent::SteppedUp {
+                by: self.position - start,
+            });
+        } else {
             self.position = start;
+            log.push(MoveEvent::StepUpRefused);
         }
         landed
     }
@@ -618,10 +712,26 @@ impl Character {
     /// Looks up to `reach` below the character for walkable ground (see
     /// [`ground_hit`](Self::ground_hit)); if found, moves onto it (a skin above) and
     /// returns it.
-    fn settle(&mut self, map: &TileMap, reach: f32, options: MoveOptions) -> Option<Contact> {
+    fn settle(
+        &mut self,
+        map: &TileMap,
+        reach: f32,
+        options: MoveOptions,
+        log: &mut Log<'_>,
+    ) -> Option<Contact> {
         let (hit, wall, drop) = self.ground_hit(map, reach, options)?;
         self.position -= self.up * drop;
         self.ground_corner = self.at_rounded_corner(&hit, &wall);
+        if log.is_on()
+            && let Some(source) = wall.source.wall_source(map)
+        {
+            let normal = hit.normal;
+            log.push(MoveEvent::Grounded {
+                source,
+                normal,
+                drop,
+            });
+        }
         Some(Contact {
             normal: hit.normal,
             flags: wall.flags,
@@ -639,8 +749,9 @@ impl Character {
         motion: Vec2,
         options: MoveOptions,
         exclude: Option<Owner>,
+        log: &mut Log<'_>,
     ) -> Option<Met> {
-        self.first_hits(map, motion, options, exclude).0
+        self.first_hits(map, motion, options, exclude, log).0
     }
 
     /// [`first_hit`](Self::first_hit), and the first walkable ground met (ranked alike).
@@ -650,6 +761,7 @@ impl Character {
         motion: Vec2,
         options: MoveOptions,
         exclude: Option<Owner>,
+        log: &mut Log<'_>,
     ) -> (Option<Met>, Option<Met>) {
         let (start, end) = (
             self.shape.bounds(self.position),
@@ -666,6 +778,9 @@ impl Character {
         for wall in &self.walls {
             let capsule = &wall.capsule;
             if !self.held_by(wall.flags, capsule.segment.a, capsule.normal, options) {
+                if log.is_on() {
+                    self.log_one_way(map, wall, motion, options, log);
+                }
                 continue;
             }
             let Some(mut hit) = self.shape.sweep(capsule, self.position, motion) else {
@@ -745,10 +860,49 @@ impl Character {
             return false;
         }
         if flags.contains(SegmentFlags::ONE_WAY) && !flags.contains(SegmentFlags::SOLID) {
-            let height = (self.position - point).dot(normal) - self.shape.support(normal);
-            return !options.drop_through && height >= -2.0 * self.config.skin;
+            return !options.drop_through && self.is_on_or_above(point, normal);
         }
         true
+    }
+
+    /// Whether the character's lowest point towards a line through `point` with unit
+    /// `normal` is on or above it, give or take two skins: where a one-way platform holds
+    /// it.
+    fn is_on_or_above(&self, point: Vec2, normal: Vec2) -> bool {
+        let height = (self.position - point).dot(normal) - self.shape.support(normal);
+        height >= -2.0 * self.config.skin
+    }
+
+    /// Records a one-way platform `wall` (which [`held_by`](Self::held_by) just let the
+    /// move by `motion` through) if the move crosses it, from either side, and why it let
+    /// the character through.
+    fn log_one_way(
+        &self,
+        map: &TileMap,
+        wall: &Wall,
+        motion: Vec2,
+        options: MoveOptions,
+        log: &mut Log<'_>,
+    ) {
+        let capsule = &wall.capsule;
+        if !wall.flags.contains(SegmentFlags::ONE_WAY) || !wall.flags.intersects(self.config.mask) {
+            return;
+        }
+        let segment = Segment::new(capsule.segment.b, capsule.segment.a);
+        let back = Capsule::new(segment, -capsule.normal, [capsule.caps[1], capsule.caps[0]]);
+        let crossed = [capsule, &back]
+            .into_iter()
+            .any(|c| self.shape.sweep(c, self.position, motion).is_some());
+        let Some(source) = wall.source.wall_source(map).filter(|_| crossed) else {
+            return;
+        };
+        let pass = if options.drop_through && self.is_on_or_above(capsule.segment.a, capsule.normal)
+        {
+            OneWayPass::DroppedThrough
+        } else {
+            OneWayPass::FromBelow
+        };
+        log.push(MoveEvent::OneWay { source, pass });
     }
 
     /// `wall`'s rounded ends, less those its neighbours cover for this character on this

@@ -48,14 +48,18 @@ impl Contacts {
     }
 }
 
-/// Which kind of surface a contact normal makes, for a character whose up is `up`, whose
-/// sideways axis is `side` (towards higher x), and whose steepest walkable slope has
-/// cosine `walkable`.
+/// Which kind of surface a contact makes for a character: what its normal says given the
+/// character's up, its sideways axis (towards higher x) and its slope limit.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Surface {
+pub enum Surface {
+    /// Walkable ground: the normal is within the slope limit of up.
     Ground,
+    /// A ceiling: the normal is within the slope limit of down.
     Ceiling,
+    /// A wall or steep slope on the character's left (lower x): its normal points right.
     Left,
+    /// A wall or steep slope on the character's right: its normal points left.
     Right,
 }
 

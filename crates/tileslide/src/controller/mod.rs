@@ -6,16 +6,20 @@
 //! edges, then snaps the box flush and casts short alignment rays; tileslide sweeps the
 //! whole shape exactly instead (see `docs/controller.md` for how the two differ and why).
 
-mod character;
+pub(crate) mod character;
 mod contact;
 mod debug_lines;
-mod platform;
+pub(crate) mod platform;
 mod shape;
+mod trace;
 mod velocity;
 
 pub use character::{Character, ControllerConfig, MoveOptions};
-pub use contact::{Contact, Contacts};
+pub use contact::{Contact, Contacts, Surface};
 pub use shape::CharacterShape;
+pub use trace::{
+    MoveEvent, MoveHit, MoveTrace, OneWayPass, SlideResponse, SweepPurpose, SweepTrace,
+};
 
 use glam::Vec2;
 

@@ -14,18 +14,19 @@
 
 use glam::Vec2;
 
+use super::trace::{Log, MoveEvent, SweepPurpose};
 use super::{Character, Contact, Contacts, MoveOptions};
 use crate::geometry::Segment;
 use crate::query::{Capsule, SegmentSource};
-use crate::tiles::{Owner, SegmentFlags, TileMap};
+use crate::tiles::{Owner, SegmentFlags, TileMap, WallSource};
 
 /// The moving platform a character stands on.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Riding {
-    owner: Owner,
+pub(crate) struct Riding {
+    pub(crate) owner: Owner,
     /// The segment stood on: its midpoint and (corrected) normal when last seen.
-    middle: Vec2,
-    normal: Vec2,
+    pub(crate) middle: Vec2,
+    pub(crate) normal: Vec2,
 }
 
 impl Riding {
@@ -84,18 +85,22 @@ impl Contact {
 impl Character {
     /// Carries the character by the move of the platform it stood on (see the module's
     /// documentation). Off the platform when its owner has no such segment any more.
-    pub(super) fn ride(&mut self, map: &TileMap, options: MoveOptions) {
+    pub(super) fn ride(&mut self, map: &TileMap, options: MoveOptions, log: &mut Log<'_>) {
         let Some(riding) = self.riding else {
             return;
         };
+        let owner = riding.owner;
         let Some(middle) = riding.find(map) else {
+            log.push(MoveEvent::PlatformGone { owner });
             self.riding = None;
             self.ground = None;
             return;
         };
         let carried = middle - riding.middle;
         if carried != Vec2::ZERO {
-            self.go(map, carried, options, Some(riding.owner));
+            log.push(MoveEvent::Carried { owner, by: carried });
+            log.purpose(SweepPurpose::Carry);
+            self.go(map, carried, options, Some(owner), log);
         }
     }
 
@@ -111,6 +116,7 @@ impl Character {
         map: &TileMap,
         options: MoveOptions,
         contacts: &mut Contacts,
+        log: &mut Log<'_>,
     ) {
         let skin = self.config().skin;
         for (index, platform) in map.temporaries().iter().enumerate() {
@@ -127,14 +133,23 @@ impl Character {
                 continue;
             }
             let before = self.position;
+            log.purpose(SweepPurpose::PushOut);
             self.go(
                 map,
                 capsule.normal * (depth + skin),
                 options,
                 Some(platform.owner),
+                log,
             );
             // Short of the depth (not of the extra skin): the world is in the way.
-            if (self.position - before).dot(capsule.normal) < depth - 0.5 * skin {
+            let crushed = (self.position - before).dot(capsule.normal) < depth - 0.5 * skin;
+            let owner = platform.owner;
+            log.push(MoveEvent::Pushed {
+                source: WallSource::Temporary { owner, index },
+                depth,
+                crushed,
+            });
+            if crushed {
                 contacts.crush = Some(Contact {
                     normal: capsule.normal,
                     flags: platform.flags,

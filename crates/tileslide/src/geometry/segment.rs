@@ -39,6 +39,7 @@ impl Segment {
 
     /// The point at fraction `s` from `a` (0) to `b` (1).
     #[must_use]
+    #[inline]
     pub fn point_at(&self, s: f32) -> Vec2 {
         self.a + self.delta() * s
     }
@@ -52,6 +53,7 @@ impl Segment {
     /// assert_eq!(s.closest_point(Vec2::new(-3.0, 1.0)), Vec2::ZERO);
     /// ```
     #[must_use]
+    #[inline]
     pub fn closest_point(&self, p: Vec2) -> Vec2 {
         let d = self.delta();
         let len2 = d.length_squared();

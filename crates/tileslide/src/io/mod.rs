@@ -8,6 +8,7 @@ pub mod bitmap;
 mod bytes;
 mod error;
 pub mod replica;
+mod replica_objects;
 #[cfg(feature = "tiled")]
 pub mod tiled;
 mod tiled_faults;

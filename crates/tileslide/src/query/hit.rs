@@ -1,6 +1,6 @@
 use glam::Vec2;
 
-use crate::tiles::{Cell, Owner, SegmentFlags, SegmentRef, TileId};
+use crate::tiles::{Cell, Owner, SegmentFlags, SegmentRef, TileId, TileMap, WallSource};
 
 /// Where a segment found by a query comes from.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -24,6 +24,19 @@ pub enum SegmentSource {
         /// How fast it moves.
         velocity: Vec2,
     },
+}
+
+impl SegmentSource {
+    /// The same source as a trace names it (a tile's segment by its tile segment too), or
+    /// `None` for an active segment `map` does not have.
+    pub(crate) fn wall_source(self, map: &TileMap) -> Option<WallSource> {
+        match self {
+            SegmentSource::Tile { segment, .. } => WallSource::tile(map, segment),
+            SegmentSource::Temporary { owner, index, .. } => {
+                Some(WallSource::Temporary { owner, index })
+            }
+        }
+    }
 }
 
 /// A ray's hit on a segment.

@@ -44,7 +44,6 @@ pub(crate) fn link_cell(
         let seg = store.cell(index)[i];
         let mut ends = [Link::NONE; 2];
         let mut caps = CAP_A | CAP_B;
-        let along = seg.e.normalize_or_zero();
         for (k, end) in [seg.a, seg.b()].into_iter().enumerate() {
             let mut best: Option<(f32, Link, HotSegment)> = None;
             for dr in -1i64..=1 {
@@ -72,20 +71,69 @@ pub(crate) fn link_cell(
                 }
             }
             ends[k] = best.map_or(Link::NONE, |(_, link, _)| link);
-            // The end's outward direction: back along the segment at `a`, forward at `b`.
-            let outward = if k == 0 { -along } else { along };
-            // The neighbour's flat side covers this end only for circles in front of it,
-            // and only for bodies it stops too: so only a neighbour with the same flags,
-            // and not a one-way platform (whose back side a circle can come from).
-            if let Some((_, _, other)) = best
-                && other.normal.dot(outward) <= CONVEX_COSINE
-                && other.flags == seg.flags
-                && !seg.flags.contains(SegmentFlags::ONE_WAY)
-            {
+            if !end_join(&seg, best.map(|(_, _, other)| other).as_ref(), k).needs_cap() {
                 caps &= !(if k == 0 { CAP_A } else { CAP_B });
             }
         }
         store.links_mut(index)[i] = ends;
         store.caps_mut(index)[i] = caps;
+    }
+}
+
+/// How the surface goes on at an end of an active segment, and so whether a swept circle
+/// must round that end (a cap): what the map decides for every end it links (see
+/// [`TileMap::explain_cell`](crate::TileMap::explain_cell)).
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum EndJoin {
+    /// It continues straight on into a segment with the same flags: no cap (a circle
+    /// sliding over the seam sees one flat surface).
+    Flat,
+    /// It turns concave (into the material's side) into a segment with the same flags: no
+    /// cap (the neighbour's flat side covers the end).
+    Concave,
+    /// Nothing continues it: a cap.
+    Open,
+    /// The surface turns away (a convex corner): a cap.
+    Convex,
+    /// It continues into a segment with other flags, which does not stop every circle this
+    /// one stops: a cap.
+    FlagsChange,
+    /// It is an end of a one-way platform, whose back side a circle can come from: a cap.
+    OneWay,
+}
+
+impl EndJoin {
+    /// Whether a swept circle must round this end.
+    #[must_use]
+    pub fn needs_cap(self) -> bool {
+        !matches!(self, EndJoin::Flat | EndJoin::Concave)
+    }
+}
+
+/// How `seg`'s end `end` (0: `a`, 1: `b`) joins `next`, the active segment its link names
+/// (none: nothing continues it). The neighbour's flat side covers the end only where the
+/// surface does not turn away, only for circles in front of it, and only for bodies it
+/// stops too: so only a neighbour with the same flags, and not at a one-way platform's end
+/// (whose back side a circle can come from).
+pub(crate) fn end_join(seg: &HotSegment, next: Option<&HotSegment>, end: usize) -> EndJoin {
+    let Some(next) = next else {
+        return EndJoin::Open;
+    };
+    // The end's outward direction: back along the segment at `a`, forward at `b`.
+    let along = seg.e.normalize_or_zero();
+    let outward = if end == 0 { -along } else { along };
+    let turn = next.normal.dot(outward);
+    if turn > CONVEX_COSINE {
+        EndJoin::Convex
+    } else if next.flags != seg.flags {
+        EndJoin::FlagsChange
+    } else if seg.flags.contains(SegmentFlags::ONE_WAY) {
+        EndJoin::OneWay
+    } else if turn < -CONVEX_COSINE {
+        EndJoin::Concave
+    } else {
+        EndJoin::Flat
     }
 }

@@ -14,9 +14,12 @@ use glam::Vec2;
 use super::store::HotSegment;
 use super::{SegmentFlags, TileSegment, TileShape};
 
-/// Which boundary line of its cell a segment lies on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Side {
+/// A side of a cell: the boundary line a tile segment lies on when a neighbour can hide it
+/// (see [`TileMap::explain_cell`](crate::TileMap::explain_cell)). `x` and `y` are the map's
+/// own axes, in a cell of size `w × h`; the map does not know which way is up.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CellSide {
     /// `x = 0`.
     MinX,
     /// `x = w`.
@@ -27,54 +30,59 @@ pub(crate) enum Side {
     MaxY,
 }
 
-impl Side {
-    pub const ALL: [Side; 4] = [Side::MinX, Side::MaxX, Side::MinY, Side::MaxY];
+impl CellSide {
+    pub(crate) const ALL: [CellSide; 4] = [
+        CellSide::MinX,
+        CellSide::MaxX,
+        CellSide::MinY,
+        CellSide::MaxY,
+    ];
 
     /// The cell offset of the neighbour across this side.
-    pub fn neighbour_offset(self) -> (i64, i64) {
+    pub(crate) fn neighbour_offset(self) -> (i64, i64) {
         match self {
-            Side::MinX => (-1, 0),
-            Side::MaxX => (1, 0),
-            Side::MinY => (0, -1),
-            Side::MaxY => (0, 1),
+            CellSide::MinX => (-1, 0),
+            CellSide::MaxX => (1, 0),
+            CellSide::MinY => (0, -1),
+            CellSide::MaxY => (0, 1),
         }
     }
 
-    fn opposite(self) -> Side {
+    pub(crate) fn opposite(self) -> CellSide {
         match self {
-            Side::MinX => Side::MaxX,
-            Side::MaxX => Side::MinX,
-            Side::MinY => Side::MaxY,
-            Side::MaxY => Side::MinY,
+            CellSide::MinX => CellSide::MaxX,
+            CellSide::MaxX => CellSide::MinX,
+            CellSide::MinY => CellSide::MaxY,
+            CellSide::MaxY => CellSide::MinY,
         }
     }
 
     /// Unit vector pointing out of the cell through this side.
-    fn outward(self) -> Vec2 {
+    pub(crate) fn outward(self) -> Vec2 {
         match self {
-            Side::MinX => Vec2::NEG_X,
-            Side::MaxX => Vec2::X,
-            Side::MinY => Vec2::NEG_Y,
-            Side::MaxY => Vec2::Y,
+            CellSide::MinX => Vec2::NEG_X,
+            CellSide::MaxX => Vec2::X,
+            CellSide::MinY => Vec2::NEG_Y,
+            CellSide::MaxY => Vec2::Y,
         }
     }
 
     /// True when both end points lie on this side's line (within `eps`).
     fn holds(self, s: &TileSegment, size: Vec2, eps: f32) -> bool {
         let on = |p: Vec2| match self {
-            Side::MinX => p.x.abs() <= eps,
-            Side::MaxX => (p.x - size.x).abs() <= eps,
-            Side::MinY => p.y.abs() <= eps,
-            Side::MaxY => (p.y - size.y).abs() <= eps,
+            CellSide::MinX => p.x.abs() <= eps,
+            CellSide::MaxX => (p.x - size.x).abs() <= eps,
+            CellSide::MinY => p.y.abs() <= eps,
+            CellSide::MaxY => (p.y - size.y).abs() <= eps,
         };
         on(s.a) && on(s.b)
     }
 
     /// The coordinate along the side's line.
-    fn along(self, p: Vec2) -> f32 {
+    pub(crate) fn along(self, p: Vec2) -> f32 {
         match self {
-            Side::MinX | Side::MaxX => p.y,
-            Side::MinY | Side::MaxY => p.x,
+            CellSide::MinX | CellSide::MaxX => p.y,
+            CellSide::MinY | CellSide::MaxY => p.x,
         }
     }
 }
@@ -84,35 +92,58 @@ pub(crate) fn seam_tolerance(size: Vec2) -> f32 {
     size.max_element() * 1e-5
 }
 
+/// The side of its cell that tile segment `s` lies on and faces out of, if any: the only
+/// segments a neighbour can hide.
+pub(crate) fn boundary_side(s: &TileSegment, size: Vec2, eps: f32) -> Option<CellSide> {
+    CellSide::ALL
+        .into_iter()
+        .find(|side| side.holds(s, size, eps) && s.normal.dot(side.outward()) > 0.0)
+}
+
+/// The segments of `other`, the shape of the neighbour across `side`, that hide a segment on
+/// `side`'s line: solid, on the facing side's line and facing back. Each with its index in
+/// `other` and the interval of the line it covers (low, high), in `side`'s coordinate along
+/// it.
+pub(crate) fn covers_across(
+    side: CellSide,
+    other: &TileShape,
+    size: Vec2,
+    eps: f32,
+) -> impl Iterator<Item = (usize, (f32, f32))> + '_ {
+    let facing = side.opposite();
+    other
+        .segments()
+        .iter()
+        .enumerate()
+        .filter(move |(_, t)| {
+            t.flags.contains(SegmentFlags::SOLID)
+                && facing.holds(t, size, eps)
+                && t.normal.dot(facing.outward()) > 0.0
+        })
+        .map(move |(j, t)| {
+            let (u0, u1) = (side.along(t.a), side.along(t.b));
+            (j, (u0.min(u1), u0.max(u1)))
+        })
+}
+
 /// Computes the active segments of a cell holding `shape`, whose neighbours across each side
 /// hold `neighbour(side)`, in world coordinates (`base` is the cell's corner), into `out`.
 pub(crate) fn active_segments<'s>(
     shape: &TileShape,
     size: Vec2,
     base: Vec2,
-    neighbour: impl Fn(Side) -> Option<&'s TileShape>,
+    neighbour: impl Fn(CellSide) -> Option<&'s TileShape>,
     out: &mut Vec<HotSegment>,
 ) {
     let eps = seam_tolerance(size);
     let mut covers: Vec<(f32, f32)> = Vec::new();
     for (index, s) in shape.segments().iter().enumerate() {
-        let side = Side::ALL
-            .into_iter()
-            .find(|side| side.holds(s, size, eps) && s.normal.dot(side.outward()) > 0.0);
+        let side = boundary_side(s, size, eps);
         covers.clear();
         if let Some(side) = side
             && let Some(other) = neighbour(side)
         {
-            let facing = side.opposite();
-            for t in other.segments() {
-                if t.flags.contains(SegmentFlags::SOLID)
-                    && facing.holds(t, size, eps)
-                    && t.normal.dot(facing.outward()) > 0.0
-                {
-                    let (u0, u1) = (side.along(t.a), side.along(t.b));
-                    covers.push((u0.min(u1), u0.max(u1)));
-                }
-            }
+            covers.extend(covers_across(side, other, size, eps).map(|(_, span)| span));
         }
         let push = |a: Vec2, b: Vec2, out: &mut Vec<HotSegment>| {
             // Active segments run with their normal on the right of a → b, whatever the
@@ -147,7 +178,7 @@ pub(crate) fn active_segments<'s>(
 /// direction (`active_segments` then orients them by the normal).
 fn uncovered_pieces(
     s: &TileSegment,
-    side: Side,
+    side: CellSide,
     covers: &mut [(f32, f32)],
     eps: f32,
 ) -> Vec<(Vec2, Vec2)> {
@@ -216,7 +247,7 @@ mod tests {
             &sq,
             Vec2::ONE,
             Vec2::ZERO,
-            |side| (side == Side::MaxX).then_some(&sq),
+            |side| (side == CellSide::MaxX).then_some(&sq),
             &mut out,
         );
         assert_eq!(out.len(), 3);
@@ -235,7 +266,7 @@ mod tests {
             &sq,
             Vec2::ONE,
             Vec2::ZERO,
-            |side| (side == Side::MaxX).then_some(&half),
+            |side| (side == CellSide::MaxX).then_some(&half),
             &mut out,
         );
         let right: Vec<_> = out.iter().filter(|s| s.normal == Vec2::X).collect();
@@ -263,7 +294,7 @@ mod tests {
             &sq,
             Vec2::ONE,
             Vec2::ZERO,
-            |side| (side == Side::MaxY).then_some(&platform),
+            |side| (side == CellSide::MaxY).then_some(&platform),
             &mut out,
         );
         assert_eq!(out.len(), 4);
@@ -273,7 +304,7 @@ mod tests {
             &platform,
             Vec2::ONE,
             Vec2::ZERO,
-            |side| (side == Side::MinY).then_some(&sq),
+            |side| (side == CellSide::MinY).then_some(&sq),
             &mut out,
         );
         assert!(out.is_empty());

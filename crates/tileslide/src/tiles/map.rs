@@ -4,8 +4,9 @@ use std::sync::Arc;
 use glam::Vec2;
 
 use super::SegmentRef;
+use super::base::BaseTiles;
 use super::continuity::link_cell;
-use super::culling::{Side, active_segments};
+use super::culling::{CellSide, active_segments};
 use super::face_kind::{canonical_faces, kind_of};
 use super::journal::Journal;
 use super::store::{HotSegment, Links, SegmentStore};
@@ -68,19 +69,22 @@ pub struct TileMap {
     cell_size: Vec2,
     inv_cell_size: Vec2,
     /// Tile id per cell, row-major; `EMPTY` for none.
-    tiles: Vec<u32>,
+    pub(super) tiles: Vec<u32>,
     placed: usize,
     pub(crate) store: SegmentStore,
     pub(crate) temporaries: Vec<TemporarySegment>,
     /// Its revisions and latest tile edits, for everything that remembers map data (see
     /// [`TileMap::changes_since`]).
     pub(super) journal: Journal,
+    /// The tiles the map was built with where edits changed them (see
+    /// [`MapEdits`](crate::MapEdits)).
+    pub(super) base: BaseTiles,
     /// Reused buffers for the active segments of the cells an edit recomputes (the cell
     /// and its four neighbours), so an edit does not allocate once warmed up.
     scratch: [Vec<HotSegment>; 5],
 }
 
-const EMPTY: u32 = u32::MAX;
+pub(super) const EMPTY: u32 = u32::MAX;
 
 /// The number of cells of a `width × height` map at `origin`, or why it cannot be.
 fn checked_size(width: u32, height: u32, origin: Vec2, cell_size: Vec2) -> Result<u64, MapError> {
@@ -176,6 +180,7 @@ impl TileMap {
             store,
             temporaries: Vec::new(),
             journal: Journal::default(),
+            base: BaseTiles::default(),
             scratch: Default::default(),
         }
     }
@@ -310,6 +315,7 @@ impl TileMap {
         }
         self.scratch = scratch;
         self.journal.record_edit(cell);
+        self.base.record(index as u32, old);
         let count = |map: &Self, t: u32| map.shape_of_raw(t).map_or(0, |s| s.segments().len());
         self.placed = self.placed - count(self, old) + count(self, raw);
         // Links read the active segments of the 3×3 block around a cell, and active segments
@@ -343,7 +349,7 @@ impl TileMap {
         let index = (row * self.width + col) as usize;
         let base = self.cell_corner(Cell::new(col, row));
         if let Some(shape) = self.shape_of_raw(self.tiles[index]) {
-            let neighbour = |side: Side| -> Option<&TileShape> {
+            let neighbour = |side: CellSide| -> Option<&TileShape> {
                 let (dc, dr) = side.neighbour_offset();
                 let (c, r) = self.in_bounds(col as i64 + dc, row as i64 + dr)?;
                 self.shape_of_raw(self.tiles[(r * self.width + c) as usize])

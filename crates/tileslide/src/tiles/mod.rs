@@ -3,12 +3,14 @@
 //! A [`TileSet`] maps a [`TileId`] to a [`TileShape`]: segments with outward normals and
 //! [`SegmentFlags`] in tile-local coordinates. A [`TileMap`] places tiles on a grid and keeps,
 //! per cell, the *active* segments left after seam culling, each knowing which segment its
-//! ends continue into.
+//! ends continue into; [`TileMap::explain_cell`] says why.
 
+mod base;
 mod cell;
 mod continuity;
 mod culling;
 mod debug_lines;
+mod explain;
 pub(crate) mod face_kind;
 mod flags;
 mod journal;
@@ -24,6 +26,12 @@ mod trace;
 
 pub use crate::owner::Owner;
 pub use cell::{Cell, TileId};
+pub use continuity::EndJoin;
+pub use culling::CellSide;
+pub use explain::{
+    ActivePiece, CellExplanation, HiddenPart, PieceEnd, PlacedSegment, SegmentExplanation,
+    WallSource,
+};
 pub use flags::SegmentFlags;
 pub use journal::{JOURNAL_EDITS, JournalError, MapRevision};
 pub use map::{ActiveSegment, MAX_CELLS, TileMap};

@@ -114,6 +114,7 @@ impl SegmentStore {
         &self.hot
     }
 
+    #[inline]
     fn range(&self, index: usize) -> std::ops::Range<usize> {
         let start = self.starts[index];
         if start == NO_SEGMENTS {

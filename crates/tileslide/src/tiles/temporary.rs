@@ -112,4 +112,24 @@ impl TileMap {
     pub fn temporaries(&self) -> &[TemporarySegment] {
         &self.temporaries
     }
+
+    /// Puts `segments` (checked, normals kept bit for bit) in place of the temporary
+    /// segments; a change only if some bit differs.
+    pub(crate) fn restore_temporaries(&mut self, segments: &[TemporarySegment]) {
+        let bits = |t: &TemporarySegment| {
+            let v = [t.segment.a, t.segment.b, t.normal, t.velocity];
+            (v.map(|v| v.to_array().map(f32::to_bits)), t.flags, t.owner)
+        };
+        let same = self.temporaries.len() == segments.len()
+            && self
+                .temporaries
+                .iter()
+                .zip(segments)
+                .all(|(a, b)| bits(a) == bits(b));
+        if !same {
+            self.temporaries.clear();
+            self.temporaries.extend_from_slice(segments);
+            self.journal.record_temporaries();
+        }
+    }
 }

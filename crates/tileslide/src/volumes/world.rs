@@ -137,7 +137,7 @@ fn each_placed(
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct HitWorld {
-    broadphase: PairMethod,
+    pub(crate) broadphase: PairMethod,
     pub(super) entries: Vec<Entry>,
     pub(super) attack: Vec<Volume>,
     pub(super) vulnerable: Vec<Volume>,
@@ -147,9 +147,9 @@ pub struct HitWorld {
     /// The last `detect`'s events, kept until the next one.
     pub(super) events: Vec<HitEvent>,
     /// Accepted hits per swing: `(swing, victim owner)`.
-    swung: HashSet<(u64, Owner)>,
+    pub(crate) swung: HashSet<(u64, Owner)>,
     /// Swings registered this frame and the last.
-    swings_now: HashSet<u64>,
+    pub(crate) swings_now: HashSet<u64>,
     swings_before: HashSet<u64>,
 }
 

@@ -5,6 +5,7 @@ use glam::Vec2;
 
 use super::{Character, MoveOptions, end_point, nearest_end};
 use crate::controller::CharacterShape;
+use crate::controller::trace::{Log, MoveEvent, SweepPurpose};
 use crate::geometry::Aabb;
 use crate::query::{QueryFilter, Wall};
 use crate::tiles::TileMap;
@@ -201,9 +202,12 @@ impl Character {
         at: Vec2,
         footing: &Footing,
         options: MoveOptions,
+        log: &mut Log<'_>,
     ) {
+        log.push(MoveEvent::LeftGround { at });
         self.position = at;
-        self.go(map, -self.up * footing.drop, options, None);
+        log.purpose(SweepPurpose::StepOff);
+        self.go(map, -self.up * footing.drop, options, None, log);
     }
 }
 

@@ -6,6 +6,7 @@ use glam::Vec2;
 
 use super::{Character, MIN_MOVE, Met, MoveOptions, nearest_end};
 use crate::controller::CharacterShape;
+use crate::controller::trace::{Log, SweepPurpose};
 use crate::geometry::SweepHit;
 use crate::query::Wall;
 use crate::tiles::TileMap;
@@ -50,7 +51,9 @@ impl Character {
         corner: Vec2,
         rest: Vec2,
         options: MoveOptions,
+        log: &mut Log<'_>,
     ) -> (Vec2, Option<Met>) {
+        log.purpose(SweepPurpose::Roll);
         let offset = self.position - corner;
         // Rolled a skin from the corner, however close the move that met it came (a move
         // that grazes the corner ends closer than a skin, by how much depends on the rate).
@@ -89,8 +92,8 @@ impl Character {
             let apex = corner + middle * (radius / (0.5 * (to - from)).cos());
             let arrival = corner + dir.rotate(Vec2::from_angle(to)) * radius;
             let stopped = self
-                .go(map, apex - self.position, options, None)
-                .or_else(|| self.go(map, arrival - self.position, options, None));
+                .go(map, apex - self.position, options, None, log)
+                .or_else(|| self.go(map, arrival - self.position, options, None, log));
             if let Some((hit, wall, _)) = stopped {
                 // Stopped on a leg: a skin from the surface where the arc itself reaches it,
                 // not where the leg (outside the arc, by an amount that depends on how the
@@ -98,7 +101,7 @@ impl Character {
                 if let Some(angle) = self.arc_meets(corner, radius, dir, (from, to), (&hit, &wall))
                 {
                     let on_arc = corner + dir.rotate(Vec2::from_angle(angle)) * radius;
-                    self.go(map, on_arc - self.position, options, None);
+                    self.go(map, on_arc - self.position, options, None, log);
                 }
                 // The part of the move rolled so far, from the angle reached.
                 let now = driver.angle_to(self.position - corner);
