@@ -691,6 +691,14 @@ fn slots_and_free_lists_no_calls_could_leave_are_refused() {
         json["swings"].as_array_mut().unwrap().insert(0, first);
     });
     names(&message, &["swings", "entry 1"]);
+    // The kept events' times lie in [0, 1] and their points are finite.
+    assert!(!memory["events"].as_array().unwrap().is_empty(), "{memory}");
+    let message = refused::<HitWorld>(hits, |json| json["events"][0]["t"] = 1.5.into());
+    names(&message, &["hit event 0", "t = 1.5", "t must be in [0, 1]"]);
+    let message = refused::<HitWorld>(hits, |json| {
+        json["events"][0]["point"][1] = serde_json::json!(f64::MAX);
+    });
+    names(&message, &["hit event 0", "inf", "the point finite"]);
     // A missing field is named by serde.
     let message = refused::<Bodies>(bodies, |json| {
         json.as_object_mut().unwrap().remove("free");

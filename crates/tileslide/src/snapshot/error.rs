@@ -87,6 +87,21 @@ pub enum SnapshotError {
         /// The first entry not after the one before it.
         index: usize,
     },
+    /// A kept hit event whose time is outside `[0, 1]` (or NaN) or whose point is not
+    /// finite: no `detect` reports one.
+    #[error(
+        "hit event {index} at t = {t}, point ({x}, {y}): t must be in [0, 1] and the point finite"
+    )]
+    BadEvent {
+        /// The event's position in the list.
+        index: usize,
+        /// Its time.
+        t: f32,
+        /// Its point's x.
+        x: f32,
+        /// Its point's y.
+        y: f32,
+    },
     /// A map size refused as [`TileMap::new`](crate::TileMap::new) refuses it, or an
     /// edit the map refused.
     #[error(transparent)]

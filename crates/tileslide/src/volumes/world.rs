@@ -145,7 +145,7 @@ pub struct HitWorld {
     boxes: Vec<Aabb>,
     pairs: Vec<(u32, u32)>,
     /// The last `detect`'s events, kept until the next one.
-    pub(super) events: Vec<HitEvent>,
+    pub(crate) events: Vec<HitEvent>,
     /// Accepted hits per swing: `(swing, victim owner)`.
     pub(crate) swung: HashSet<(u64, Owner)>,
     /// Swings registered this frame and the last.
