@@ -1,5 +1,5 @@
-// HitWorld from JavaScript: a frame's volumes, hits in a fixed order, teams, swings, a
-// JavaScript rule, errors and memory.
+// HitWorld from JavaScript: a frame's volumes, hits in a fixed order with when and where,
+// kept until the next detect, teams, swings, a JavaScript rule, errors and memory.
 import { test } from "node:test";
 import assert from "node:assert/strict";
 
@@ -23,7 +23,18 @@ test("a fist meets a slime: one hit, as in the Rust example", () => {
   const world = new HitWorld();
   const [hero, slime] = frame(world);
   assert.deepEqual([hero, slime], [0, 1]);
-  assert.deepEqual(world.detect(), [{ attacker: hero, victim: slime, hitType: HitType.Hit, accepted: true }]);
+  // Still where the frame starts, they touch at t = 0, at the slime's point nearest the fist.
+  const hit = {
+    attacker: hero, victim: slime, attackerOwner: 1, victimOwner: 2,
+    hitType: HitType.Hit, accepted: true, t: 0, x: 1.5, y: 1,
+  };
+  assert.deepEqual(world.detect(), [hit]);
+  // The events stay readable until the next detect, with the owners to say who they were.
+  world.beginFrame();
+  assert.deepEqual(world.events(), [hit]);
+  assert.deepEqual(world.detect(), []);
+  assert.deepEqual(world.events(), []);
+  frame(world);
   assert.equal(world.owner(slime), 2);
   assert.equal(world.owner(7), null);
   const [x, y, r] = world.boundingCircle(hero);
@@ -50,7 +61,13 @@ test("teams, invulnerability, facing and swings decide the hits", () => {
   const bullet = world.register({ owner: 3, x: 10, y: 0.5, size: [0.1, 0.1], motion: [10, 0], team: 1 },
     [{ radius: 0.05, hit: HitType.Hit | HitType.Death }], []);
   const wall = world.register({ owner: 4, x: 4, y: 0, size: [1, 1] }, [], [{ x: 0.5, y: 0.5, halfWidth: 0.1, halfHeight: 0.5, hit: HitType.Death }]);
-  assert.deepEqual(world.detect(), [{ attacker: bullet, victim: wall, hitType: HitType.Death, accepted: true }]);
+  // It left x = 0 and meets the wall's face at x = 4.4 when its centre is at 4.35.
+  const [shot] = world.detect();
+  assert.deepEqual({ ...shot, t: 0, x: 0 }, {
+    attacker: bullet, victim: wall, attackerOwner: 3, victimOwner: 4,
+    hitType: HitType.Death, accepted: true, t: 0, x: 0, y: 0.5,
+  });
+  assert.ok(Math.abs(shot.t - 0.435) < 1e-6 && Math.abs(shot.x - 4.4) < 1e-6, JSON.stringify(shot));
   world.free();
 });
 

@@ -8,7 +8,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::args::{self, Options, error};
 use crate::debug::DebugLines;
-use crate::values::object;
+use crate::values::{object, owner_number};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_TYPES: &str = r#"
@@ -36,12 +36,20 @@ export type VolumeDesc =
     | { x: number; y: number; halfWidth: number; halfHeight: number; hit: number };
 
 /** One hit: an attack volume of `attacker` met a vulnerability volume of `victim` (ids from
- * `register`) accepting `hitType`; `accepted` says whether the rule let the victim take it. */
+ * `register`, with the owners they were registered with) accepting `hitType`; `accepted`
+ * says whether the rule let the victim take it. `t` is when the volumes first touched, as a
+ * fraction of the frame's move (0 for volumes that overlap where the frame starts; of a
+ * fireball's victims the least `t` is the first it reached), `[x, y]` where. */
 export interface HitEvent {
     attacker: number;
     victim: number;
+    attackerOwner: number;
+    victimOwner: number;
     hitType: number;
     accepted: boolean;
+    t: number;
+    x: number;
+    y: number;
 }
 "#;
 
@@ -179,17 +187,15 @@ impl HitWorld {
                 events
             }
         };
-        let out = Array::new();
-        for e in &events {
-            let event = object(&[
-                ("attacker", e.attacker.0.into()),
-                ("victim", e.victim.0.into()),
-                ("hitType", e.hit_type.bits().into()),
-                ("accepted", e.accepted.into()),
-            ])?;
-            out.push(&event);
-        }
-        Ok(out)
+        event_array(&events)
+    }
+
+    /// The last `detect`'s events, kept until the next `detect` (`beginFrame` and
+    /// `register` leave them). Their `attacker` and `victim` number the objects of the frame
+    /// `detect` ran in; the owners still say who they were once a new frame has begun.
+    #[wasm_bindgen(unchecked_return_type = "HitEvent[]")]
+    pub fn events(&self) -> Result<Array, JsError> {
+        event_array(self.world.events())
     }
 
     /// The owner of the object registered as `id` this frame, or `null`.
@@ -214,6 +220,26 @@ impl HitWorld {
                 Array::of3(&c.center.x.into(), &c.center.y.into(), &c.radius.into()).into()
             }))
     }
+}
+
+/// `events` as JavaScript `HitEvent`s.
+fn event_array(events: &[tileslide::HitEvent]) -> Result<Array, JsError> {
+    let out = Array::new();
+    for e in events {
+        let event = object(&[
+            ("attacker", e.attacker.0.into()),
+            ("victim", e.victim.0.into()),
+            ("attackerOwner", owner_number(e.attacker_owner)),
+            ("victimOwner", owner_number(e.victim_owner)),
+            ("hitType", e.hit_type.bits().into()),
+            ("accepted", e.accepted.into()),
+            ("t", e.t.into()),
+            ("x", e.point.x.into()),
+            ("y", e.point.y.into()),
+        ])?;
+        out.push(&event);
+    }
+    Ok(out)
 }
 
 /// The `HitObject` a description asks for.
