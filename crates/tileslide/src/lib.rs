@@ -120,8 +120,8 @@ pub use tiles::{
     TileSetError, TileShape, WallSource,
 };
 pub use volumes::{
-    Facing, HitEvent, HitObject, HitRule, HitTypes, HitWorld, ObjectId, TeamRule, Volume,
-    VolumeError, VolumeShape,
+    DetectTrace, Facing, HitEvent, HitObject, HitRule, HitTypes, HitWorld, ObjectId, PairOutcome,
+    PairTrace, Refusal, TeamRule, Volume, VolumeError, VolumeShape, VolumeTest,
 };
 
 /// The README's quick start, compiled and run as a doctest.

@@ -1132,3 +1132,270 @@ fn attack_gap_to_box(v: &Volume, o: &HitObject, center: DVec2, half: DVec2) -> f
         other => panic!("a volume shape the reference does not know: {other:?}"),
     }
 }
+
+// ---- Traces: what `detect_traced` says it did with each pair. ----
+
+/// A hero punching a row of neighbours, each of which the punch reaches for another
+/// reason: hit, same team, invulnerable, a coin that takes no punches, a corner the fist
+/// misses though the boxes overlap, and one far away.
+#[test]
+fn a_traced_detect_says_why_each_neighbour_was_hit_or_not() {
+    let mut world = HitWorld::new();
+    let fist = [circle(1.2, 0.5, 0.3, HitTypes::HIT)];
+    let hero = HitObject {
+        swing: Some(7),
+        ..object(1, 0.0, 0.0)
+    };
+    let frame = |world: &mut HitWorld| {
+        world.begin_frame();
+        world.register(hero, &fist, &body(HitTypes::ANY)).unwrap();
+        world
+            .register(object(2, 1.2, 0.0), &[], &body(HitTypes::ANY))
+            .unwrap();
+        let ally = HitObject {
+            team: 1,
+            ..object(3, 1.2, 0.0)
+        };
+        world.register(ally, &[], &body(HitTypes::ANY)).unwrap();
+        let ghost = HitObject {
+            invulnerable: true,
+            ..object(4, 1.2, 0.0)
+        };
+        world.register(ghost, &[], &body(HitTypes::ANY)).unwrap();
+        world
+            .register(object(5, 1.2, 0.0), &[], &body(HitTypes::COLLECT))
+            .unwrap();
+        // Its body's corner (1.45, 0.75) is 0.354 from the fist's centre: out of reach,
+        // though its box overlaps the hero's.
+        world
+            .register(object(6, 1.45, 0.75), &[], &body(HitTypes::ANY))
+            .unwrap();
+        world
+            .register(object(7, 9.0, 0.0), &[], &body(HitTypes::ANY))
+            .unwrap();
+    };
+    frame(&mut world);
+    let mut trace = tileslide::DetectTrace::of(Owner(1));
+    let events = world.detect_traced(&mut TeamRule, &mut trace).to_vec();
+    assert_eq!(
+        events
+            .iter()
+            .map(|e| (e.victim_owner.0, e.accepted))
+            .collect::<Vec<_>>(),
+        [(2, true), (3, false), (4, false)]
+    );
+    use tileslide::{PairOutcome as O, Refusal};
+    fn outcome_in(
+        trace: &tileslide::DetectTrace,
+        attacker: u64,
+        victim: u64,
+    ) -> (tileslide::PairOutcome, Vec<tileslide::VolumeTest>) {
+        let found: Vec<_> = trace
+            .pairs()
+            .iter()
+            .filter(|p| (p.attacker_owner.0, p.victim_owner.0) == (attacker, victim))
+            .collect();
+        assert_eq!(found.len(), 1, "{attacker} → {victim}: {:?}", trace.pairs());
+        (found[0].outcome, found[0].tests.clone())
+    }
+    let outcome = |attacker, victim| outcome_in(&trace, attacker, victim);
+    let tested = |dealt: HitTypes, met: bool| {
+        vec![tileslide::VolumeTest {
+            attack: 0,
+            vulnerable: 0,
+            dealt,
+            met,
+        }]
+    };
+    assert_eq!(
+        outcome(1, 2),
+        (O::Accepted { event: 0 }, tested(HitTypes::HIT, true))
+    );
+    assert_eq!(
+        outcome(1, 3).0,
+        O::Refused {
+            event: 1,
+            by: Refusal::SameTeam
+        }
+    );
+    assert_eq!(
+        outcome(1, 4).0,
+        O::Refused {
+            event: 2,
+            by: Refusal::Invulnerable
+        }
+    );
+    assert_eq!(
+        outcome(1, 5),
+        (O::NoTypeInCommon, tested(HitTypes::NONE, false))
+    );
+    assert_eq!(outcome(1, 6), (O::Missed, tested(HitTypes::HIT, false)));
+    assert_eq!(outcome(1, 7), (O::BoxesApart, vec![]));
+    // The neighbours have no attack volumes; the far one's box is apart both ways.
+    for victim in 2..=6 {
+        assert_eq!(outcome(victim, 1), (O::NoVolumes, vec![]));
+    }
+    assert_eq!(outcome(7, 1).0, O::BoxesApart);
+    // Only pairs with the hero, both ways, in the events' order.
+    assert_eq!(trace.pairs().len(), 12);
+    let order: Vec<_> = trace
+        .pairs()
+        .iter()
+        .map(|p| (p.attacker.0, p.victim.0))
+        .collect();
+    let expected: Vec<_> = (1..7).flat_map(|j| [(0, j), (j, 0)]).collect();
+    assert_eq!(order, expected);
+    // The next frame, the same swing skips the slime it hit; a rule of the game's own
+    // refuses the ally.
+    frame(&mut world);
+    let mut rule = |_: &HitObject, v: &HitObject, _: HitTypes| v.owner != Owner(3);
+    world.detect_traced(&mut rule, &mut trace);
+    let outcome = |attacker, victim| outcome_in(&trace, attacker, victim);
+    assert_eq!(outcome(1, 2).0, O::SwingAlreadyHit { swing: 7 });
+    assert_eq!(
+        outcome(1, 3).0,
+        O::Refused {
+            event: 0,
+            by: Refusal::Rule
+        }
+    );
+    // A trace of every pair lists the broadphase's pairs only: the neighbours overlap each
+    // other too, and nothing reaches the far one.
+    frame(&mut world);
+    let mut all = tileslide::DetectTrace::new();
+    world.detect_traced(&mut TeamRule, &mut all);
+    assert!(all.pairs().iter().all(|p| p.outcome != O::BoxesApart));
+    assert!(
+        all.pairs()
+            .iter()
+            .all(|p| p.attacker_owner != Owner(7) && p.victim_owner != Owner(7))
+    );
+    // Neighbours 2 to 6 pair among themselves (10 pairs) and with the hero (5), both ways.
+    assert_eq!(all.pairs().len(), 30);
+}
+
+/// What the all-pairs reference expects `detect_traced` to say of `a` attacking `v`
+/// (objects standing still, every owner distinct, the team rule).
+fn expected_outcome(
+    objects: &[Registered],
+    a: usize,
+    v: usize,
+    events: &mut usize,
+) -> tileslide::PairOutcome {
+    use tileslide::{PairOutcome as O, Refusal};
+    let bounds = |(o, attack, vulnerable): &Registered| {
+        attack
+            .iter()
+            .chain(vulnerable)
+            .map(|x| match placed(x, o) {
+                Shape::Circle(p, r) => (p - r, p + r),
+                Shape::Box(lo, hi) => (lo, hi),
+            })
+            .reduce(|(a0, a1), (b0, b1)| (a0.min(b0), a1.max(b1)))
+    };
+    let apart = match (bounds(&objects[a]), bounds(&objects[v])) {
+        (Some((a0, a1)), Some((b0, b1))) => !(a0.cmple(b1).all() && b0.cmple(a1).all()),
+        _ => true,
+    };
+    let (oa, attacks, _) = &objects[a];
+    let (ov, _, vulnerable) = &objects[v];
+    let shared = |x: &Volume| vulnerable.iter().any(|y| !(x.hit & y.hit).is_empty());
+    if apart {
+        return O::BoxesApart;
+    }
+    if attacks.is_empty() || vulnerable.is_empty() {
+        return O::NoVolumes;
+    }
+    if !attacks.iter().any(shared) {
+        return O::NoTypeInCommon;
+    }
+    let hit = attacks.iter().any(|x| {
+        vulnerable
+            .iter()
+            .any(|y| !(x.hit & y.hit).is_empty() && overlap(placed(x, oa), placed(y, ov)))
+    });
+    if !hit {
+        return O::Missed;
+    }
+    let event = *events;
+    *events += 1;
+    if oa.team == ov.team {
+        O::Refused {
+            event,
+            by: Refusal::SameTeam,
+        }
+    } else if ov.invulnerable {
+        O::Refused {
+            event,
+            by: Refusal::Invulnerable,
+        }
+    } else {
+        O::Accepted { event }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// For random frames, a trace of every pair and a trace of each owner say of every
+    /// pair, in each direction, what an all-pairs reference says; the events are those an
+    /// untraced `detect` finds.
+    #[test]
+    fn a_traced_detect_explains_every_pair_as_the_all_pairs_reference(
+        objects in objects(),
+        teams in prop::collection::vec((0u32..2, prop::bool::weighted(0.2)), 40),
+    ) {
+        let objects: Vec<Registered> = objects
+            .into_iter()
+            .zip(&teams)
+            .enumerate()
+            .map(|(i, ((o, a, v), &(team, invulnerable)))| {
+                (HitObject { owner: Owner(i as u64), team, invulnerable, ..o }, a, v)
+            })
+            .collect();
+        let n = objects.len();
+        // The reference, over every ordered pair in the events' order.
+        let mut events = 0;
+        let mut expected = Vec::new();
+        for i in 0..n {
+            for j in i + 1..n {
+                for (a, v) in [(i, j), (j, i)] {
+                    let outcome = expected_outcome(&objects, a, v, &mut events);
+                    expected.push((a as u32, v as u32, outcome));
+                }
+            }
+        }
+        let mut world = HitWorld::new();
+        let frame = |world: &mut HitWorld| {
+            world.begin_frame();
+            for (o, a, v) in &objects {
+                world.register(*o, a, v).unwrap();
+            }
+        };
+        frame(&mut world);
+        let untraced = world.detect(&mut TeamRule).to_vec();
+        prop_assert_eq!(untraced.len(), events);
+        frame(&mut world);
+        let mut all = tileslide::DetectTrace::new();
+        prop_assert_eq!(world.detect_traced(&mut TeamRule, &mut all), &untraced[..]);
+        let got: Vec<_> = all.pairs().iter().map(|p| (p.attacker.0, p.victim.0, p.outcome)).collect();
+        let found: Vec<_> = expected
+            .iter()
+            .copied()
+            .filter(|e| e.2 != tileslide::PairOutcome::BoxesApart)
+            .collect();
+        prop_assert_eq!(got, found);
+        for k in 0..n.min(6) {
+            frame(&mut world);
+            let mut one = tileslide::DetectTrace::of(Owner(k as u64));
+            prop_assert_eq!(world.detect_traced(&mut TeamRule, &mut one), &untraced[..]);
+            let got: Vec<_> = one.pairs().iter().map(|p| (p.attacker.0, p.victim.0, p.outcome)).collect();
+            let mine: Vec<_> = expected
+                .iter()
+                .copied()
+                .filter(|e| e.0 as usize == k || e.1 as usize == k)
+                .collect();
+            prop_assert_eq!(got, mine);
+        }
+    }
+}

@@ -5,6 +5,7 @@ use glam::Vec2;
 
 use super::HitTypes;
 use super::object::{HitObject, ObjectId};
+use super::trace::Refusal;
 use crate::owner::Owner;
 
 /// One hit: an attack volume of `attacker` met a vulnerability volume of `victim` that
@@ -47,6 +48,14 @@ pub struct HitEvent {
 pub trait HitRule {
     /// True when `victim` takes a hit of `hit_type` from `attacker`.
     fn accept(&mut self, attacker: &HitObject, victim: &HitObject, hit_type: HitTypes) -> bool;
+
+    /// Why the victim refused a hit that [`accept`](Self::accept) just refused: asked only
+    /// by [`HitWorld::detect_traced`](super::HitWorld::detect_traced). By default
+    /// [`Refusal::Rule`] (the game's own rule said no).
+    fn refusal(&mut self, attacker: &HitObject, victim: &HitObject, hit_type: HitTypes) -> Refusal {
+        let _ = (attacker, victim, hit_type);
+        Refusal::Rule
+    }
 }
 
 /// The built-in rule: a victim takes hits from other teams while it is not invulnerable.
@@ -56,6 +65,14 @@ pub struct TeamRule;
 impl HitRule for TeamRule {
     fn accept(&mut self, attacker: &HitObject, victim: &HitObject, _: HitTypes) -> bool {
         attacker.team != victim.team && !victim.invulnerable
+    }
+
+    fn refusal(&mut self, attacker: &HitObject, victim: &HitObject, _: HitTypes) -> Refusal {
+        if attacker.team == victim.team {
+            Refusal::SameTeam
+        } else {
+            Refusal::Invulnerable
+        }
     }
 }
 

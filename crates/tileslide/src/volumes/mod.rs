@@ -26,7 +26,8 @@
 //! `object.rs` (`HitObject`, `ObjectId`); `event.rs` (`HitEvent`, the rules);
 //! `rounded.rs` (turned rectangles and capsules as rounded convex cores); `placed.rs`
 //! (volumes in the world, the pair test); `contact.rs` (time of impact and contact point);
-//! `world.rs` (`HitWorld`); `debug_lines.rs`.
+//! `trace.rs` (`DetectTrace`: what a traced `detect` tested and decided); `world.rs`
+//! (`HitWorld`); `debug_lines.rs`.
 
 mod contact;
 mod debug_lines;
@@ -36,11 +37,13 @@ mod object;
 mod placed;
 #[cfg(feature = "aim")]
 mod rounded;
+mod trace;
 mod volume;
 mod world;
 
 pub use event::{HitEvent, HitRule, TeamRule};
 pub use hit_types::HitTypes;
 pub use object::{HitObject, ObjectId};
+pub use trace::{DetectTrace, PairOutcome, PairTrace, Refusal, VolumeTest};
 pub use volume::{Facing, Volume, VolumeError, VolumeShape};
 pub use world::HitWorld;

@@ -10,6 +10,7 @@ use super::contact::Contact;
 use super::event::{HitEvent, HitRule};
 use super::object::{HitObject, ObjectId};
 use super::placed::Placed;
+use super::trace::{DetectTrace, HitSink, NoTrace, PairOutcome, Recorder, VolumeTest};
 use super::volume::{Volume, VolumeError};
 use crate::broadphase::{PairFinder, PairMethod};
 use crate::geometry::{Aabb, Circle};
@@ -320,6 +321,70 @@ impl HitWorld {
     /// segment, the circle's centre) share, or the middle of the stretch both cover between
     /// their cores' nearest points.
     pub fn detect(&mut self, rule: &mut impl HitRule) -> &[HitEvent] {
+        self.detect_into(rule, &mut NoTrace);
+        &self.events
+    }
+
+    /// [`detect`](Self::detect), writing into `trace` (cleared first) what it did with
+    /// each pair, in each direction: the volumes it tested and whether they met, and the
+    /// outcome: boxes apart (for a trace [`of`](DetectTrace::of) one owner), the swing had
+    /// already hit, no volumes, no type in common, missed, or the event, accepted or
+    /// refused and by which rule ([`HitRule::refusal`]). The events are the ones `detect`
+    /// finds.
+    pub fn detect_traced(
+        &mut self,
+        rule: &mut impl HitRule,
+        trace: &mut DetectTrace,
+    ) -> &[HitEvent] {
+        trace.pairs.clear();
+        let mut recorder = Recorder {
+            trace,
+            tests: Vec::new(),
+        };
+        self.detect_into(rule, &mut recorder);
+        let trace = recorder.trace;
+        if let Some(owner) = trace.owner() {
+            // The objects whose boxes were apart from the owner's: both directions, then
+            // every pair in the events' order.
+            let n = self.entries.len() as u32;
+            for (i, e) in (0..n).zip(&self.entries) {
+                if e.object.owner != owner {
+                    continue;
+                }
+                for j in (0..n).filter(|&j| j != i) {
+                    let (lo, hi) = (i.min(j), i.max(j));
+                    let pair_found = self.pairs.binary_search(&(lo, hi)).is_ok();
+                    let other_listed = self.entries[j as usize].object.owner == owner && j < i;
+                    if pair_found || other_listed {
+                        continue;
+                    }
+                    for (a, v) in [(lo, hi), (hi, lo)] {
+                        trace.pairs.push(self.apart(a, v));
+                    }
+                }
+            }
+            trace.pairs.sort_by_key(|p| {
+                let (a, v) = (p.attacker.0, p.victim.0);
+                (a.min(v), a.max(v), a > v)
+            });
+        }
+        &self.events
+    }
+
+    /// The pair `a` attacking `v` when their boxes are apart.
+    fn apart(&self, a: u32, v: u32) -> super::PairTrace {
+        super::PairTrace {
+            attacker: ObjectId(a),
+            victim: ObjectId(v),
+            attacker_owner: self.entries[a as usize].object.owner,
+            victim_owner: self.entries[v as usize].object.owner,
+            tests: Vec::new(),
+            outcome: PairOutcome::BoxesApart,
+        }
+    }
+
+    /// `detect`, telling `sink` what it does.
+    fn detect_into(&mut self, rule: &mut impl HitRule, sink: &mut impl HitSink) {
         self.events.clear();
         self.boxes.clear();
         self.boxes.extend(self.entries.iter().map(|e| e.reach));
@@ -329,10 +394,9 @@ impl HitWorld {
         self.pairs.sort_unstable();
         for k in 0..self.pairs.len() {
             let (i, j) = self.pairs[k];
-            self.hit(i, j, rule);
-            self.hit(j, i, rule);
+            self.hit(i, j, rule, sink);
+            self.hit(j, i, rule, sink);
         }
-        &self.events
     }
 
     /// The last [`detect`](Self::detect)'s events, readable until the next `detect` (a new
@@ -349,26 +413,44 @@ impl HitWorld {
 
     /// `a` attacking `v`: the first attack volume of `a` that meets a vulnerability volume
     /// of `v` accepting one of its types, at the first of those it touches.
-    fn hit(&mut self, a: u32, v: u32, rule: &mut impl HitRule) {
+    fn hit(&mut self, a: u32, v: u32, rule: &mut impl HitRule, sink: &mut impl HitSink) {
         let (ea, ev) = (&self.entries[a as usize], &self.entries[v as usize]);
+        let owners = (ea.object.owner, ev.object.owner);
+        let traced = sink.wants(owners.0, owners.1);
+        let ids = (ObjectId(a), ObjectId(v));
         if let Some(swing) = ea.object.swing
             && self.swung.contains(&(swing, ev.object.owner))
         {
+            if traced {
+                sink.outcome(ids, owners, PairOutcome::SwingAlreadyHit { swing });
+            }
             return;
         }
         // Relative motion: in the victim's frame the attacker moves by the difference.
         let motion = ea.object.motion - ev.object.motion;
         let attacks = &self.attack[ea.attack.0 as usize..ea.attack.1 as usize];
         let vulnerable = &self.vulnerable[ev.vulnerable.0 as usize..ev.vulnerable.1 as usize];
-        let found = attacks.iter().find_map(|attack| {
+        let found = attacks.iter().enumerate().find_map(|(i, attack)| {
             let from = ea.attack_volume(attack, ea.start());
             vulnerable.iter().enumerate().find_map(|(k, target)| {
                 let dealt = attack.hit & target.hit;
-                (!dealt.is_empty() && from.meets(motion, &ev.vulnerable_volume(target, ev.start())))
-                    .then_some((attack, k, dealt))
+                let met = !dealt.is_empty()
+                    && from.meets(motion, &ev.vulnerable_volume(target, ev.start()));
+                if traced {
+                    sink.test(VolumeTest {
+                        attack: i,
+                        vulnerable: k,
+                        dealt,
+                        met,
+                    });
+                }
+                met.then_some((attack, k, dealt))
             })
         });
         let Some((attack, k, dealt)) = found else {
+            if traced {
+                sink.outcome(ids, owners, missed(attacks, vulnerable));
+            }
             return;
         };
         let (hit_type, contact) = first_contact(
@@ -379,19 +461,43 @@ impl HitWorld {
             &vulnerable[k + 1..],
         );
         let accepted = rule.accept(&ea.object, &ev.object, hit_type);
+        if traced {
+            let event = self.events.len();
+            let outcome = if accepted {
+                PairOutcome::Accepted { event }
+            } else {
+                let by = rule.refusal(&ea.object, &ev.object, hit_type);
+                PairOutcome::Refused { event, by }
+            };
+            sink.outcome(ids, owners, outcome);
+        }
         if accepted && let Some(swing) = ea.object.swing {
             self.swung.insert((swing, ev.object.owner));
         }
         self.events.push(HitEvent {
-            attacker: ObjectId(a),
-            victim: ObjectId(v),
-            attacker_owner: ea.object.owner,
-            victim_owner: ev.object.owner,
+            attacker: ids.0,
+            victim: ids.1,
+            attacker_owner: owners.0,
+            victim_owner: owners.1,
             hit_type,
             accepted,
             t: contact.t,
             point: contact.point,
         });
+    }
+}
+
+/// Why no attack volume of `attacks` met a volume of `vulnerable`.
+fn missed(attacks: &[Volume], vulnerable: &[Volume]) -> PairOutcome {
+    if attacks.is_empty() || vulnerable.is_empty() {
+        PairOutcome::NoVolumes
+    } else if attacks
+        .iter()
+        .all(|a| vulnerable.iter().all(|v| (a.hit & v.hit).is_empty()))
+    {
+        PairOutcome::NoTypeInCommon
+    } else {
+        PairOutcome::Missed
     }
 }
 
