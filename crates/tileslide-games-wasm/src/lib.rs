@@ -52,6 +52,10 @@
 //! downwards (ASCII levels) and 1 for Replica Island levels (y up, 32 units a cell:
 //! `cellSize`).
 //!
+//! `game.tracePlayer(true)` records the player's moves from then on (off by default);
+//! `game.playerStory()` tells the last one in words, as `tileslide explain --character`
+//! does (each sweep, the surfaces met by cell and tile, the landing), or `null`.
+//!
 //! # Errors and memory
 //!
 //! Every refusal is thrown as an `Error` whose message is the Rust error's; no input
@@ -63,6 +67,7 @@ pub mod args;
 pub mod draw;
 pub mod dungeon;
 pub mod platformer;
+pub mod story;
 
 use wasm_bindgen::prelude::*;
 
