@@ -126,9 +126,9 @@ impl PlatformerGame {
 
     /// The player's last move in words (each sweep and what it met, by cell and tile, the
     /// slides, the landing), or `null` when moves are not traced or none was made yet.
-    #[wasm_bindgen(js_name = playerStory)]
-    pub fn player_story(&self) -> Option<String> {
-        crate::story::player_story(&self.game)
+    #[wasm_bindgen(js_name = playerStory, unchecked_return_type = "string | null")]
+    pub fn player_story(&self) -> JsValue {
+        crate::story::player_story(&self.game).map_or(JsValue::NULL, JsValue::from)
     }
 
     /// The HUD's numbers (see `PlatformerState`).

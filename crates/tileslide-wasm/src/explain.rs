@@ -169,9 +169,10 @@ impl Bodies {
     /// The body's last step in words, as `tileslide explain --body` tells it (each pass,
     /// every contact with its cell and tile or body, what the resolver did), or `null`
     /// when steps are not traced or the body came after the last step.
-    #[wasm_bindgen(js_name = storyOf)]
-    pub fn story_of(&self, handle: f64) -> Result<Option<String>, JsError> {
-        self.set.story_of(handle).map_err(error)
+    #[wasm_bindgen(js_name = storyOf, unchecked_return_type = "string | null")]
+    pub fn story_of(&self, handle: f64) -> Result<JsValue, JsError> {
+        let story = self.set.story_of(handle).map_err(error)?;
+        Ok(story.map_or(JsValue::NULL, JsValue::from))
     }
 }
 
@@ -267,9 +268,16 @@ mod tests {
             "{}",
             seam.state
         );
-        let floor = view.segments.iter().find(|s| !s.hidden).unwrap();
-        assert_eq!(floor.state, "active");
-        assert_eq!(floor.ends.len(), 2);
+        // The side facing the room below: its ceiling, joined flat or concave at both ends.
+        let ceiling = view
+            .segments
+            .iter()
+            .find(|s| s.from.y == 1.0 && s.to.y == 1.0)
+            .unwrap();
+        assert!(!ceiling.hidden);
+        assert_eq!(ceiling.state, "active");
+        assert_eq!(ceiling.ends.len(), 2);
+        assert!(ceiling.ends.iter().all(|end| !end.cap));
         assert!(view.words.starts_with("cell (1, 0): tile 1"));
     }
 
