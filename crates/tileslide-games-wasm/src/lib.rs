@@ -36,6 +36,11 @@
 //! - `treasure`, `exit`: `[x, y]`; `costs`: `{dig, imp, skeleton, maxCreatures}`;
 //! - `stateHash()`: 16 hexadecimal digits, as `tileslide demo dungeon` prints it.
 //!
+//! `game.traceCreatures(true)` records the fighters' steps from then on (off by default);
+//! `game.creatureAt(x, y)` gives the id of the fighter there (or `null`) and
+//! `game.storyOf(id)` its last step in words, as `tileslide explain --body` tells a body's
+//! (the walls met by cell and tile, the other fighters by kind and id), or `null`.
+//!
 //! # `PlatformerGame`
 //!
 //! ```js
