@@ -32,8 +32,9 @@ export class Crowd {
     this.tracing = false; // whether the steps are traced for `storyOf`
   }
 
-  /** Traces the steps from now on (`on`), for `storyOf`, or stops: a trace of every body,
-   * which costs a step about as much again, so only while the explain tool is chosen. */
+  /** Traces the steps from now on (`on`), for `storyOf`, or stops. The trace records every
+   * body's passes and contacts, so the sandbox asks for it only while its explain tool is
+   * chosen. */
   trace(on) {
     this.tracing = on;
     this.bodies.traceNextSteps(on);

@@ -157,6 +157,7 @@ function chooseTool(tool) {
   if (game) game.traceCreatures(tool === "explain");
   if (tool !== "explain") state.chosen = null;
   state.tool = tool;
+  if (game) tellStory();
   for (const button of document.querySelectorAll("#tools button")) {
     button.setAttribute("aria-pressed", String(button.dataset.tool === tool));
   }

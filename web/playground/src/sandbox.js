@@ -300,6 +300,7 @@ function chooseTool(tool) {
   if (crowd && crowd.tracing !== explaining) crowd.trace(explaining);
   if (!explaining) state.explain = { body: null, story: null, cell: null, segment: null };
   state.tool = tool;
+  showExplain();
   for (const button of document.querySelectorAll("#tools button")) {
     const same =
       button.dataset.tool === tool.kind &&
