@@ -1,6 +1,8 @@
 #!/bin/sh
 # Builds web/pkg/: the ES module tileslide.js, its tileslide_bg.wasm and the TypeScript
-# types tileslide.d.ts, from crates/tileslide-wasm; and web/games-pkg/: the demo games
+# types tileslide.d.ts, from crates/tileslide-wasm; web/playground-pkg/: the same with the
+# `explain` feature (the bodies' and cells' explanations in words), which the playground's
+# sandbox uses and the npm package leaves out; and web/games-pkg/: the demo games
 # (tileslide_games.js, DungeonGame and PlatformerGame, for the playground; not part of the
 # npm package), from crates/tileslide-games-wasm. Installs what it needs and lacks: the
 # wasm32 target (through rustup) and wasm-bindgen-cli at the exact version of the
@@ -50,14 +52,21 @@ for crate in tileslide-wasm tiled quick-xml serde serde_core serde_json flate2 m
     simd-adler32 base64 indexmap hashbrown memchr itoa zmij crc32fast js-sys wasm-bindgen; do
     set -- "$@" --config "profile.release.package.$crate.opt-level=\"z\""
 done
+target_dir=$(cargo metadata --manifest-path "$root/Cargo.toml" --format-version 1 --no-deps \
+    | sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')
 # One build each, with the same settings: built together, Cargo would unify their features of
-# the core crate, and the games' (PNG tracing among them) would grow the package.
+# the core crate, and the games' (PNG tracing among them) would grow the package. The
+# playground's build with `explain` comes first: both write tileslide_wasm.wasm, and the
+# package's must be the one left for wasm-bindgen below.
+cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
+    -p tileslide-wasm --features explain "$@"
+rm -rf playground-pkg
+wasm-bindgen --target web --weak-refs --remove-name-section --out-dir playground-pkg --out-name tileslide \
+    "$target_dir/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
     -p tileslide-wasm "$@"
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
     -p tileslide-games-wasm "$@"
-target_dir=$(cargo metadata --manifest-path "$root/Cargo.toml" --format-version 1 --no-deps \
-    | sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')
 rm -rf pkg
 # --weak-refs: objects the garbage collector drops free their wasm memory through a
 # FinalizationRegistry, as well as through .free().
@@ -68,6 +77,9 @@ wasm-bindgen --target web --weak-refs --remove-name-section --out-dir pkg --out-
 size=$(wc -c < pkg/tileslide_bg.wasm)
 gzipped=$(gzip -9 -c pkg/tileslide_bg.wasm | wc -c)
 echo "web/pkg: tileslide_bg.wasm $size bytes, $gzipped gzipped"
+size=$(wc -c < playground-pkg/tileslide_bg.wasm)
+gzipped=$(gzip -9 -c playground-pkg/tileslide_bg.wasm | wc -c)
+echo "web/playground-pkg: tileslide_bg.wasm $size bytes, $gzipped gzipped (explain; not the npm package)"
 
 rm -rf games-pkg
 wasm-bindgen --target web --weak-refs --remove-name-section --out-dir games-pkg --out-name tileslide_games \

@@ -1,6 +1,7 @@
 // The playground: a static site of three pages (Sandbox, Dungeon Builder, Platformer),
 // served by `npm run play` and built into playground/dist by `npm run build:playground`.
-// The pages import the package from ../pkg (and the games from ../games-pkg) and the
+// The pages import the package with its explanations from ../playground-pkg (the npm
+// package's build plus the `explain` feature; the games from ../games-pkg) and the
 // bundled maps from ../../examples, so the server may read the whole repository.
 import { defineConfig } from "vite";
 import { fileURLToPath } from "node:url";

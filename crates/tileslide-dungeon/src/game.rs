@@ -2,7 +2,7 @@
 //! world, talking through the event queue.
 
 use hecs::World;
-use tileslide::{Bodies, Cell, TileMap};
+use tileslide::{Bodies, Cell, ResolveTrace, TileMap};
 
 use crate::arrivals::Arrivals;
 use crate::audit::Audit;
@@ -42,6 +42,8 @@ pub struct Game {
     pub(crate) summary: Summary,
     outcome: Outcome,
     pub(crate) orders: Vec<LoggedOrder>,
+    /// The bodies' last step, while traced ([`Game::trace_bodies`]).
+    pub(crate) trace: Option<ResolveTrace>,
 }
 
 impl Game {
@@ -92,6 +94,7 @@ impl Game {
             },
             outcome: Outcome::Playing,
             orders: Vec::new(),
+            trace: None,
         })
     }
 
@@ -130,7 +133,10 @@ impl Game {
         );
         brains::creatures(&mut self.world, &mut self.bodies, &mut self.level, &seen);
         combat::attack(&mut self.world, &self.level, &mut self.ids, &seen)?;
-        self.bodies.step(&self.level.map);
+        match &mut self.trace {
+            Some(trace) => self.bodies.step_traced(&self.level.map, trace),
+            None => self.bodies.step(&self.level.map),
+        };
         let seen = Sightings::take(&self.world, &self.bodies);
         combat::strike(&mut self.world, &self.level, &mut self.hits, &seen, events)?;
         combat::bury(&mut self.world, &mut self.bodies, events);

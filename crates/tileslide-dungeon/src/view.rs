@@ -1,7 +1,7 @@
 //! What a renderer or a HUD reads of a game, as plain values: the fighters and the
 //! fireballs (the components themselves stay inside the crate).
 
-use tileslide::Vec2;
+use tileslide::{BodyHandle, BodyTrace, ResolveTrace, Vec2};
 
 use crate::components::{Body, Carrying, Fireball, Health, Id, Kind, Team};
 use crate::game::Game;
@@ -28,6 +28,38 @@ pub struct Fighter {
 }
 
 impl Game {
+    /// Starts (`true`) or stops tracing the bodies' steps, for
+    /// [`body_trace`](Self::body_trace) (off by default: an untraced step records nothing;
+    /// tracing changes no move).
+    pub fn trace_bodies(&mut self, on: bool) {
+        if on != self.trace.is_some() {
+            self.trace = on.then(ResolveTrace::new);
+        }
+    }
+
+    /// What the resolver did with fighter `id`'s body in the last step: `None` when steps
+    /// are not traced, no fighter `id` is alive, or it came after the step.
+    #[must_use]
+    pub fn body_trace(&self, id: u64) -> Option<&BodyTrace> {
+        let trace = self.trace.as_ref()?;
+        let mut query = self.world.query::<(&Id, &Body)>();
+        let handle = query
+            .iter()
+            .find(|(i, _)| i.0 == id)
+            .map(|(_, body)| body.0)?;
+        trace.body(handle)
+    }
+
+    /// The fighter alive whose body is `handle`: its id and kind.
+    #[must_use]
+    pub fn fighter_with_body(&self, handle: BodyHandle) -> Option<(u64, Kind)> {
+        let mut query = self.world.query::<(&Id, &Body, &Kind)>();
+        query
+            .iter()
+            .find(|(_, body, _)| body.0 == handle)
+            .map(|(id, _, kind)| (id.0, *kind))
+    }
+
     /// Every fighter alive, in spawn order.
     #[must_use]
     pub fn fighters(&self) -> Vec<Fighter> {

@@ -185,6 +185,30 @@ impl DungeonGame {
         Float32Array::from(draw::fighters(&self.game.fighters()).as_slice())
     }
 
+    /// Starts (`true`) or stops tracing the fighters' steps, for `storyOf` (off by
+    /// default).
+    #[wasm_bindgen(js_name = traceCreatures)]
+    pub fn trace_creatures(&mut self, on: bool) {
+        self.game.trace_bodies(on);
+    }
+
+    /// The id of the fighter whose circle holds (`x`, `y`), or `null`.
+    #[wasm_bindgen(js_name = creatureAt, unchecked_return_type = "number | null")]
+    pub fn creature_at(&self, x: f32, y: f32) -> JsValue {
+        crate::story::fighter_at(&self.game, x, y)
+            .map_or(JsValue::NULL, |id| JsValue::from_f64(id as f64))
+    }
+
+    /// Fighter `id`'s last step in words (each pass, what it met: a wall's cell and tile
+    /// or another fighter, what the resolver did), or `null` when steps are not traced or
+    /// no such fighter is alive.
+    #[wasm_bindgen(js_name = storyOf, unchecked_return_type = "string | null")]
+    pub fn story_of(&self, id: f64) -> Result<JsValue, JsError> {
+        let id = args::whole("storyOf: id", id, u32::MAX)?;
+        Ok(crate::story::fighter_story(&self.game, u64::from(id))
+            .map_or(JsValue::NULL, JsValue::from))
+    }
+
     /// The fireballs in flight, 3 floats each: `x, y, radius`.
     pub fn fireballs(&self) -> Float32Array {
         let balls: Vec<f32> = self

@@ -36,6 +36,11 @@
 //! - `treasure`, `exit`: `[x, y]`; `costs`: `{dig, imp, skeleton, maxCreatures}`;
 //! - `stateHash()`: 16 hexadecimal digits, as `tileslide demo dungeon` prints it.
 //!
+//! `game.traceCreatures(true)` records the fighters' steps from then on (off by default);
+//! `game.creatureAt(x, y)` gives the id of the fighter there (or `null`) and
+//! `game.storyOf(id)` its last step in words, as `tileslide explain --body` tells a body's
+//! (the walls met by cell and tile, the other fighters by kind and id), or `null`.
+//!
 //! # `PlatformerGame`
 //!
 //! ```js
@@ -52,6 +57,10 @@
 //! downwards (ASCII levels) and 1 for Replica Island levels (y up, 32 units a cell:
 //! `cellSize`).
 //!
+//! `game.tracePlayer(true)` records the player's moves from then on (off by default);
+//! `game.playerStory()` tells the last one in words, as `tileslide explain --character`
+//! does (each sweep, the surfaces met by cell and tile, the landing), or `null`.
+//!
 //! # Errors and memory
 //!
 //! Every refusal is thrown as an `Error` whose message is the Rust error's; no input
@@ -63,6 +72,7 @@ pub mod args;
 pub mod draw;
 pub mod dungeon;
 pub mod platformer;
+pub mod story;
 
 use wasm_bindgen::prelude::*;
 

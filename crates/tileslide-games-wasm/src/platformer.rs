@@ -117,6 +117,20 @@ impl PlatformerGame {
         Ok(())
     }
 
+    /// Starts (`true`) or stops tracing the player's moves, for `playerStory` (off by
+    /// default: an untraced move records nothing).
+    #[wasm_bindgen(js_name = tracePlayer)]
+    pub fn trace_player(&mut self, on: bool) {
+        crate::story::trace_player(&mut self.game, on);
+    }
+
+    /// The player's last move in words (each sweep and what it met, by cell and tile, the
+    /// slides, the landing), or `null` when moves are not traced or none was made yet.
+    #[wasm_bindgen(js_name = playerStory, unchecked_return_type = "string | null")]
+    pub fn player_story(&self) -> JsValue {
+        crate::story::player_story(&self.game).map_or(JsValue::NULL, JsValue::from)
+    }
+
     /// The HUD's numbers (see `PlatformerState`).
     #[wasm_bindgen(getter, unchecked_return_type = "PlatformerState")]
     pub fn state(&self) -> Result<Object, JsError> {

@@ -2,7 +2,7 @@
 //! platforms, bouncing off stomps and knocked back by hits.
 
 use tileslide::{
-    Character, CharacterShape, Contacts, ControllerConfig, ControllerError, MoveOptions,
+    Character, CharacterShape, Contacts, ControllerConfig, ControllerError, MoveOptions, MoveTrace,
     SegmentSource, TileMap, Vec2,
 };
 
@@ -34,6 +34,9 @@ pub struct Player {
     rise: f32,
     /// Steps left of invulnerability after a hit.
     pub invulnerable: u32,
+    /// `Some` while its moves are traced: the last move's trace (see
+    /// [`Character::move_by_traced`]); `None` (the default) moves untraced.
+    pub trace: Option<MoveTrace>,
     /// Steps left of a drop through a one-way platform.
     drop: u32,
     half: Vec2,
@@ -57,6 +60,7 @@ impl Player {
             contacts: Contacts::default(),
             rise: 0.0,
             invulnerable: 0,
+            trace: None,
             drop: 0,
             half,
             up,
@@ -116,7 +120,10 @@ impl Player {
         };
         self.drop = self.drop.saturating_sub(1);
         self.invulnerable = self.invulnerable.saturating_sub(1);
-        let contacts = self.body.move_by(map, motion, options)?;
+        let contacts = match &mut self.trace {
+            Some(trace) => self.body.move_by_traced(map, motion, options, trace)?,
+            None => self.body.move_by(map, motion, options)?,
+        };
         if contacts.ceiling.is_some() {
             self.rise = self.rise.min(0.0);
         }

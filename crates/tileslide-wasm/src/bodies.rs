@@ -67,7 +67,7 @@ export interface ResolveReport {
 /// handle is stale for good (an `Error`, never another body).
 #[wasm_bindgen]
 pub struct Bodies {
-    set: BodySet,
+    pub(crate) set: BodySet,
 }
 
 #[wasm_bindgen]
@@ -243,7 +243,7 @@ impl Bodies {
     /// crosses a wall of `map` (read them with `resolvedMove`; `integrate` makes them).
     #[wasm_bindgen(unchecked_return_type = "ResolveReport")]
     pub fn resolve(&mut self, map: &TileMap) -> Result<Object, JsError> {
-        report(&self.set.bodies.resolve(map.inner()))
+        report(&self.set.resolve(map.inner()))
     }
 
     /// Every body makes its resolved move; proposed moves are cleared.
@@ -254,7 +254,7 @@ impl Bodies {
     /// `resolve` then `integrate`: one whole step.
     #[wasm_bindgen(unchecked_return_type = "ResolveReport")]
     pub fn step(&mut self, map: &TileMap) -> Result<Object, JsError> {
-        report(&self.set.bodies.step(map.inner()))
+        report(&self.set.step(map.inner()))
     }
 
     /// Adds every body to `out`: each circle of its shape as a `Body` circle with the

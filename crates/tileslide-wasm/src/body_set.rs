@@ -2,7 +2,7 @@
 //! numbers, batch proposals, and positions packed two floats a body. Tested natively;
 //! [`crate::bodies`] only converts values.
 
-use tileslide::{Bodies, BodyDesc, BodyHandle, ResolveConfig, Vec2};
+use tileslide::{Bodies, BodyDesc, BodyHandle, ResolveConfig, ResolveReport, TileMap, Vec2};
 
 use crate::handles::Handles;
 
@@ -16,6 +16,9 @@ pub struct BodySet {
     numbers: Vec<f64>,
     /// `x, y` of every body, in slot order: refilled by [`positions`](Self::positions).
     packed: Vec<f32>,
+    /// The last step's trace while steps are traced (`explain` feature).
+    #[cfg(feature = "explain")]
+    pub(crate) trace: Option<tileslide::ResolveTrace>,
 }
 
 impl BodySet {
@@ -50,6 +53,29 @@ impl BodySet {
         }
         self.numbers[slot] = number;
         Ok(number)
+    }
+
+    /// Resolves the proposed moves (traced while the `explain` feature's tracing is on).
+    pub fn resolve(&mut self, map: &TileMap) -> ResolveReport {
+        #[cfg(feature = "explain")]
+        if let Some(trace) = &mut self.trace {
+            return self.bodies.resolve_traced(map, trace);
+        }
+        self.bodies.resolve(map)
+    }
+
+    /// [`resolve`](Self::resolve) then the core's `integrate`: one whole step.
+    pub fn step(&mut self, map: &TileMap) -> ResolveReport {
+        let report = self.resolve(map);
+        self.bodies.integrate();
+        report
+    }
+
+    /// The handle number of the core's `handle`, if it names a body of the set.
+    #[must_use]
+    pub fn number_of(&self, handle: BodyHandle) -> Option<f64> {
+        let number = *self.numbers.get(handle.index() as usize)?;
+        (self.core(number).ok() == Some(handle)).then_some(number)
     }
 
     /// The core's handle for `handle`.

@@ -18,6 +18,8 @@ pub mod bodies;
 pub mod body_set;
 pub mod character;
 pub mod debug;
+#[cfg(feature = "explain")]
+pub mod explain;
 pub mod handles;
 pub mod hits;
 pub mod map;

@@ -1,7 +1,7 @@
 // The Sandbox's circles: bodies of the package that flow to one goal (the mouse) along a
 // flow field for their radius, sliding around each other and along the walls. One
 // `Bodies` holds them all; one `FlowField` a radius leads them.
-import { Bodies, FlowField, NavGrid } from "../../pkg/tileslide.js";
+import { Bodies, FlowField, NavGrid } from "../../playground-pkg/tileslide.js";
 
 /** How far a circle moves a step, in cells (the crowd scene's 0.05: 3 cells a second). */
 const SPEED = 0.05;
@@ -18,7 +18,7 @@ const MANY = { count: 10_000, radius: 0.08, spacing: 0.2 };
 
 /** Circles flowing to a goal over one map. */
 export class Crowd {
-  /** @param {import("../../pkg/tileslide.js").TileMap} map */
+  /** @param {import("../../playground-pkg/tileslide.js").TileMap} map */
   constructor(map) {
     this.map = map;
     this.bodies = new Bodies();
@@ -29,6 +29,37 @@ export class Crowd {
     this.moves = new Float32Array(0); // each body's move this step
     this.groups = null; // radius → {indices, points}, made again when bodies come or go
     this.blocked = null; // why the circles of some radius cannot follow the goal
+    this.tracing = false; // whether the steps are traced for `storyOf`
+  }
+
+  /** Traces the steps from now on (`on`), for `storyOf`, or stops. The trace records every
+   * body's passes and contacts, so the sandbox asks for it only while its explain tool is
+   * chosen. */
+  trace(on) {
+    this.tracing = on;
+    this.bodies.traceNextSteps(on);
+  }
+
+  /** The last traced step of body `handle` in words, or null (not traced, or the body came
+   * after the step). */
+  storyOf(handle) {
+    return this.bodies.contains(handle) ? this.bodies.storyOf(handle) : null;
+  }
+
+  /** The handle of the body under (`x`, `y`) (the nearest whose circle holds it), or null. */
+  bodyAt(x, y) {
+    const circles = this.circles();
+    const handles = this.bodies.handles();
+    let best = null;
+    let bestDistance = Infinity;
+    for (let i = 0; i < handles.length; i++) {
+      const d = Math.hypot(circles[3 * i] - x, circles[3 * i + 1] - y);
+      if (d <= circles[3 * i + 2] && d < bestDistance) {
+        best = handles[i];
+        bestDistance = d;
+      }
+    }
+    return best;
   }
 
   get count() {
@@ -49,6 +80,7 @@ export class Crowd {
   clear() {
     this.bodies.free();
     this.bodies = new Bodies();
+    this.bodies.traceNextSteps(this.tracing);
     this.radii.clear();
     this.groups = null;
   }

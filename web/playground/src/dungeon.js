@@ -1,6 +1,7 @@
 // Dungeon Builder, played in the browser: the simulation of `tileslide demo dungeon`
 // (crates/tileslide-dungeon through the games package), with the keeper's orders coming
-// from the mouse and keyboard, or from the keeper's script.
+// from the mouse and keyboard, or from the keeper's script. The explain tool tells a
+// fighter's last step in words, as `tileslide explain --body` does.
 import init, { DungeonGame } from "../../games-pkg/tileslide_games.js";
 
 import { COLORS } from "./colors.js";
@@ -27,7 +28,8 @@ const FIGHTER = 7;
 siteHeader("dungeon");
 const canvas = document.getElementById("canvas");
 const view = new View(canvas, 4 / 3);
-const state = { tool: "dig", paused: false, speed: 1, message: "" };
+// chosen: the fighter the explain tool clicked (its id), story: its last step in words
+const state = { tool: "dig", paused: false, speed: 1, message: "", chosen: null, story: null };
 let game = null;
 let frames = null;
 let squares = null; // this frame's square codes
@@ -41,6 +43,8 @@ const hook = publishHook("dungeon", {
       paused: state.paused,
       speed: state.speed,
       message: state.message,
+      chosen: state.chosen,
+      story: state.story,
       hash: game.stateHash(),
       width: game.width,
       height: game.height,
@@ -49,6 +53,8 @@ const hook = publishHook("dungeon", {
   square: (col, row) => game.squares()[row * game.width + col],
   diggable: () => Array.from(game.diggable()),
   treasure: () => game.treasure,
+  /** The fighters, `creatures()`'s 7 floats each. */
+  fighters: () => Array.from(game.creatures()),
   clientAt: (x, y) => view.clientAt(x, y),
   pixelAt: (x, y) => view.pixelAt(x, y),
 });
@@ -57,6 +63,8 @@ function newGame(scripted) {
   game?.free();
   game = new DungeonGame(SEED, { scripted });
   squares = game.squares();
+  game.traceCreatures(state.tool === "explain");
+  state.chosen = null;
   box = null;
   reframe();
   say(scripted ? `the keeper's script plays (seed ${SEED})` : "dig out your dungeon before the heroes come");
@@ -114,6 +122,11 @@ canvas.addEventListener("pointerdown", (event) => {
   const row = Math.floor(y);
   // The game refuses what it cannot do (rock, no gold, no room, the script plays) with an
   // Error naming why: shown to the player, not a failure of the page.
+  if (state.tool === "explain") {
+    state.chosen = game.creatureAt(x, y);
+    tellStory();
+    return;
+  }
   try {
     if (state.tool === "dig") {
       game.dig(col, row);
@@ -128,8 +141,23 @@ canvas.addEventListener("pointerdown", (event) => {
   squares = game.squares();
 });
 
+/** Shows the chosen fighter's last step (asked again each frame: it follows the steps). */
+function tellStory() {
+  const story = state.chosen === null ? null : game.storyOf(state.chosen);
+  if (story === state.story && story !== null) return;
+  state.story = story;
+  let text = "choose the explain tool (E) and click a fighter";
+  if (state.tool === "explain") {
+    text = state.chosen === null ? "click a fighter for its last step" : story ?? `fighter ${state.chosen}: gone`;
+  }
+  document.getElementById("story").textContent = text;
+}
+
 function chooseTool(tool) {
+  if (game) game.traceCreatures(tool === "explain");
+  if (tool !== "explain") state.chosen = null;
   state.tool = tool;
+  if (game) tellStory();
   for (const button of document.querySelectorAll("#tools button")) {
     button.setAttribute("aria-pressed", String(button.dataset.tool === tool));
   }
@@ -163,6 +191,7 @@ window.addEventListener("keydown", (event) => {
   if (key === "d") chooseTool("dig");
   else if (key === "i") chooseTool("imp");
   else if (key === "s") chooseTool("skeleton");
+  else if (key === "e") chooseTool("explain");
   else if (key === " ") setPaused(!state.paused);
   else if (key === "+" || key === "=") changeSpeed(1);
   else if (key === "-") changeSpeed(-1);
@@ -221,6 +250,7 @@ function draw() {
     ctx.fill();
   }
   drawFighters(ctx, game.creatures());
+  if (state.tool === "explain") tellStory();
   const fireballs = game.fireballs();
   ctx.beginPath();
   for (let i = 0; i < fireballs.length; i += 3) {

@@ -2,7 +2,7 @@
 // and boxes (typed arrays of coordinates with a `DebugKind` number each), one path and one
 // stroke or fill per kind, in the colours of `colors.js`. Which kinds are drawn is the
 // page's layers.
-import { DebugKind } from "../../pkg/tileslide.js";
+import { DebugKind } from "../../playground-pkg/tileslide.js";
 
 import { COLORS } from "./colors.js";
 

@@ -1,6 +1,7 @@
 // The platformer, played in the browser: the game of `tileslide demo platformer`
 // (crates/tileslide-platformer through the games package) with the player's keys instead
-// of its script, on the bundled level or a Replica Island level chosen from disk.
+// of its script, on the bundled level or a Replica Island level chosen from disk. A click
+// on the player tells its last move in words, as `tileslide explain --character` does.
 import init, { PlatformerGame } from "../../games-pkg/tileslide_games.js";
 
 import { COLORS } from "./colors.js";
@@ -35,7 +36,8 @@ siteHeader("platformer");
 const canvas = document.getElementById("canvas");
 const view = new View(canvas, 16 / 9);
 const held = { left: false, right: false, jump: false, down: false };
-const state = { message: "", level: null }; // level: null (bundled) or Replica Island bytes
+// level: null (bundled) or Replica Island bytes; story: the player's move last clicked
+const state = { message: "", level: null, story: null };
 let game = null;
 let frames = null;
 let segments = null; // the level's, fixed while it runs
@@ -52,6 +54,7 @@ const hook = publishHook("platformer", {
       coinsLeft: game.coins().length / 3,
       held: { ...held },
       message: state.message,
+      story: state.story,
       frame: frames && frames.summary(),
     },
   clientAt: (x, y) => view.clientAt(x, y),
@@ -70,7 +73,10 @@ function restart() {
     : new PlatformerGame();
   game?.free();
   game = next;
+  // The player's moves are traced, for a click on it: one character, a few events a move.
+  game.tracePlayer(true);
   segments = game.segments();
+  tell(null);
   frames?.reset();
 }
 
@@ -129,6 +135,23 @@ async function loadReplicaIsland() {
 }
 document.getElementById("tile-set").addEventListener("change", () => loadReplicaIsland().catch(showError));
 document.getElementById("level").addEventListener("change", () => loadReplicaIsland().catch(showError));
+
+/** Shows `story` (the player's last move in words) in the panel, or the hint for null. */
+function tell(story) {
+  state.story = story;
+  document.getElementById("story").textContent = story ?? "click the player for its last move";
+}
+
+canvas.addEventListener("pointerdown", (event) => {
+  if (event.button !== 0 || !game) return;
+  canvas.focus();
+  const [x, y] = view.worldAt(event.clientX, event.clientY);
+  const [px, py, hw, hh] = game.player();
+  // A few pixels of slack round the box: it is small, and moving.
+  const slack = view.px(4);
+  const on = Math.abs(x - px) <= hw + slack && Math.abs(y - py) <= hh + slack;
+  tell(on ? game.playerStory() : null);
+});
 
 // ---- drawing -----------------------------------------------------------------------------
 

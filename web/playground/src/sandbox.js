@@ -1,6 +1,7 @@
 // The Sandbox: the bundled cave map, painted with the mouse, ray casts dragged across it
-// with each filter, and circles that flow to the mouse.
-import init, { DebugLines, TileMap } from "../../pkg/tileslide.js";
+// with each filter, circles that flow to the mouse, and the explain tool: a circle's last
+// step and the segment under the mouse in words (the package's `explain` build).
+import init, { DebugLines, TileMap } from "../../playground-pkg/tileslide.js";
 import caveText from "../../../examples/maps/cave.txt?raw";
 
 import { COLORS } from "./colors.js";
@@ -57,6 +58,9 @@ const state = {
   radius: 0.3,
   message: "",
   layers: Object.fromEntries(LAYERS.map((l) => [l.key, l.on])),
+  // The explain tool: the body clicked (a handle) and its story; the cell explained under
+  // the mouse (map.explainCell's answer) and the segment of it nearest the mouse.
+  explain: { body: null, story: null, cell: null, segment: null },
 };
 let map = null;
 let frames = null;
@@ -97,6 +101,25 @@ const hook = publishHook("sandbox", {
     boxes: crowdLines.boxKinds.filter((k) => k === KIND.BroadphaseBox).length,
     arrows: crowdLines.segmentKinds.filter((k) => k === KIND.FlowArrow).length,
   }),
+  /** The bodies' handles, in the order of `circles`. */
+  bodyHandles: () => Array.from(crowd.bodies.handles()),
+  /** Proposes the move (`dx`, `dy`) for body `handle` alone and runs one step: a contact
+   * on demand, whatever the flow would do. */
+  moveBody: (handle, dx, dy) => {
+    crowd.bodies.propose(handle, dx, dy);
+    crowd.bodies.step(map);
+  },
+  /** What the explain tool shows: the body clicked and its story, the segment hovered. */
+  explain: () => {
+    const { body, story, cell, segment } = state.explain;
+    return {
+      body,
+      story,
+      cell: cell && cell.cell,
+      segment: segment && { index: segment.index, hidden: segment.hidden, state: segment.state, words: segment.words },
+      readout: document.getElementById("explain-readout").textContent,
+    };
+  },
   clientAt: (x, y) => view.clientAt(x, y),
   pixelAt: (x, y) => view.pixelAt(x, y),
 });
@@ -121,6 +144,7 @@ function paint(cell) {
   tiles[row][col] = id;
   mapChanged = true;
   crowd.mapChanged();
+  state.explain.cell = state.explain.segment = null;
   castAgain();
 }
 
@@ -175,6 +199,9 @@ canvas.addEventListener("pointerdown", (event) => {
   } else if (state.tool.kind === "ray") {
     state.ray = { x0: x, y0: y, x1: x, y1: y, hit: null };
     castAgain();
+  } else if (state.tool.kind === "explain") {
+    state.explain.body = crowd.bodyAt(x, y);
+    tellStory();
   } else if (state.tool.kind === "circles") {
     crowd.setGoal(x, y);
     say(
@@ -190,6 +217,7 @@ canvas.addEventListener("pointermove", (event) => {
   const [x, y] = view.worldAt(event.clientX, event.clientY);
   // The circles flow to the mouse.
   if (x >= 0 && y >= 0 && x < width && y < height) crowd.setGoal(x, y);
+  if (state.tool.kind === "explain") explainAt(x, y);
   if (!state.dragging) return;
   if (state.tool.kind === "paint") {
     const cell = cellAt(x, y);
@@ -208,8 +236,71 @@ canvas.addEventListener("pointerup", () => {
   state.lastCell = null;
 });
 
+// ---- explain -----------------------------------------------------------------------------
+
+/** The distance from (`x`, `y`) to the segment from `a` to `b`. */
+function distanceToSegment(x, y, [ax, ay], [bx, by]) {
+  const [dx, dy] = [bx - ax, by - ay];
+  const length2 = dx * dx + dy * dy;
+  const f = length2 > 0 ? Math.min(1, Math.max(0, ((x - ax) * dx + (y - ay) * dy) / length2)) : 0;
+  return Math.hypot(ax + f * dx - x, ay + f * dy - y);
+}
+
+/** Explains the cell under (`x`, `y`) and picks its segment nearest the mouse. */
+function explainAt(x, y) {
+  const at = cellAt(x, y);
+  const e = state.explain;
+  if (!at) {
+    e.cell = e.segment = null;
+  } else {
+    const [col, row] = e.cell ? e.cell.cell : [-1, -1];
+    if (col !== at.col || row !== at.row) e.cell = map.explainCell(at.col, at.row);
+    let best = Infinity;
+    e.segment = null;
+    for (const segment of e.cell.segments) {
+      const d = distanceToSegment(x, y, segment.from, segment.to);
+      if (d < best) [best, e.segment] = [d, segment];
+    }
+  }
+  showExplain();
+}
+
+/** Asks the story of the body clicked again (after a step, or a click). */
+function tellStory() {
+  const e = state.explain;
+  if (e.body !== null && !crowd.bodies.contains(e.body)) e.body = null;
+  const story = e.body === null ? null : crowd.storyOf(e.body);
+  if (story === e.story) return;
+  e.story = story;
+  showExplain();
+}
+
+function showExplain() {
+  const e = state.explain;
+  const lines = [];
+  if (state.tool.kind !== "explain") {
+    lines.push("choose the explain tool (E)");
+  } else {
+    if (e.body === null) lines.push("click a circle for its last step");
+    else lines.push(e.story ?? `body ${e.body}: no step traced yet`);
+    if (e.cell) {
+      const [col, row] = e.cell.cell;
+      if (e.cell.tile === null) lines.push(`cell (${col}, ${row}): empty`);
+      else if (e.segment) {
+        lines.push(`cell (${col}, ${row}), tile ${e.cell.tile}: segment ${e.segment.index} ${e.segment.state}`);
+        lines.push(e.segment.words.trimEnd());
+      }
+    }
+  }
+  document.getElementById("explain-readout").textContent = lines.join("\n");
+}
+
 function chooseTool(tool) {
+  const explaining = tool.kind === "explain";
+  if (crowd && crowd.tracing !== explaining) crowd.trace(explaining);
+  if (!explaining) state.explain = { body: null, story: null, cell: null, segment: null };
   state.tool = tool;
+  showExplain();
   for (const button of document.querySelectorAll("#tools button")) {
     const same =
       button.dataset.tool === tool.kind &&
@@ -281,6 +372,7 @@ window.addEventListener("keydown", (event) => {
   if (key in tileKeys) chooseTool({ kind: "paint", tile: tileKeys[key] });
   else if (key === "r") chooseTool({ kind: "ray" });
   else if (key === "c") chooseTool({ kind: "circles" });
+  else if (key === "e") chooseTool({ kind: "explain" });
   else if (key === "[") setRadius(state.radius - 0.05);
   else if (key === "]") setRadius(state.radius + 0.05);
   else if (key === " ") setPaused(!state.paused);
@@ -338,6 +430,10 @@ function draw() {
   }
   if (state.layers.bodies) drawBodies(ctx);
   if (state.layers.ray && state.ray) drawRay(ctx, state.ray);
+  if (state.tool.kind === "explain") {
+    tellStory();
+    drawExplain(ctx);
+  }
   showBodies();
 }
 
@@ -379,6 +475,43 @@ function showBodies() {
   ]
     .filter(Boolean)
     .join("\n");
+}
+
+/** The explain tool's highlights: the body clicked ringed, the cell under the mouse framed,
+ * its segment nearest the mouse drawn thick (red when hidden), each end of its active
+ * pieces dotted (orange: a rounded cap; green: joined). */
+function drawExplain(ctx) {
+  const e = state.explain;
+  if (e.body !== null) {
+    const circles = crowd.circles();
+    const i = crowd.bodies.handles().indexOf(e.body);
+    if (i >= 0) {
+      ctx.beginPath();
+      ctx.arc(circles[3 * i], circles[3 * i + 1], circles[3 * i + 2] + view.px(4), 0, Math.PI * 2);
+      ctx.strokeStyle = COLORS.contact;
+      ctx.lineWidth = view.px(2);
+      ctx.stroke();
+    }
+  }
+  if (!e.cell) return;
+  const [col, row] = e.cell.cell;
+  ctx.strokeStyle = COLORS.grid;
+  ctx.lineWidth = view.px(1);
+  ctx.strokeRect(col, row, 1, 1);
+  const segment = e.segment;
+  if (!segment) return;
+  ctx.beginPath();
+  ctx.moveTo(...segment.from);
+  ctx.lineTo(...segment.to);
+  ctx.strokeStyle = segment.hidden ? COLORS.rayHit : COLORS.contact;
+  ctx.lineWidth = view.px(4);
+  ctx.stroke();
+  for (const end of segment.ends) {
+    ctx.beginPath();
+    ctx.arc(end.at[0], end.at[1], view.px(5), 0, Math.PI * 2);
+    ctx.fillStyle = end.cap ? COLORS.platform : COLORS.entrance;
+    ctx.fill();
+  }
 }
 
 function drawRay(ctx, ray) {

@@ -104,6 +104,27 @@ test("an imp summoned with I and a click stands where it was put", async () => {
   assert.deepEqual(session.errors, []);
 });
 
+test("the explain tool: a click on the imp tells its last step", async () => {
+  assert.equal((await stateOf(session.page)).paused, true);
+  await session.page.keyboard.press("e");
+  // A few steps traced, then paused again.
+  await session.page.keyboard.press("Space");
+  await waitFrames(session.page, 4);
+  await session.page.keyboard.press("Space");
+  const fighters = await session.page.evaluate(() => window.__tileslide.fighters());
+  const imp = fighters.findIndex((v, i) => i % 7 === 3 && v === 2) - 3;
+  assert.ok(imp >= 0, "the imp is there");
+  const at = await clientAt(session.page, fighters[imp], fighters[imp + 1]);
+  await session.page.mouse.click(at.x, at.y);
+  await waitFrames(session.page, 1);
+  const s = await stateOf(session.page);
+  assert.match(s.story, /^imp \d+, step \d+: at \(\d+\.\d{3}, \d+\.\d{3}\), proposed \(/);
+  assert.match(s.story, /\n  resolved \(-?\d+\.\d{3}, -?\d+\.\d{3}\): ends at \(/);
+  assert.equal(await session.page.textContent("#story"), s.story);
+  await session.page.keyboard.press("d");
+  assert.deepEqual(session.errors, []);
+});
+
 test("sped up, the first party of heroes arrives and is drawn cyan", async () => {
   await session.page.keyboard.press("Space"); // resume
   for (let i = 0; i < 3; i++) await session.page.keyboard.press("+");

@@ -7,7 +7,7 @@ import assert from "node:assert/strict";
 import { existsSync } from "node:fs";
 import { fileURLToPath } from "node:url";
 
-import { colorAt, rgba, screenshot, stateOf, waitFrames, usePage } from "./harness.mjs";
+import { clientAt, colorAt, rgba, screenshot, stateOf, waitFrames, usePage } from "./harness.mjs";
 
 const session = usePage("platformer");
 
@@ -32,6 +32,18 @@ test("the bundled level starts with the player standing at its start", async () 
   // Feet on the floor (the top of row 10).
   assert.ok(Math.abs(y + s.player[3] - 10) < 0.01, `feet at ${y + s.player[3]}`);
   assert.deepEqual(await colorAt(session.page, x, y), rgba("#35e0e0"), "the player is drawn cyan");
+  assert.deepEqual(session.errors, []);
+});
+
+test("a click on the player tells its last move: on the ground, the floor's cell", async () => {
+  const s = await stateOf(session.page);
+  const [x, y] = s.player;
+  const at = await clientAt(session.page, x, y);
+  await session.page.mouse.click(at.x, at.y);
+  const story = (await stateOf(session.page)).story;
+  assert.match(story, /^player, step \d+: at \(/);
+  assert.match(story, /on the ground: cell \(2, 10\) tile 1 segment \d/);
+  assert.equal(await session.page.textContent("#story"), story);
   assert.deepEqual(session.errors, []);
 });
 

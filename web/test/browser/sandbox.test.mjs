@@ -199,6 +199,58 @@ test("10,000 bodies: the frame time is measured and shown", async (t) => {
   assert.deepEqual(session.errors, []);
 });
 
+test("the explain tool: a circle clicked tells how its last step stopped at the wall", async () => {
+  const hook = (f, ...args) => session.page.evaluate(([f, args]) => window.__tileslide[f](...args), [f, args]);
+  // The square painted at (10, 8) is the wall; the circle is dropped in the open cell left
+  // of it, and moved into it with the steps paused.
+  assert.equal(await hook("tileAt", 10, 8), 1);
+  assert.equal(await hook("tileAt", 9, 8), null);
+  if (!(await stateOf(session.page)).paused) await session.page.click("#pause");
+  // The click on the button may have scrolled the canvas's top out of the window.
+  await session.page.evaluate(() => window.scrollTo(0, 0));
+  await session.page.keyboard.press("c");
+  const drop = await clientAt(session.page, 9.5, 8.5);
+  await session.page.mouse.click(drop.x, drop.y);
+  const [handle] = await hook("bodyHandles");
+  await session.page.keyboard.press("e");
+  await hook("moveBody", handle, 1, 0);
+  const circles = await hook("circles");
+  const [x, y] = circles;
+  assert.ok(x > 9.6 && x < 9.7, `the circle stopped at x = ${x}: ${circles}, ${JSON.stringify(await stateOf(session.page))}`);
+  const at = await clientAt(session.page, x, y);
+  await session.page.mouse.click(at.x, at.y);
+  await waitFrames(session.page, 1);
+  const shown = await hook("explain");
+  assert.equal(shown.body, handle);
+  assert.match(shown.story, new RegExp(`^body ${handle}, last step: at \\(9\\.\\d{3}, 8\\.\\d{3}\\), proposed \\(1\\.000, 0\\.000\\)`));
+  assert.match(shown.readout, /cell \(10, 8\) tile 1 segment \d \(face\): t 0\.\d+, at \(10\.000, 8\.500\), normal \(-1\.000, 0\.000\)  <- first/);
+  assert.match(shown.readout, /stopped: met straight on/);
+  assert.deepEqual(session.errors, []);
+});
+
+test("the explain tool: hovering a hidden seam says which neighbour hides it", async () => {
+  // A square beside the one at (10, 8): the seam between them is hidden on both sides.
+  await session.page.keyboard.press("1");
+  const square = await clientAt(session.page, 11.5, 8.5);
+  await session.page.mouse.click(square.x, square.y);
+  await session.page.keyboard.press("e");
+  const seam = await clientAt(session.page, 10.95, 8.5);
+  await session.page.mouse.move(seam.x, seam.y, { steps: 2 });
+  await waitFrames(session.page, 1);
+  const shown = await session.page.evaluate(() => window.__tileslide.explain());
+  assert.deepEqual(shown.cell, [10, 8]);
+  assert.equal(shown.segment.hidden, true);
+  assert.match(shown.segment.state, /^hidden by cell \(11, 8\) tile 1 segment \d$/);
+  assert.match(shown.readout, /segment \d hidden by cell \(11, 8\) tile 1 segment \d/);
+  assert.match(shown.readout, /wholly hidden: no query, body or character ever meets it/);
+  // Back as it was: the square erased, the circle gone, the steps running.
+  await session.page.keyboard.press("5");
+  await session.page.mouse.click(square.x, square.y);
+  await session.page.click("#clear-bodies");
+  await session.page.click("#pause");
+  assert.deepEqual(session.errors, []);
+});
+
 test("a screenshot of the sandbox", async () => {
   // Circles of three sizes, flowing to the ray's end past the hill.
   await session.page.keyboard.press("c");

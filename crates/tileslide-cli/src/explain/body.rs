@@ -6,13 +6,15 @@ use std::path::Path;
 use anyhow::{Context, Result, bail};
 use serde_json::{Value, json};
 use tileslide::{
-    Bodies, BodyFate, BodyHandle, BodyTrace, Circle, ContactPart, ContactSource, ContactTrace,
-    DebugKind, DebugLines, Owner, PassTrace, Ray, ResolveTrace, Response, Segment,
+    Bodies, BodyHandle, BodyTrace, Circle, ContactSource, DebugKind, DebugLines, Owner, Ray,
+    ResolveTrace, Response, Segment,
 };
 use tileslide_render::{Rgba, Style, Swatch};
 
 use super::picture::{Row, Sketch};
-use super::words::{num, point, point_json, wall, wall_json};
+use tileslide_explain::body::{response_short, source_words, step_words};
+
+use super::words::{num, point, point_json, wall_json};
 use crate::json::number;
 use crate::scene::Scene;
 
@@ -47,16 +49,20 @@ pub fn run(path: &Path, k: usize, only: Option<u64>, out: Option<&Path>, json: b
             told.push((step, story.clone()));
         }
     }
-    let name = |h: BodyHandle| handles.iter().position(|&x| x == h);
+    let index = |h: BodyHandle| handles.iter().position(|&x| x == h);
+    let name = |h: BodyHandle| index(h).map(|k| format!("body {k}"));
     if json {
         let steps: Vec<Value> = told
             .iter()
-            .map(|(step, story)| step_json(*step, story, &name))
+            .map(|(step, story)| step_json(*step, story, &index))
             .collect();
         println!("{}", json!({"body": k, "steps": steps}));
     } else {
         for (step, story) in &told {
-            print!("{}", step_words(k, *step, story, &name));
+            print!(
+                "{}",
+                step_words(&format!("body {k}, step {step}"), story, &name)
+            );
         }
     }
     if let Some(out) = out {
@@ -82,107 +88,6 @@ pub fn check_step(only: Option<u64>, steps: u64) -> Result<()> {
         bail!("--step {s}: the scene runs steps 1 to {steps}");
     }
     Ok(())
-}
-
-/// What a contact came from, in words.
-fn source_words(c: &ContactTrace, name: &impl Fn(BodyHandle) -> Option<usize>) -> String {
-    let part = match c.part {
-        ContactPart::Face => " (face)",
-        ContactPart::RoundedEnd => " (rounded end)",
-        _ => "",
-    };
-    match c.source {
-        ContactSource::Wall(w) => format!("{}{part}", wall(&w)),
-        ContactSource::Body { handle, circle } => match name(handle) {
-            Some(k) => format!("body {k} circle {circle}"),
-            None => format!("a body not in the scene, circle {circle}"),
-        },
-        _ => "something new".to_owned(),
-    }
-}
-
-/// What the resolver did, in words.
-fn response_words(pass: &PassTrace) -> String {
-    let said = match pass.response {
-        Response::Free => "free: the rest of the move made".to_owned(),
-        Response::Slid { slide } => format!("slid along it: next {}", point(slide)),
-        Response::RoundedCorner { slide } => {
-            format!("rounded the convex corner: next {}", point(slide))
-        }
-        Response::TieBreak { slide } => format!(
-            "met head-on: the tie-break turns it (the lower slot one way, the higher the other): next {}",
-            point(slide)
-        ),
-        Response::StoppedHeadOn => "stopped: met straight on, no side to slide to".to_owned(),
-        Response::StoppedInCorner => {
-            "stopped in a concave corner: the slide along the last wall ran straight into this one"
-                .to_owned()
-        }
-        Response::NoSlide => "stopped at the contact (slide mode Stop)".to_owned(),
-        Response::CutShort => "cut short at the contact: the passes are used up".to_owned(),
-        Response::OutOfRange => "stopped: the slide would leave the coordinate range".to_owned(),
-        _ => format!("{:?}", pass.response),
-    };
-    // (Noted only where it matters: a contact at t = 0 has no safe part.)
-    let dropped = !pass.step_taken && pass.chosen().is_some_and(|c| c.t > 0.0);
-    if dropped {
-        format!("{said} (the safe part, under an eighth of the gap, not taken)")
-    } else {
-        said
-    }
-}
-
-/// One step of the story, in words.
-fn step_words(
-    k: usize,
-    step: u64,
-    story: &BodyTrace,
-    name: &impl Fn(BodyHandle) -> Option<usize>,
-) -> String {
-    let mut s = format!(
-        "body {k}, step {step}: at {}, proposed {}\n",
-        point(story.start),
-        point(story.proposed)
-    );
-    match story.fate {
-        BodyFate::Still => s.push_str("  still: no move proposed\n"),
-        BodyFate::Settled => s.push_str(
-            "  skipped as settled: blocked in place last step, and nothing it sees changed\n",
-        ),
-        _ => {}
-    }
-    let mut n = 0;
-    for pass in &story.passes {
-        s += &format!("  pass {}: sweeps {}\n", pass.pass, point(pass.motion));
-        for (i, c) in pass.contacts.iter().enumerate() {
-            n += 1;
-            let mark = if c.grazed {
-                "  ignored: a graze (moving along it)"
-            } else if pass.first == Some(i) {
-                "  <- first"
-            } else {
-                ""
-            };
-            s += &format!(
-                "    [{n}] {}: t {}, at {}, normal {}{mark}\n",
-                source_words(c, name),
-                num(c.t),
-                point(c.point),
-                point(c.normal)
-            );
-        }
-        s += &format!(
-            "    moved {}; {}\n",
-            point(pass.moved),
-            response_words(pass)
-        );
-    }
-    s += &format!(
-        "  resolved {}: ends at {}\n",
-        point(story.resolved),
-        point(story.start + story.resolved)
-    );
-    s
 }
 
 fn step_json(step: u64, story: &BodyTrace, name: &impl Fn(BodyHandle) -> Option<usize>) -> Value {
@@ -235,22 +140,6 @@ fn step_json(step: u64, story: &BodyTrace, name: &impl Fn(BodyHandle) -> Option<
     })
 }
 
-/// The response in a few words.
-fn response_short(r: &Response) -> &'static str {
-    match r {
-        Response::Free => "free",
-        Response::Slid { .. } => "slid",
-        Response::RoundedCorner { .. } => "rounded the corner",
-        Response::TieBreak { .. } => "tie-break",
-        Response::StoppedHeadOn => "stopped head-on",
-        Response::StoppedInCorner => "stopped in a concave corner",
-        Response::NoSlide => "stopped (no slide)",
-        Response::CutShort => "cut short (passes used up)",
-        Response::OutOfRange => "stopped (range)",
-        _ => "?",
-    }
-}
-
 /// The response's name, without its slide.
 fn response_name(r: &Response) -> String {
     let debug = format!("{r:?}");
@@ -268,7 +157,7 @@ fn sketch(
     step: u64,
     story: &BodyTrace,
     bodies: &Bodies,
-    name: &impl Fn(BodyHandle) -> Option<usize>,
+    name: &impl Fn(BodyHandle) -> Option<String>,
 ) -> Sketch {
     let style = Style::default();
     let mut sketch = Sketch::new();

@@ -5,13 +5,13 @@ use std::path::Path;
 
 use anyhow::{Result, anyhow};
 use serde_json::{Value, json};
-use tileslide::{
-    CellExplanation, CellSide, EndJoin, PieceEnd, SegmentExplanation, SegmentFlags, Vec2,
-};
+use tileslide::{CellExplanation, SegmentFlags, Vec2};
 use tileslide_render::{Rgba, Style, Swatch};
 
 use super::picture::{Row, Sketch};
-use super::words::{cell, placed, placed_json, point, point_json};
+use tileslide_explain::cell::{end_words, explanation_words, state_words};
+
+use super::words::{cell, placed_json, point_json};
 use crate::map_file::{self, MapArgs};
 
 /// Explains cell `text` (`COL,ROW`) of the map.
@@ -40,110 +40,6 @@ fn parse_cell(text: &str) -> Result<tileslide::Cell> {
     let col = c.trim().parse::<u32>().map_err(|_| bad())?;
     let row = r.trim().parse::<u32>().map_err(|_| bad())?;
     Ok(tileslide::Cell::new(col, row))
-}
-
-fn side_words(side: CellSide) -> &'static str {
-    match side {
-        CellSide::MinX => "its min-x side",
-        CellSide::MaxX => "its max-x side",
-        CellSide::MinY => "its min-y side",
-        CellSide::MaxY => "its max-y side",
-    }
-}
-
-fn flags_words(flags: SegmentFlags) -> String {
-    let mut names = Vec::new();
-    if flags.contains(SegmentFlags::SOLID) {
-        names.push("solid".to_owned());
-    }
-    if flags.contains(SegmentFlags::ONE_WAY) {
-        names.push("one-way".to_owned());
-    }
-    let other = flags.0 & !(SegmentFlags::SOLID.0 | SegmentFlags::ONE_WAY.0);
-    if other != 0 {
-        names.push(format!("flags {other:#x}"));
-    }
-    if names.is_empty() {
-        "no flags".to_owned()
-    } else {
-        names.join(", ")
-    }
-}
-
-/// How an end joins, in words.
-pub fn join_words(join: EndJoin) -> &'static str {
-    match join {
-        EndJoin::Flat => "continues flat: no cap",
-        EndJoin::Concave => "turns concave: no cap",
-        EndJoin::Open => "nothing continues it: rounded cap",
-        EndJoin::Convex => "convex corner: rounded cap",
-        EndJoin::FlagsChange => "continues into other flags: rounded cap",
-        EndJoin::OneWay => "end of a one-way platform: rounded cap",
-        _ => "rounded cap",
-    }
-}
-
-fn end_words(end: &PieceEnd) -> String {
-    let into = match end.into {
-        Some(s) => format!(" into {}", placed(&s)),
-        None => String::new(),
-    };
-    format!("end {}{into}: {}", point(end.point), join_words(end.join))
-}
-
-fn segment_words(s: &SegmentExplanation) -> String {
-    let on = s
-        .side
-        .map(|side| format!(", on {}", side_words(side)))
-        .unwrap_or_default();
-    let mut text = format!(
-        "  segment {}: {} to {}, normal {}, {}{on}\n",
-        s.index,
-        point(s.segment.a),
-        point(s.segment.b),
-        point(s.normal),
-        flags_words(s.flags)
-    );
-    for h in &s.hidden {
-        text += &format!(
-            "    hidden from {} to {}: covered by {}, solid and facing back\n",
-            point(h.part.a),
-            point(h.part.b),
-            placed(&h.by)
-        );
-    }
-    if s.active.is_empty() {
-        text += "    wholly hidden: no query, body or character ever meets it\n";
-    }
-    for p in &s.active {
-        text += &format!(
-            "    active {} to {} (active segment {} of the cell)\n",
-            point(p.segment.a),
-            point(p.segment.b),
-            p.active.index
-        );
-        for end in &p.ends {
-            text += &format!("      {}\n", end_words(end));
-        }
-    }
-    text
-}
-
-fn explanation_words(e: &CellExplanation) -> String {
-    let Some(tile) = e.tile else {
-        return format!("cell {}: empty\n", cell(e.cell));
-    };
-    let n = e.segments.len();
-    let mut text = format!(
-        "cell {}: tile {}, {n} segment{}\n",
-        cell(e.cell),
-        tile.0,
-        if n == 1 { "" } else { "s" }
-    );
-    for s in &e.segments {
-        text += &segment_words(s);
-    }
-    text
 }
 
 fn explanation_json(e: &CellExplanation) -> Value {
@@ -232,16 +128,7 @@ fn sketch(e: &CellExplanation, corner: Vec2, cell_size: f32) -> Sketch {
             Rgba::opaque(255, 255, 255)
         };
         sketch.label(at, s.index.to_string(), color);
-        let state = if s.active.is_empty() {
-            match s.hidden.first() {
-                Some(h) => format!("hidden by {}", placed(&h.by)),
-                None => "hidden".to_owned(),
-            }
-        } else if s.hidden.is_empty() {
-            "active".to_owned()
-        } else {
-            "partly hidden".to_owned()
-        };
+        let state = state_words(s);
         legend.push(Row::Line(format!("{}: {state}", s.index)));
         for p in &s.active {
             for end in &p.ends {

@@ -7,12 +7,16 @@ use anyhow::{Context, Result, bail};
 use serde_json::{Value, json};
 use tileslide::{
     Aabb, CharacterShape, Circle, DebugKind, DebugLines, MoveEvent, MoveTrace, OneWayPass, Owner,
-    Segment, SlideResponse, Surface, SweepPurpose, TileMap, Vec2, WallSource,
+    Segment, TileMap, Vec2, WallSource,
 };
 use tileslide_render::{Rgba, Style, Swatch};
 
 use super::body::check_step;
 use super::picture::{Row, Sketch};
+use tileslide_explain::character::{
+    event_words, purpose_words, response_words, step_words, surface_words,
+};
+
 use super::words::{num, point, point_json, wall, wall_json};
 use crate::scene::Scene;
 
@@ -38,7 +42,7 @@ pub fn run(path: &Path, only: Option<u64>, out: Option<&Path>, json: bool) -> Re
         println!("{}", json!({"character": steps}));
     } else {
         for (step, t) in &told {
-            print!("{}", step_words(*step, t));
+            print!("{}", step_words(&format!("character, step {step}"), t));
         }
     }
     if let Some(out) = out {
@@ -55,146 +59,6 @@ pub fn run(path: &Path, only: Option<u64>, out: Option<&Path>, json: bool) -> Re
         }
     }
     Ok(())
-}
-
-fn purpose_words(p: SweepPurpose) -> &'static str {
-    match p {
-        SweepPurpose::Carry => "carried",
-        SweepPurpose::PushOut => "pushed out",
-        SweepPurpose::Walk => "walk",
-        SweepPurpose::Air => "air",
-        SweepPurpose::StepUp => "step up",
-        SweepPurpose::Roll => "roll",
-        SweepPurpose::StepOff => "step off",
-        SweepPurpose::Settle => "settle",
-        _ => "move",
-    }
-}
-
-fn surface_words(s: Surface) -> &'static str {
-    match s {
-        Surface::Ground => "ground",
-        Surface::Ceiling => "a ceiling",
-        Surface::Left => "a wall on the left",
-        Surface::Right => "a wall on the right",
-    }
-}
-
-fn response_words(r: SlideResponse) -> &'static str {
-    match r {
-        SlideResponse::Landed => "landed",
-        SlideResponse::WalkedOn => "walked on along it",
-        SlideResponse::SlidAlong => "slid along it",
-        SlideResponse::SlidDown => "slid down it (sideways motion does not climb it)",
-        SlideResponse::Stopped => "stopped (a walk does not climb it)",
-        SlideResponse::Rolled => "rolled round the corner",
-        _ => "went on",
-    }
-}
-
-/// One event, in words; `n` numbers the surfaces met.
-fn event_words(e: &MoveEvent, n: &mut usize) -> String {
-    match *e {
-        MoveEvent::Carried { owner, by } => {
-            format!("carried {} by the platform of owner {}", point(by), owner.0)
-        }
-        MoveEvent::PlatformGone { owner } => {
-            format!("the platform of owner {} is gone: off it", owner.0)
-        }
-        MoveEvent::Pushed {
-            source,
-            depth,
-            crushed,
-        } => {
-            let crush = if crushed {
-                ": crushed, the world left no room"
-            } else {
-                ""
-            };
-            format!(
-                "pushed out of {} ({} deep){crush}",
-                wall(&source),
-                num(depth)
-            )
-        }
-        MoveEvent::Sweep(s) => {
-            let met = match s.hit {
-                Some(h) => {
-                    *n += 1;
-                    let one_way = if h.flags.contains(tileslide::SegmentFlags::ONE_WAY) {
-                        " one-way"
-                    } else {
-                        ""
-                    };
-                    let end = if h.rounded { " (rounded end)" } else { "" };
-                    format!(
-                        ": [{n}] met {}{one_way}{end}, t {}, at {}, normal {}",
-                        wall(&h.source),
-                        num(h.t),
-                        point(h.point),
-                        point(h.normal)
-                    )
-                }
-                None => ": clear".to_owned(),
-            };
-            format!(
-                "sweep ({}) {} from {}{met}; moved {}",
-                purpose_words(s.purpose),
-                point(s.motion),
-                point(s.from),
-                point(s.moved)
-            )
-        }
-        MoveEvent::Slide {
-            surface,
-            response,
-            next,
-        } => format!(
-            "{}: {}, next {}",
-            surface_words(surface),
-            response_words(response),
-            point(next)
-        ),
-        MoveEvent::OneWay { source, pass } => match pass {
-            OneWayPass::FromBelow => format!(
-                "one-way platform {}: passed, the character is below it",
-                wall(&source)
-            ),
-            OneWayPass::DroppedThrough => {
-                format!("one-way platform {}: dropped through", wall(&source))
-            }
-            _ => format!("one-way platform {}: not held", wall(&source)),
-        },
-        MoveEvent::SteppedUp { by } => format!("stepped up the ledge by {}", point(by)),
-        MoveEvent::StepUpRefused => "step up tried and undone".to_owned(),
-        MoveEvent::LeftGround { at } => format!("walked off the ground's edge at {}", point(at)),
-        MoveEvent::Grounded {
-            source,
-            normal,
-            drop,
-        } => format!(
-            "on the ground: {}, normal {}, dropped {}",
-            wall(&source),
-            point(normal),
-            num(drop)
-        ),
-        MoveEvent::Airborne => "in the air".to_owned(),
-        _ => format!("{e:?}"),
-    }
-}
-
-fn step_words(step: u64, t: &MoveTrace) -> String {
-    let mut s = format!(
-        "character, step {step}: at {}, move {}\n",
-        point(t.start),
-        point(t.displacement)
-    );
-    let mut n = 0;
-    for e in &t.events {
-        s += &format!("  {}\n", event_words(e, &mut n));
-    }
-    s += &format!("  ends at {}\n", point(t.end));
-    s
 }
 
 fn step_json(step: u64, t: &MoveTrace) -> Value {
