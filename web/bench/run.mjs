@@ -3,7 +3,8 @@
 // run through the same Rust code (the tileslide-web-bench crate, release build), with the
 // medians, the wasm/native ratios, the answers' checksums (they must agree) and the CPU.
 // The runs are interleaved (a native run, then a wasm run of each scene, N times), so that
-// a machine whose load changes during the benchmark weighs on both sides alike.
+// a machine whose load changes during the benchmark weighs on both sides alike. Both builds
+// of the package are timed: tileslide (for size) and tileslide/speed (for speed).
 //
 // Options: --runs N (default 5), --no-build (use web/pkg as it is).
 import { execFileSync } from "node:child_process";
@@ -25,8 +26,13 @@ if (!args.includes("--no-build")) {
 }
 // The tests' support module starts the package and hashes answers as the native side does.
 const { fnv1a } = await import("../test/support.mjs");
-const { Bodies, TileMap } = await import("../pkg/tileslide.js");
-const wasmBytes = readFileSync(here("../pkg/tileslide_bg.wasm"));
+const plain = await import("../pkg/tileslide.js");
+const speed = await import("../pkg/speed/tileslide.js");
+speed.initSync({ module: readFileSync(here("../pkg/speed/tileslide_bg.wasm")) });
+const builds = [
+  { name: "tileslide", module: plain, dir: "../pkg/" },
+  { name: "tileslide/speed", module: speed, dir: "../pkg/speed/" },
+];
 
 // The native side: builds, writes the scenes, times them, and prints one line of JSON.
 execFileSync("cargo", ["build", "--quiet", "--release", "-p", "tileslide-web-bench"], { cwd: root, stdio: "inherit" });
@@ -41,7 +47,8 @@ const floats = (name) => {
   const bytes = readFileSync(join(dir, name));
   return new Float32Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 4);
 };
-const map = TileMap.fromBaked(readFileSync(join(dir, "dungeon256.tsm")));
+const tsm = readFileSync(join(dir, "dungeon256.tsm"));
+for (const build of builds) build.map = build.module.TileMap.fromBaked(tsm);
 const rays = floats("rays.f32");
 const crowd = floats("crowd.f32");
 
@@ -56,10 +63,8 @@ const seconds = (work) => {
 };
 
 const steps = native.crowdSteps;
-let answers;
-let crowdHash;
-const crowdOnce = () => {
-  const bodies = new Bodies();
+const crowdOnce = (build) => {
+  const bodies = new build.module.Bodies();
   const n = crowd.length / 4;
   const handles = new Float64Array(n);
   const moves = new Float32Array(2 * n);
@@ -69,40 +74,46 @@ const crowdOnce = () => {
   }
   for (let s = 0; s < steps; s++) {
     bodies.proposeMany(handles, moves);
-    bodies.step(map);
+    bodies.step(build.map);
   }
-  crowdHash = fnv1a(bodies.positions());
+  build.crowdHash = fnv1a(bodies.positions());
   bodies.free();
 };
-const times = { wasmRays: [], wasmCrowd: [], nativeRays: [], nativeRaysPortable: [], nativeCrowd: [] };
+for (const build of builds) Object.assign(build, { rays: [], crowd: [] });
+const times = { nativeRays: [], nativeRaysPortable: [], nativeCrowd: [] };
 for (let i = 0; i < runs; i++) {
   if (i > 0) native = nativeRun();
   times.nativeRays.push(native.raysSeconds);
   times.nativeRaysPortable.push(native.raysPortableSeconds);
   times.nativeCrowd.push(native.crowdStepSeconds);
-  times.wasmRays.push(seconds(() => (answers = map.castRays(rays))));
-  times.wasmCrowd.push(seconds(crowdOnce) / steps);
+  for (const build of builds) {
+    build.rays.push(seconds(() => (build.answers = build.map.castRays(rays))));
+    build.crowd.push(seconds(() => crowdOnce(build)) / steps);
+  }
 }
 rmSync(dir, { recursive: true });
-const raysSeconds = median(times.wasmRays);
-const crowdStepSeconds = median(times.wasmCrowd);
 native.raysSeconds = median(times.nativeRays);
 native.raysPortableSeconds = median(times.nativeRaysPortable);
 native.crowdStepSeconds = median(times.nativeCrowd);
 
-const raysChecksum = fnv1a(answers);
 const row = (name, wasm, nat, unit, scale, same) =>
   `${name.padEnd(26)} ${(wasm * scale).toFixed(2).padStart(9)} ${unit}  ${(nat * scale).toFixed(2).padStart(9)} ${unit}  ${(wasm / nat).toFixed(2).padStart(5)}×  ${same ? "same answers" : "ANSWERS DIFFER"}`;
 console.log(`CPU: ${cpus()[0]?.model ?? "unknown"}; Node ${process.version}; median of ${runs} interleaved runs (crowd: ${steps} steps a run)`);
-console.log(`package: tileslide_bg.wasm ${statSync(here("../pkg/tileslide_bg.wasm")).size} bytes, ${gzipSync(wasmBytes, { level: 9 }).length} gzipped`);
-console.log(`${"scene".padEnd(26)} ${"wasm".padStart(12)}  ${"native".padStart(12)}  ratio`);
-console.log(row("rays dungeon256, 1M rays", raysSeconds, native.raysSeconds, "ms", 1e3, raysChecksum === native.raysChecksum));
-// On x86-64 the native batch walk runs 256-bit AVX2 when it can; its portable walk is the
-// same eight lanes as two 128-bit halves, as in wasm's SIMD128: the same work at the
-// package's width (the native side checks that its answers are cast_rays').
-console.log(row("rays, native 128-bit walk", raysSeconds, native.raysPortableSeconds, "ms", 1e3, raysChecksum === native.raysChecksum));
-console.log(row("crowd 10,000, per step", crowdStepSeconds, native.crowdStepSeconds, "ms", 1e3, crowdHash === native.crowdHash));
-if (raysChecksum !== native.raysChecksum || crowdHash !== native.crowdHash) {
-  console.error(`checksums: rays wasm ${raysChecksum} native ${native.raysChecksum}; crowd wasm ${crowdHash} native ${native.crowdHash}`);
-  process.exitCode = 1;
+for (const build of builds) {
+  const file = here(`${build.dir}tileslide_bg.wasm`);
+  const raysSeconds = median(build.rays);
+  const crowdStepSeconds = median(build.crowd);
+  const raysChecksum = fnv1a(build.answers);
+  console.log(`\n${build.name}: tileslide_bg.wasm ${statSync(file).size} bytes, ${gzipSync(readFileSync(file), { level: 9 }).length} gzipped`);
+  console.log(`${"scene".padEnd(26)} ${"wasm".padStart(12)}  ${"native".padStart(12)}  ratio`);
+  console.log(row("rays dungeon256, 1M rays", raysSeconds, native.raysSeconds, "ms", 1e3, raysChecksum === native.raysChecksum));
+  // On x86-64 the native batch walk runs 256-bit AVX2 when it can; its portable walk is the
+  // same eight lanes as two 128-bit halves, as in wasm's SIMD128: the same work at the
+  // package's width (the native side checks that its answers are cast_rays').
+  console.log(row("rays, native 128-bit walk", raysSeconds, native.raysPortableSeconds, "ms", 1e3, raysChecksum === native.raysChecksum));
+  console.log(row("crowd 10,000, per step", crowdStepSeconds, native.crowdStepSeconds, "ms", 1e3, build.crowdHash === native.crowdHash));
+  if (raysChecksum !== native.raysChecksum || build.crowdHash !== native.crowdHash) {
+    console.error(`${build.name} checksums: rays wasm ${raysChecksum} native ${native.raysChecksum}; crowd wasm ${build.crowdHash} native ${native.crowdHash}`);
+    process.exitCode = 1;
+  }
 }

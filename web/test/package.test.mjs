@@ -20,6 +20,23 @@ test("the package's wasm stays under 400 KB gzipped", () => {
   assert.ok(gzipped < 400_000, `tileslide_bg.wasm is ${gzipped} bytes gzipped`);
 });
 
+test("tileslide/speed is the same package built for speed", async () => {
+  // The same exports and types, a larger .wasm, and the same answers (test/scenes.test.mjs
+  // checks the standard scenes' checksums through both).
+  const speed = await import("../pkg/speed/tileslide.js");
+  const plain = await import("../pkg/tileslide.js");
+  assert.deepEqual(Object.keys(speed).sort(), Object.keys(plain).sort());
+  assert.equal(
+    readFileSync(here("../pkg/speed/tileslide.d.ts"), "utf8"),
+    readFileSync(here("../pkg/tileslide.d.ts"), "utf8"),
+  );
+  const bytes = (dir) => gzipSync(readFileSync(here(`../pkg/${dir}tileslide_bg.wasm`)), { level: 9 }).length;
+  assert.ok(bytes("speed/") > bytes(""), "the speed build is the larger");
+  const manifest = JSON.parse(readFileSync(here("../package.json"), "utf8"));
+  assert.equal(manifest.exports["./speed"].default, "./pkg/speed/tileslide.js");
+  for (const file of manifest.files) assert.ok(existsSync(here(`../${file}`)), `${file} is built`);
+});
+
 test("a map drawn in ASCII answers a ray with the CLI's fields", () => {
   const map = TileMap.fromAscii(ROOM);
   assert.equal(map.width, 5);
