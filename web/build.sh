@@ -1,7 +1,7 @@
 #!/bin/sh
 # Builds web/pkg/: the ES module tileslide.js, its tileslide_bg.wasm and the TypeScript
 # types tileslide.d.ts, from crates/tileslide-wasm; web/pkg/speed/: the same built for speed
-# (`import … from "tileslide/speed"`); web/playground-pkg/: the same with the
+# (`import … from "tileslide/speed"`); web/playground-pkg/: the speed build with the
 # `explain` feature (the bodies' and cells' explanations in words), which the playground's
 # sandbox uses and the npm package leaves out; and web/games-pkg/: the demo games
 # (tileslide_games.js, DungeonGame and PlatformerGame, for the playground; not part of the
@@ -56,14 +56,7 @@ done
 target_dir=$(cargo metadata --manifest-path "$root/Cargo.toml" --format-version 1 --no-deps \
     | sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')
 # One build each, with the same settings: built together, Cargo would unify their features of
-# the core crate, and the games' (PNG tracing among them) would grow the package. The
-# playground's build with `explain` comes first: both write tileslide_wasm.wasm, and the
-# package's must be the one left for wasm-bindgen below.
-cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
-    -p tileslide-wasm --features explain "$@"
-rm -rf playground-pkg
-wasm-bindgen --target web --weak-refs --remove-name-section --out-dir playground-pkg --out-name tileslide \
-    "$target_dir/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
+# the core crate, and the games' (PNG tracing among them) would grow the package.
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
     -p tileslide-wasm "$@"
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
@@ -74,22 +67,28 @@ rm -rf pkg
 # --remove-name-section: the release profile's debug lines leave a 130 KB name section.
 wasm-bindgen --target web --weak-refs --remove-name-section --out-dir pkg --out-name tileslide \
     "$target_dir/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
-
 size=$(wc -c < pkg/tileslide_bg.wasm)
 gzipped=$(gzip -9 -c pkg/tileslide_bg.wasm | wc -c)
 echo "web/pkg: tileslide_bg.wasm $size bytes, $gzipped gzipped"
+
+# Built for speed: tileslide at the release profile's level 3, everything else as above, in
+# a target directory of its own, so neither these builds nor the package's undo the other's.
+# - web/pkg/speed/: the same package (`import … from "tileslide/speed"`): about 50 KB more
+#   gzipped, and the rays scene in about three fifths of the time, a crowd step in about
+#   three quarters (npm run bench).
+# - web/playground-pkg/: the same with `explain`, for the playground, whose sandbox steps
+#   10,000 bodies a frame. It comes first: both write tileslide_wasm.wasm.
+set -- "$@" --config 'profile.release.package.tileslide.opt-level=3' --target-dir "$target_dir/speed"
+cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
+    -p tileslide-wasm --features explain "$@"
+rm -rf playground-pkg
+wasm-bindgen --target web --weak-refs --remove-name-section --out-dir playground-pkg --out-name tileslide \
+    "$target_dir/speed/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
 size=$(wc -c < playground-pkg/tileslide_bg.wasm)
 gzipped=$(gzip -9 -c playground-pkg/tileslide_bg.wasm | wc -c)
 echo "web/playground-pkg: tileslide_bg.wasm $size bytes, $gzipped gzipped (explain; not the npm package)"
-
-# web/pkg/speed/: the same package built for speed (`import … from "tileslide/speed"`):
-# tileslide at the release profile's level 3, everything else as above: about 50 KB more
-# gzipped, and the rays scene in about three fifths of the time, a crowd step in about
-# three quarters (npm run bench). Its own target directory, so neither build undoes the
-# other's.
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
-    -p tileslide-wasm "$@" --config 'profile.release.package.tileslide.opt-level=3' \
-    --target-dir "$target_dir/speed"
+    -p tileslide-wasm "$@"
 wasm-bindgen --target web --weak-refs --remove-name-section --out-dir pkg/speed --out-name tileslide \
     "$target_dir/speed/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
 size=$(wc -c < pkg/speed/tileslide_bg.wasm)
