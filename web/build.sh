@@ -55,6 +55,11 @@ for crate in tileslide-wasm tiled quick-xml serde serde_core serde_json flate2 m
 done
 target_dir=$(cargo metadata --manifest-path "$root/Cargo.toml" --format-version 1 --no-deps \
     | sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')
+# Prints the size of web/$1, and gzipped; $2 says what else it is.
+size_of() {
+    echo "web/$1: $(wc -c < "$1") bytes, $(gzip -9 -c "$1" | wc -c) gzipped${2:+ $2}"
+}
+
 # One build each, with the same settings: built together, Cargo would unify their features of
 # the core crate, and the games' (PNG tracing among them) would grow the package.
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
@@ -67,9 +72,7 @@ rm -rf pkg
 # --remove-name-section: the release profile's debug lines leave a 130 KB name section.
 wasm-bindgen --target web --weak-refs --remove-name-section --out-dir pkg --out-name tileslide \
     "$target_dir/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
-size=$(wc -c < pkg/tileslide_bg.wasm)
-gzipped=$(gzip -9 -c pkg/tileslide_bg.wasm | wc -c)
-echo "web/pkg: tileslide_bg.wasm $size bytes, $gzipped gzipped"
+size_of pkg/tileslide_bg.wasm
 
 # Built for speed: tileslide at the release profile's level 3, everything else as above, in
 # a target directory of its own, so neither these builds nor the package's undo the other's.
@@ -84,20 +87,14 @@ cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown
 rm -rf playground-pkg
 wasm-bindgen --target web --weak-refs --remove-name-section --out-dir playground-pkg --out-name tileslide \
     "$target_dir/speed/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
-size=$(wc -c < playground-pkg/tileslide_bg.wasm)
-gzipped=$(gzip -9 -c playground-pkg/tileslide_bg.wasm | wc -c)
-echo "web/playground-pkg: tileslide_bg.wasm $size bytes, $gzipped gzipped (explain; not the npm package)"
+size_of playground-pkg/tileslide_bg.wasm "(explain; not the npm package)"
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
     -p tileslide-wasm "$@"
 wasm-bindgen --target web --weak-refs --remove-name-section --out-dir pkg/speed --out-name tileslide \
     "$target_dir/speed/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
-size=$(wc -c < pkg/speed/tileslide_bg.wasm)
-gzipped=$(gzip -9 -c pkg/speed/tileslide_bg.wasm | wc -c)
-echo "web/pkg/speed: tileslide_bg.wasm $size bytes, $gzipped gzipped"
+size_of pkg/speed/tileslide_bg.wasm
 
 rm -rf games-pkg
 wasm-bindgen --target web --weak-refs --remove-name-section --out-dir games-pkg --out-name tileslide_games \
     "$target_dir/wasm32-unknown-unknown/release/tileslide_games_wasm.wasm"
-size=$(wc -c < games-pkg/tileslide_games_bg.wasm)
-gzipped=$(gzip -9 -c games-pkg/tileslide_games_bg.wasm | wc -c)
-echo "web/games-pkg: tileslide_games_bg.wasm $size bytes, $gzipped gzipped"
+size_of games-pkg/tileslide_games_bg.wasm
