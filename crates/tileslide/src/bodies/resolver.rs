@@ -34,7 +34,7 @@ use super::map_watch::{MapChange, MapWatch};
 use super::near_walls::NearWalls;
 use super::neighbours::Neighbours;
 use super::settled::Settled;
-use super::trace::{Decision, NoTrace, Recorder, Sink};
+use super::trace::{Decision, Recorder, Sink};
 use crate::geometry::{Aabb, Circle, SweepHit, in_range};
 use crate::tiles::TileMap;
 
@@ -96,7 +96,7 @@ impl Resolver {
         config: &ResolveConfig,
         map: &TileMap,
     ) -> ResolveReport {
-        self.resolve_into(bodies, config, map, &mut NoTrace)
+        self.resolve_into(bodies, config, map, &mut None)
     }
 
     /// [`resolve`](Self::resolve), reporting every pass to `recorder`.
@@ -107,12 +107,12 @@ impl Resolver {
         map: &TileMap,
         recorder: &mut Recorder<'_>,
     ) -> ResolveReport {
-        self.resolve_into(bodies, config, map, recorder)
+        self.resolve_into(bodies, config, map, &mut Some(recorder))
     }
 
-    /// The resolve, reporting to `sink` (with [`NoTrace`], nothing is built to report).
-    /// Kept out of line, as `resolve` was before it took a sink: inlined into
-    /// `Bodies::resolve`, the crowd's step took 0.6 % more instructions.
+    /// The resolve, reporting to `sink` (with `None`, nothing is built to report). Kept out
+    /// of line: inlined into `Bodies::resolve`, the crowd's step took 0.6 % more
+    /// instructions.
     #[inline(never)]
     fn resolve_into<S: Sink>(
         &mut self,
@@ -295,7 +295,7 @@ impl Resolver {
             let taken = step.length() >= gap * MIN_STEP;
             self.position[bi] += Vec2::new(keep_if(taken, step.x), keep_if(taken, step.y));
             if pass == config.passes {
-                if S::ON {
+                if sink.on() {
                     let decision = Decision {
                         blocked: remaining * (1.0 - hit.t),
                         normal: hit.normal,
@@ -317,7 +317,7 @@ impl Resolver {
             // lies on a straight path between two points within it (the square is convex,
             // and rounding is monotone).
             let out_of_range = !in_range(self.position[bi] + remaining);
-            if S::ON {
+            if sink.on() {
                 let decision = Decision {
                     blocked,
                     normal: hit.normal,
@@ -394,7 +394,7 @@ impl Resolver {
                 }
                 let hit = sweep_circle(center, motion, at, radius);
                 // (Which circle of its body, for the trace only: no lookup otherwise.)
-                let who = if S::ON {
+                let who = if sink.on() {
                     (other.body, n - self.first_circle[other.body as usize])
                 } else {
                     (0, 0)

@@ -287,9 +287,9 @@ impl Bodies {
     /// corner, took the tie-break, ignored a graze), or that a body was skipped as
     /// settled. The result is bit for bit what `resolve` gives.
     ///
-    /// Tracing costs only when asked for: `resolve` records nothing and builds nothing to
-    /// record (the resolver is compiled once with an empty sink), so it allocates nothing
-    /// and runs as fast as without this method.
+    /// Tracing costs only when asked for: `resolve` passes no recorder, builds nothing to
+    /// record and allocates nothing; the resolver is compiled once for both, so a program
+    /// that traces runs its untraced resolves as fast as one that never does.
     pub fn resolve_traced(&mut self, map: &TileMap, trace: &mut ResolveTrace) -> ResolveReport {
         let config = self.config;
         let handles: Vec<BodyHandle> = self.iter().map(|(handle, _)| handle).collect();

@@ -1,13 +1,15 @@
 //! The resolver's trace: what [`Bodies::resolve_traced`](crate::Bodies::resolve_traced)
 //! records of each body's passes, and the sink the resolver reports to.
 //!
-//! The resolver is generic over a [`Sink`]. `resolve` runs it with [`NoTrace`], whose
-//! methods are empty and whose `ON` is `false`, so every report compiles away and the
-//! untraced resolve is the resolver as it is without tracing: no allocation, no branch, no
-//! work. [`Recorder`] fills a [`ResolveTrace`]; it repeats work only the trace needs (the
-//! graze test on the sweeps the resolver already made, the lookup of a wall's source in the
-//! map), after the resolver has decided, so a traced resolve gives the same bits as an
-//! untraced one.
+//! The resolver reports to a [`Sink`]: an `Option<&mut Recorder>`, `None` for `resolve`.
+//! One sink type compiles the resolver once, whether or not a program also traces, so its
+//! helpers keep a single caller each and are inlined as they are in a resolver without
+//! tracing; an untraced resolve builds nothing to report and allocates nothing, and its
+//! checks for `None` are branches the predictor always guesses. [`Recorder`] fills a
+//! [`ResolveTrace`]; its methods are kept out of line and marked cold. It repeats work only
+//! the trace needs (the graze test on the sweeps the resolver already made, the lookup of a
+//! wall's source in the map), after the resolver has decided, so a traced resolve gives the
+//! same bits as an untraced one.
 
 use glam::Vec2;
 
@@ -262,7 +264,7 @@ pub(super) trait Sink {
     type Id: Copy;
     /// Whether anything is recorded: when false, the resolver skips building what it would
     /// report.
-    const ON: bool;
+    fn on(&self) -> bool;
     fn still(&mut self, b: u32, at: Vec2);
     fn settled(&mut self, b: u32, at: Vec2, motion: Vec2);
     fn begin(&mut self, b: u32, at: Vec2, motion: Vec2);
@@ -299,41 +301,87 @@ pub(super) trait Sink {
     fn end(&mut self, b: u32, at: Vec2);
 }
 
-/// The sink of an untraced resolve: nothing.
-pub(super) struct NoTrace;
-
-impl Sink for NoTrace {
-    type Id = ();
-    const ON: bool = false;
+/// The sink of every resolve: a recorder when traced, `None` when not.
+impl Sink for Option<&mut Recorder<'_>> {
+    type Id = Option<usize>;
     #[inline(always)]
-    fn still(&mut self, _: u32, _: Vec2) {}
+    fn still(&mut self, b: u32, at: Vec2) {
+        if let Some(r) = self {
+            r.still(b, at);
+        }
+    }
     #[inline(always)]
-    fn settled(&mut self, _: u32, _: Vec2, _: Vec2) {}
+    fn settled(&mut self, b: u32, at: Vec2, motion: Vec2) {
+        if let Some(r) = self {
+            r.settled(b, at, motion);
+        }
+    }
     #[inline(always)]
-    fn begin(&mut self, _: u32, _: Vec2, _: Vec2) {}
+    fn begin(&mut self, b: u32, at: Vec2, motion: Vec2) {
+        if let Some(r) = self {
+            r.begin(b, at, motion);
+        }
+    }
     #[inline(always)]
-    fn pass(&mut self, _: u32, _: Vec2, _: Vec2) {}
+    fn pass(&mut self, pass: u32, from: Vec2, motion: Vec2) {
+        if let Some(r) = self {
+            r.pass(pass, from, motion);
+        }
+    }
     #[inline(always)]
-    fn wall(&mut self, _: u32, _: &Capsule, _: Vec2, _: f32, _: Vec2, _: Option<SweepHit>) {}
+    fn wall(
+        &mut self,
+        circle: u32,
+        wall: &Capsule,
+        center: Vec2,
+        radius: f32,
+        motion: Vec2,
+        hit: Option<SweepHit>,
+    ) -> Option<usize> {
+        match self {
+            Some(r) => r.wall(circle, wall, center, radius, motion, hit),
+            None => None,
+        }
+    }
     #[inline(always)]
     fn body(
         &mut self,
-        _: u32,
-        _: (u32, u32),
-        _: Vec2,
-        _: f32,
-        _: Vec2,
-        _: f32,
-        _: Vec2,
-        _: Option<SweepHit>,
-    ) {
+        circle: u32,
+        other: (u32, u32),
+        at: Vec2,
+        other_radius: f32,
+        center: Vec2,
+        radius: f32,
+        motion: Vec2,
+        hit: Option<SweepHit>,
+    ) -> Option<usize> {
+        match self {
+            Some(r) => r.body(circle, other, at, other_radius, center, radius, motion, hit),
+            None => None,
+        }
     }
     #[inline(always)]
-    fn decide(&mut self, _: (), _: bool, _: Decision) {}
+    fn decide(&mut self, first: Option<usize>, step_taken: bool, decision: Decision) {
+        if let Some(r) = self {
+            r.decide(first, step_taken, decision);
+        }
+    }
     #[inline(always)]
-    fn free(&mut self) {}
+    fn free(&mut self) {
+        if let Some(r) = self {
+            r.free();
+        }
+    }
     #[inline(always)]
-    fn end(&mut self, _: u32, _: Vec2) {}
+    fn end(&mut self, b: u32, at: Vec2) {
+        if let Some(r) = self {
+            r.end(b, at);
+        }
+    }
+    #[inline(always)]
+    fn on(&self) -> bool {
+        self.is_some()
+    }
 }
 
 /// The sink of a traced resolve: fills a [`ResolveTrace`].
@@ -404,20 +452,31 @@ impl<'a> Recorder<'a> {
 
 impl Sink for Recorder<'_> {
     type Id = Option<usize>;
-    const ON: bool = true;
 
+    fn on(&self) -> bool {
+        true
+    }
+
+    #[cold]
+    #[inline(never)]
     fn still(&mut self, b: u32, at: Vec2) {
         self.open(b, at, Vec2::ZERO, BodyFate::Still);
     }
 
+    #[cold]
+    #[inline(never)]
     fn settled(&mut self, b: u32, at: Vec2, motion: Vec2) {
         self.open(b, at, motion, BodyFate::Settled);
     }
 
+    #[cold]
+    #[inline(never)]
     fn begin(&mut self, b: u32, at: Vec2, motion: Vec2) {
         self.open(b, at, motion, BodyFate::Resolved);
     }
 
+    #[cold]
+    #[inline(never)]
     fn pass(&mut self, pass: u32, from: Vec2, motion: Vec2) {
         if !self.on {
             return;
@@ -436,6 +495,8 @@ impl Sink for Recorder<'_> {
         }
     }
 
+    #[cold]
+    #[inline(never)]
     fn wall(
         &mut self,
         circle: u32,
@@ -476,6 +537,8 @@ impl Sink for Recorder<'_> {
         self.push(contact(hit?, false))
     }
 
+    #[cold]
+    #[inline(never)]
     fn body(
         &mut self,
         circle: u32,
@@ -506,6 +569,8 @@ impl Sink for Recorder<'_> {
         })
     }
 
+    #[cold]
+    #[inline(never)]
     fn decide(&mut self, first: Option<usize>, step_taken: bool, d: Decision) {
         let previous = self.current_previous_wall_slide();
         let Some(pass) = self.current() else {
@@ -537,12 +602,16 @@ impl Sink for Recorder<'_> {
         };
     }
 
+    #[cold]
+    #[inline(never)]
     fn free(&mut self) {
         if let Some(pass) = self.current() {
             pass.response = Response::Free;
         }
     }
 
+    #[cold]
+    #[inline(never)]
     fn end(&mut self, _: u32, at: Vec2) {
         if !self.on {
             return;
