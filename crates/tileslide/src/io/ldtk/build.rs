@@ -1,6 +1,7 @@
 //! From the project's JSON to levels placed in the world, and from a chosen level to an
 //! [`LdtkMap`]: reading its level file, choosing its layer, gathering its entities.
 
+use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 
 use glam::Vec2;
@@ -188,10 +189,11 @@ pub(super) fn size_fault(field: &'static str, value: i64, reason: String) -> Ldt
 
 /// The level, read from its file if it has one: the file's path (for errors), the JSON
 /// path of its layers there, and its layers.
-struct LevelLayers {
+struct LevelLayers<'a> {
     file: PathBuf,
     at: String,
-    layers: Vec<LayerInstanceJson>,
+    /// Borrowed from the project, or owned when read from the level's file.
+    layers: Cow<'a, [LayerInstanceJson]>,
 }
 
 /// Builds the level and layer `options` choose.
@@ -282,18 +284,18 @@ pub(super) fn build(project: &LdtkProject, options: &LdtkOptions) -> Result<Ldtk
 }
 
 /// The layers of `level`: in the project, or read from its level file.
-fn level_layers(
+fn level_layers<'a>(
     project: &LdtkProject,
-    level: &LevelJson,
+    level: &'a LevelJson,
     level_at: &str,
     options: &LdtkOptions,
-) -> Result<LevelLayers, LoadError> {
+) -> Result<LevelLayers<'a>, LoadError> {
     let path = project.path.as_path();
     if let Some(layers) = &level.layer_instances {
         return Ok(LevelLayers {
             file: path.to_path_buf(),
             at: format!("{level_at}.layerInstances"),
-            layers: layers.clone(),
+            layers: Cow::Borrowed(layers),
         });
     }
     let rel_at = format!("{level_at}.externalRelPath");
@@ -305,6 +307,15 @@ fn level_layers(
         ));
     };
     let inside = files::inside(rel).map_err(|fault| ldtk_error(path, rel_at.clone(), fault))?;
+    // The level file's error is the project's: it is the project that names the file.
+    let unreadable = |file: &Path, source| {
+        let referenced = Some(file.to_path_buf());
+        LoadError::new(
+            path,
+            Location::File,
+            LoadErrorKind::Io { referenced, source },
+        )
+    };
     let (file, bytes) = if options.files.is_empty() {
         let file = files::disk_path(path, &inside).map_err(|e| match disk_error(path, e) {
             LoadError {
@@ -313,29 +324,12 @@ fn level_layers(
             } => ldtk_error(path, rel_at.clone(), *fault),
             other => other,
         })?;
-        let bytes = std::fs::read(&file).map_err(|source| {
-            LoadError::new(
-                path,
-                Location::File,
-                LoadErrorKind::Io {
-                    referenced: Some(file.clone()),
-                    source,
-                },
-            )
-        })?;
+        let bytes = std::fs::read(&file).map_err(|source| unreadable(&file, source))?;
         (file, bytes)
     } else {
         let file = folder_of(path).join(&inside);
-        let bytes = files::from_memory(&inside, &options.files).map_err(|source| {
-            LoadError::new(
-                path,
-                Location::File,
-                LoadErrorKind::Io {
-                    referenced: Some(file.clone()),
-                    source,
-                },
-            )
-        })?;
+        let bytes = files::from_memory(&inside, &options.files)
+            .map_err(|source| unreadable(&file, source))?;
         (file, bytes)
     };
     let text = as_text(&bytes, &file)?;
@@ -360,7 +354,7 @@ fn level_layers(
     Ok(LevelLayers {
         file,
         at: "layerInstances".into(),
-        layers,
+        layers: Cow::Owned(layers),
     })
 }
 
