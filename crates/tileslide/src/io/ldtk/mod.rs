@@ -21,7 +21,7 @@
 //! - **Entities** come as [`EntityLayer`]s: identifier, position, size, pivot, tags and
 //!   fields, the way [`io::tiled`](crate::io::tiled) gives object layers.
 //! - **Errors** name the file, the JSON path (`levels[2].layerInstances[0].intGridCsv`) and
-//!   the cause ([`LdtkFault`](crate::io::LdtkFault)); sizes are checked against
+//!   the cause ([`LdtkFault`]); sizes are checked against
 //!   [`MAX_CELLS`](crate::limits::MAX_CELLS) and [`MAX_GRID_SIZE`] before anything is
 //!   allocated; a path the project writes (`externalRelPath`) never opens a file outside
 //!   the project's folder; nothing panics.
