@@ -942,3 +942,14 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn projects_and_levels_can_move_between_threads() {
+    // Engines load assets on worker threads and share them: a project and a built level
+    // are `Send + Sync + 'static`.
+    fn shared<T: Send + Sync + 'static>() {}
+    shared::<LdtkProject>();
+    shared::<LdtkMap>();
+    shared::<LdtkOptions>();
+    shared::<LoadError>();
+}
