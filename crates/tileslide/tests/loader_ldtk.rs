@@ -675,6 +675,20 @@ fn absurd_sizes_are_refused_before_allocating() {
         ),
         "{e}"
     );
+    // The largest sizes a layer can declare: the product is named, not overflowed.
+    let most = i64::from(u32::MAX);
+    let widest = project_with(json!([int_grid("g", most, most, 16, &[1])]), json!({}));
+    let e = parse(&widest, &LdtkOptions::default()).unwrap_err();
+    assert!(
+        matches!(
+            fault(&e).1,
+            LdtkFault::Size {
+                value: i64::MAX,
+                ..
+            }
+        ),
+        "{e}"
+    );
     // Below the crate's limit, but above the game's.
     let small = project_with(json!([int_grid("g", 8, 8, 16, &[0; 64])]), json!({}));
     let e = parse(&small, &LdtkOptions::default().with_max_cells(63)).unwrap_err();

@@ -122,7 +122,7 @@ fn grid_cells(layer: &LayerInstanceJson, at: &str, max_cells: u64) -> Result<(u3
             format!("{at}.__cWid"),
             super::build::size_fault(
                 "__cWid × __cHei",
-                cells as i64,
+                i64::try_from(cells).unwrap_or(i64::MAX),
                 format!(
                     "{} × {} is more than {max_cells} cells{}",
                     layer.columns,
