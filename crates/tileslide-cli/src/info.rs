@@ -2,6 +2,7 @@
 
 use anyhow::Result;
 use serde_json::json;
+use tileslide::io::ldtk::{FLIP_X_BIT, FLIP_Y_BIT};
 use tileslide::io::tiled::Flip;
 
 use crate::json::number;
@@ -47,16 +48,21 @@ pub fn run(args: &MapArgs, as_json: bool) -> Result<()> {
         origin.y
     );
     let tiled = matches!(format, MapFormat::TiledXml | MapFormat::TiledJson);
+    let ldtk = format == MapFormat::Ldtk;
     let mut entries: Vec<_> = counts.iter().collect();
     if tiled {
         // By gid, each followed by its flipped placements.
         entries.sort_by_key(|(id, _)| (id.0 & Flip::GID_MASK, id.0));
+    } else if ldtk {
+        entries.sort_by_key(|(id, _)| (id.0 & !(FLIP_X_BIT | FLIP_Y_BIT), id.0));
     }
     let list: Vec<String> = entries
         .into_iter()
         .map(|(id, n)| {
             if tiled {
                 format!("{}×{n}", tiled_id(id.0))
+            } else if ldtk {
+                format!("{}×{n}", ldtk_id(id.0))
             } else {
                 format!("{id}×{n}")
             }
@@ -71,6 +77,13 @@ pub fn run(args: &MapArgs, as_json: bool) -> Result<()> {
     );
     if tiled && counts.keys().any(|id| !Flip::from_gid(id.0).is_none()) {
         println!("           (Tiled gids; flipped h horizontally, v vertically, d diagonally)");
+    }
+    if ldtk
+        && counts
+            .keys()
+            .any(|id| id.0 & (FLIP_X_BIT | FLIP_Y_BIT) != 0)
+    {
+        println!("           (mirrored x horizontally, y vertically)");
     }
     println!("segments:  {placed} placed, {active} active after seam culling");
     Ok(())
@@ -93,9 +106,28 @@ fn tiled_id(id: u32) -> String {
     text
 }
 
+/// An LDtk tile id as its collision's id and the letters of its flips (`2x` for a ramp
+/// mirrored horizontally), not as the number with the flip bits set.
+fn ldtk_id(id: u32) -> String {
+    let mut text = (id & !(FLIP_X_BIT | FLIP_Y_BIT)).to_string();
+    for (bit, letter) in [(FLIP_X_BIT, 'x'), (FLIP_Y_BIT, 'y')] {
+        if id & bit != 0 {
+            text.push(letter);
+        }
+    }
+    text
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ldtk_ids_show_the_collision_and_its_flips() {
+        assert_eq!(ldtk_id(2), "2");
+        assert_eq!(ldtk_id(2 | FLIP_X_BIT), "2x");
+        assert_eq!(ldtk_id(40 | FLIP_X_BIT | FLIP_Y_BIT), "40xy");
+    }
 
     #[test]
     fn tiled_ids_show_the_gid_and_its_flips() {

@@ -6,6 +6,7 @@ use std::sync::Arc;
 use anyhow::{Result, bail};
 use clap::Args;
 use tileslide::TileMap;
+use tileslide::io::ldtk::{self, LdtkOptions};
 use tileslide::io::tiled::{self, TiledOptions};
 use tileslide::io::{LoadErrorKind, ascii, baked, replica};
 use tileslide_platformer::{Level, MARKERS};
@@ -14,8 +15,8 @@ use tileslide_platformer::{Level, MARKERS};
 #[derive(Args, Debug)]
 pub struct MapArgs {
     /// The map: `.txt` ASCII map, `.bin` Replica Island level (needs `--tileset`), `.tsm`
-    /// baked map (`tileslide bake`), or `.tmx`/`.tmj`/`.json` Tiled map (in Tiled's pixels,
-    /// y down).
+    /// baked map (`tileslide bake`), `.tmx`/`.tmj`/`.json` Tiled map (in Tiled's pixels,
+    /// y down), or `.ldtk` LDtk project (in world pixels, y down).
     pub map: PathBuf,
     /// The tile set for maps that need one (Replica Island: `collision.bin`).
     #[arg(long, value_name = "FILE")]
@@ -25,17 +26,22 @@ pub struct MapArgs {
     pub cell: Option<f32>,
     /// The tile layer that collides in a Tiled map: its name, `NAME#2` for the second layer
     /// of that name, or `#3` for the third tile layer (default: the first tile layer with the
-    /// property `collision = true`, else the first tile layer).
+    /// property `collision = true`, else the first tile layer). In an LDtk project: the
+    /// IntGrid, auto-layer or tile layer's identifier (default: the first IntGrid layer,
+    /// else the first whose tiles name a collision shape).
     #[arg(long, value_name = "NAME")]
     pub layer: Option<String>,
+    /// The level of an LDtk project, by its identifier (default: the first).
+    #[arg(long, value_name = "NAME")]
+    pub level: Option<String>,
     #[command(flatten)]
     pub limits: TiledLimits,
 }
 
-/// Bounds on what a Tiled map may cost to load.
+/// Bounds on what a Tiled map or an LDtk project may cost to load.
 #[derive(Args, Debug, Default)]
 pub struct TiledLimits {
-    /// Most cells a Tiled map's layer may hold (default and most: 2^26).
+    /// Most cells a Tiled map's or an LDtk level's layer may hold (default and most: 2^26).
     #[arg(long, value_name = "CELLS")]
     pub max_cells: Option<u64>,
     /// Most cells an infinite Tiled map may span per cell its chunks hold, once over 2^20
@@ -54,6 +60,7 @@ pub enum MapFormat {
     Baked,
     TiledXml,
     TiledJson,
+    Ldtk,
 }
 
 impl MapFormat {
@@ -65,6 +72,7 @@ impl MapFormat {
             MapFormat::Baked => "baked",
             MapFormat::TiledXml => "tiled-tmx",
             MapFormat::TiledJson => "tiled-tmj",
+            MapFormat::Ldtk => "ldtk",
         }
     }
 
@@ -82,8 +90,9 @@ impl MapFormat {
             // Tiled saves JSON maps as `.json` as often as `.tmj`; the loader tells a map from
             // a tile set or other JSON by its content, and names what it found.
             Some("tmj" | "json") => Ok(MapFormat::TiledJson),
+            Some("ldtk") => Ok(MapFormat::Ldtk),
             _ => bail!(
-                "{}: unknown map format (expected a .txt ASCII map, a .bin Replica Island level, a .tsm baked map or a .tmx/.tmj/.json Tiled map)",
+                "{}: unknown map format (expected a .txt ASCII map, a .bin Replica Island level, a .tsm baked map, a .tmx/.tmj/.json Tiled map or a .ldtk LDtk project)",
                 path.display()
             ),
         }
@@ -94,21 +103,34 @@ impl MapFormat {
 pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
     if args.map.is_dir() {
         bail!(
-            "{}: is a folder; give a map file (a .txt ASCII map, a .bin Replica Island level, a .tsm baked map or a .tmx/.tmj/.json Tiled map)",
+            "{}: is a folder; give a map file (a .txt ASCII map, a .bin Replica Island level, a .tsm baked map, a .tmx/.tmj/.json Tiled map or a .ldtk LDtk project)",
             args.map.display()
         );
     }
     let mut format = MapFormat::of(&args.map)?;
     let tiled = matches!(format, MapFormat::TiledXml | MapFormat::TiledJson);
-    if args.layer.is_some() && !tiled {
+    let ldtk = format == MapFormat::Ldtk;
+    if args.layer.is_some() && !tiled && !ldtk {
         bail!(
-            "{}: --layer chooses the collision layer of a Tiled map (.tmx, .tmj, .json); drop it",
+            "{}: --layer chooses the collision layer of a Tiled map (.tmx, .tmj, .json) or an LDtk project (.ldtk); drop it",
             args.map.display()
         );
     }
-    if (args.limits.max_cells.is_some() || args.limits.max_chunk_spread.is_some()) && !tiled {
+    if args.level.is_some() && !ldtk {
         bail!(
-            "{}: --max-cells and --max-chunk-spread bound Tiled maps (.tmx, .tmj, .json); drop them",
+            "{}: --level chooses the level of an LDtk project (.ldtk); drop it",
+            args.map.display()
+        );
+    }
+    if args.limits.max_cells.is_some() && !tiled && !ldtk {
+        bail!(
+            "{}: --max-cells bounds Tiled maps (.tmx, .tmj, .json) and LDtk projects (.ldtk); drop it",
+            args.map.display()
+        );
+    }
+    if args.limits.max_chunk_spread.is_some() && !tiled {
+        bail!(
+            "{}: --max-chunk-spread bounds infinite Tiled maps (.tmx, .tmj, .json); drop it",
             args.map.display()
         );
     }
@@ -175,6 +197,22 @@ pub fn load(args: &MapArgs) -> Result<(TileMap, MapFormat)> {
                 ..defaults
             };
             tiled::load(&args.map, &options)?.map
+        }
+        MapFormat::Ldtk => {
+            if args.tileset.is_some() || args.cell.is_some() {
+                bail!(
+                    "{}: an LDtk project names its own tile sets and cell sizes; drop --tileset and --cell",
+                    args.map.display()
+                );
+            }
+            let defaults = LdtkOptions::default();
+            let options = LdtkOptions {
+                level: args.level.clone(),
+                layer: args.layer.clone(),
+                max_cells: args.limits.max_cells.unwrap_or(defaults.max_cells),
+                ..defaults
+            };
+            ldtk::load(&args.map, &options)?.map
         }
     };
     Ok((map, format))

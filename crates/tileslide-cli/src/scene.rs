@@ -28,8 +28,10 @@ struct SceneFile {
     cell: Option<f32>,
     /// The tile set of a Replica Island level, relative to the scene file.
     tileset: Option<String>,
-    /// The collision layer of a Tiled map.
+    /// The collision layer of a Tiled map or an LDtk project.
     layer: Option<String>,
+    /// The level of an LDtk project.
+    level: Option<String>,
     /// Steps to run, unless `--steps` says otherwise.
     steps: Option<u64>,
     #[serde(default)]
@@ -311,9 +313,11 @@ impl CharacterRun {
 
 fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<(TileMap, MapFormat)> {
     let cell = scene.cell.unwrap_or(1.0);
-    if scene.map.is_none() && (scene.tileset.is_some() || scene.layer.is_some()) {
+    if scene.map.is_none()
+        && (scene.tileset.is_some() || scene.layer.is_some() || scene.level.is_some())
+    {
         bail!(
-            "{}: \"tileset\" and \"layer\" go with a \"map\" file",
+            "{}: \"tileset\", \"layer\" and \"level\" go with a \"map\" file",
             scene_path.display()
         );
     }
@@ -339,6 +343,7 @@ fn load_map(scene_path: &Path, scene: &SceneFile) -> Result<(TileMap, MapFormat)
                 tileset: scene.tileset.as_ref().map(|t| dir.join(t)),
                 cell: scene.cell,
                 layer: scene.layer.clone(),
+                level: scene.level.clone(),
                 limits: map_file::TiledLimits::default(),
             };
             map_file::load(&args)

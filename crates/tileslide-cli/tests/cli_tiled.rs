@@ -356,5 +356,9 @@ fn load_limits_refuse_far_apart_chunks_until_raised() {
         stderr(&o)
     );
     let o = tileslide(&["info", &example("cave.txt"), "--max-cells", "10"]);
-    assert!(stderr(&o).contains("bound Tiled maps"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("--max-cells bounds Tiled maps"),
+        "{}",
+        stderr(&o)
+    );
 }

@@ -45,9 +45,12 @@ pub struct ExplainArgs {
     /// The cell size of an ASCII map (with `--cell`; default 1).
     #[arg(long, value_name = "SIZE", requires = "cell")]
     pub cell_size: Option<f32>,
-    /// The colliding tile layer of a Tiled map (with `--cell`).
+    /// The colliding tile layer of a Tiled map or LDtk project (with `--cell`).
     #[arg(long, value_name = "NAME", requires = "cell")]
     pub layer: Option<String>,
+    /// The level of an LDtk project (with `--cell`).
+    #[arg(long, value_name = "NAME", requires = "cell")]
+    pub level: Option<String>,
     /// Print JSON instead of words.
     #[arg(long)]
     pub json: bool,
@@ -65,6 +68,7 @@ pub fn run(args: &ExplainArgs) -> Result<()> {
             tileset: args.tileset.clone(),
             cell: args.cell_size,
             layer: args.layer.clone(),
+            level: args.level.clone(),
             limits: TiledLimits::default(),
         };
         return cell::run(&map, text, out, args.json);

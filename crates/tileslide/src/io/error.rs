@@ -4,6 +4,8 @@ use std::path::PathBuf;
 use thiserror::Error;
 
 use super::baked::BakedFault;
+#[cfg(feature = "ldtk")]
+use super::ldtk_faults::LdtkFault;
 use super::tiled_faults::{NotTiled, TilePlacement, Unsupported};
 use crate::tiles::{Cell, MapError, TileSetError};
 
@@ -275,6 +277,26 @@ pub enum LoadErrorKind {
         /// What is wrong, naming the collision object or property.
         reason: String,
     },
+    /// A fault in an LDtk project or level file, at a JSON path of it.
+    #[cfg(feature = "ldtk")]
+    #[error("{}{fault}", json_path_prefix(.json_path))]
+    Ldtk {
+        /// Where in the file's JSON: `levels[2].layerInstances[0].intGridCsv` (empty for the
+        /// whole file).
+        json_path: String,
+        /// What is wrong (boxed: it is large, and load errors are returned by value).
+        fault: Box<LdtkFault>,
+    },
+}
+
+/// `levels[2].pxWid: ` or nothing for the whole file.
+#[cfg(feature = "ldtk")]
+fn json_path_prefix(json_path: &str) -> String {
+    if json_path.is_empty() {
+        String::new()
+    } else {
+        format!("{json_path}: ")
+    }
 }
 
 /// `the file`, or the file referred to.

@@ -7,6 +7,12 @@ pub mod baked;
 pub mod bitmap;
 mod bytes;
 mod error;
+#[cfg(any(feature = "tiled", feature = "ldtk"))]
+mod json_text;
+#[cfg(feature = "ldtk")]
+pub mod ldtk;
+#[cfg(feature = "ldtk")]
+mod ldtk_faults;
 pub mod replica;
 mod replica_objects;
 #[cfg(feature = "tiled")]
@@ -15,4 +21,6 @@ mod tiled_faults;
 
 pub use baked::BakedFault;
 pub use error::{LoadError, LoadErrorKind, Location, ParserError};
+#[cfg(feature = "ldtk")]
+pub use ldtk_faults::LdtkFault;
 pub use tiled_faults::{NotTiled, TilePlacement, Unsupported};

@@ -70,6 +70,7 @@ pub use properties::{Properties, PropertyValue};
 pub use shapes::ELLIPSE_SEGMENTS;
 
 use super::error::{as_text, read_file};
+use super::json_text::line_column;
 use super::{LoadError, Location, NotTiled};
 use crate::HitTypes;
 use crate::tiles::{TileId, TileMap};
@@ -303,18 +304,4 @@ pub fn parse_tmj(
 /// The text without a leading byte-order mark.
 fn strip_bom(text: &str) -> &str {
     text.strip_prefix('\u{feff}').unwrap_or(text)
-}
-
-/// The 1-based line and column (in characters) of a byte offset of `text`.
-fn line_column(text: &str, offset: usize) -> Location {
-    let mut offset = offset.min(text.len());
-    while !text.is_char_boundary(offset) {
-        offset -= 1;
-    }
-    let before = &text[..offset];
-    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    Location::LineColumn {
-        line: before.matches('\n').count() as u32 + 1,
-        column: before[line_start..].chars().count() as u32 + 1,
-    }
 }

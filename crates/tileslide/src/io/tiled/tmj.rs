@@ -15,7 +15,8 @@ use super::files::{TiledFiles, read_external};
 use super::objects::ObjectLayer;
 use super::tile_data::{self, Encoding, count_error};
 use super::tmj_schema::{JsonData, JsonKind, JsonLayer, JsonMap, JsonTileSet, object, properties};
-use super::{Flip, line_column, tmx};
+use super::{Flip, tmx};
+use crate::io::json_text::json_error;
 use crate::io::{LoadError, LoadErrorKind, Location, NotTiled, Unsupported};
 
 /// The error `kind` in `path`, a JSON file whose errors (past its syntax) name the field.
@@ -32,49 +33,6 @@ fn missing(path: &Path, owner: &str, field: &str) -> LoadError {
             field: field.to_owned(),
         },
     )
-}
-
-/// A JSON syntax or shape error at serde_json's line and column (converted to characters).
-fn json_error(text: &str, path: &Path, e: serde_json::Error) -> LoadError {
-    let (line, byte_column) = (e.line(), e.column());
-    let column = text
-        .lines()
-        .nth(line.saturating_sub(1))
-        .map(|l| {
-            let mut end = byte_column.saturating_sub(1).min(l.len());
-            while !l.is_char_boundary(end) {
-                end -= 1;
-            }
-            l[..end].chars().count() + 1
-        })
-        .unwrap_or(byte_column);
-    // At the end of a truncated file serde_json points at its last character; the file
-    // ends just past it, as XML errors say.
-    let location = if e.is_eof() {
-        line_column(text, text.len())
-    } else if line == 0 {
-        Location::File
-    } else {
-        Location::LineColumn {
-            line: line as u32,
-            column: column as u32,
-        }
-    };
-    // serde_json appends " at line L column C": the location already says it.
-    let message = e.to_string();
-    let message = message.split(" at line ").next().unwrap_or(&message);
-    let message = if e.is_eof() {
-        format!("truncated JSON: {message}")
-    } else {
-        format!("malformed JSON: {message}")
-    };
-    let kind = LoadErrorKind::Syntax {
-        format: "JSON",
-        truncated: e.is_eof(),
-        message,
-        source: Some(Box::new(e)),
-    };
-    LoadError::new(path, location, kind)
 }
 
 /// Parses a `.tmj` map's text; `path` names it and locates its external tile sets.
