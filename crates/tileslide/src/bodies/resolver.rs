@@ -96,7 +96,7 @@ impl Resolver {
         config: &ResolveConfig,
         map: &TileMap,
     ) -> ResolveReport {
-        self.resolve_into(bodies, config, map, &mut None)
+        self.resolve_into(bodies, config, map, None)
     }
 
     /// [`resolve`](Self::resolve), reporting every pass to `recorder`.
@@ -107,19 +107,19 @@ impl Resolver {
         map: &TileMap,
         recorder: &mut Recorder<'_>,
     ) -> ResolveReport {
-        self.resolve_into(bodies, config, map, &mut Some(recorder))
+        self.resolve_into(bodies, config, map, Some(recorder))
     }
 
     /// The resolve, reporting to `sink` (with `None`, nothing is built to report). Kept out
     /// of line: inlined into `Bodies::resolve`, the crowd's step took 0.6 % more
     /// instructions.
     #[inline(never)]
-    fn resolve_into<S: Sink>(
+    fn resolve_into(
         &mut self,
         bodies: &mut [&mut Body],
         config: &ResolveConfig,
         map: &TileMap,
-        sink: &mut S,
+        mut sink: Option<&mut Recorder<'_>>,
     ) -> ResolveReport {
         let gap = config.gap;
         self.load(bodies, gap);
@@ -158,7 +158,7 @@ impl Resolver {
             }
             let before = report;
             sink.begin(b as u32, start, motion);
-            self.collide_and_slide(b as u32, config, gap, map, &mut report, sink);
+            self.collide_and_slide(b as u32, config, gap, map, &mut report, &mut sink);
             let end = self.position[b];
             sink.end(b as u32, end);
             body.resolved = end - start;

@@ -28,10 +28,11 @@ impl TileMap {
 
     /// The first and last column and row of the cells whose closed rectangles share a
     /// point with the closed box, or `None`.
-    // Always inlined: the resolver's wall gathering calls it for every moving circle, and
-    // with more than one caller in a program LLVM keeps it out of line (2 % of the crowd's
-    // step).
-    #[inline(always)]
+    // Always inlined natively: the resolver's wall gathering calls it for every moving
+    // circle, and with more than one caller in a program LLVM keeps it out of line (2 % of
+    // the crowd's step). Not in WebAssembly, where the copies in every query cost the web
+    // package 0.5 KB of its size budget.
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     pub(crate) fn cell_range(&self, aabb: &Aabb) -> Option<(u32, u32, u32, u32)> {
         let inv = self.inv_cell_size();
         let lo = (aabb.min - self.origin()) * inv;
