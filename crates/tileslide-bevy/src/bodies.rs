@@ -147,6 +147,13 @@ pub(crate) fn entity_of(owner: Owner) -> Option<Entity> {
     Entity::try_from_bits(owner.0)
 }
 
+/// A key that sorts entities in the order a fresh world spawns them: by index, then
+/// generation. (`Entity`'s own order compares bit patterns, which in Bevy 0.19 run
+/// against the index.)
+pub(crate) fn spawn_order(entity: Entity) -> (u32, u32) {
+    (entity.index_u32(), entity.generation().to_bits())
+}
+
 /// Takes new, changed and removed bodies into the core, in entity order (so the same spawns
 /// give the same slots, and the same results).
 pub(crate) fn add_and_remove_bodies(
@@ -162,7 +169,7 @@ pub(crate) fn add_and_remove_bodies(
     let set = &mut *set;
     set.scratch.clear();
     set.scratch.extend(removed.read());
-    set.scratch.sort_unstable();
+    set.scratch.sort_unstable_by_key(|&e| spawn_order(e));
     for i in 0..set.scratch.len() {
         let entity = set.scratch[i];
         set.remove(entity);
@@ -173,7 +180,7 @@ pub(crate) fn add_and_remove_bodies(
     if set.scratch.is_empty() {
         return;
     }
-    set.scratch.sort_unstable();
+    set.scratch.sort_unstable_by_key(|&e| spawn_order(e));
     for i in 0..set.scratch.len() {
         let entity = set.scratch[i];
         let Ok((_, body, transform, mut link, mut position)) = changed.get_mut(entity) else {

@@ -4,7 +4,7 @@
 use bevy::prelude::*;
 use tileslide::{HitObject, HitTypes, HitWorld, TeamRule, Volume};
 
-use crate::bodies::{entity_of, owner_of};
+use crate::bodies::{entity_of, owner_of, spawn_order};
 use crate::character::CharacterContacts;
 use crate::map::CollisionMap;
 use crate::messages::{Hit, TileslideError};
@@ -165,7 +165,7 @@ pub(crate) fn detect_hits(
     let hits = &mut *hits;
     hits.world.begin_frame();
     let mut objects_in_order: Vec<Entity> = objects.iter().map(|(e, ..)| e).collect();
-    objects_in_order.sort_unstable();
+    objects_in_order.sort_unstable_by_key(|&e| spawn_order(e));
     for &entity in &objects_in_order {
         let Ok((_, volumes, transform, mut link, _)) = objects.get_mut(entity) else {
             continue;

@@ -6,58 +6,15 @@
 
 mod support;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
-use bevy::asset::{AssetPlugin, LoadState};
+use bevy::asset::LoadState;
 use bevy::prelude::*;
+use support::{app_reading, assert_loaded, load, maps_dir, wait_for};
 use tileslide::io::tiled::{self, TiledOptions};
 use tileslide::io::{ascii, baked};
 use tileslide::{HitTypes, TileId, TileMap};
-use tileslide_bevy::{CollisionMap, TileMapAsset, TileMapSettings, TileslidePlugin};
-
-/// The repository's bundled maps.
-fn maps_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/maps")
-}
-
-/// A headless app whose assets are read from `root`.
-fn app_reading(root: &Path) -> App {
-    let mut app = support::headless(TileslidePlugin::default());
-    app.add_plugins(AssetPlugin {
-        file_path: root.to_string_lossy().into_owned(),
-        ..default()
-    });
-    // `finish` registers the map asset: build the app as `run` would.
-    app.finish();
-    app.cleanup();
-    app
-}
-
-/// Updates `app` until `handle` has loaded or failed.
-fn wait_for(app: &mut App, handle: &Handle<TileMapAsset>) -> LoadState {
-    for _ in 0..2000 {
-        app.update();
-        let state = app.world().resource::<AssetServer>().load_state(handle);
-        if matches!(state, LoadState::Loaded | LoadState::Failed(_)) {
-            return state;
-        }
-        std::thread::sleep(std::time::Duration::from_millis(1));
-    }
-    panic!("the map neither loaded nor failed");
-}
-
-/// Waits for `handle`, and fails with its error unless it loaded.
-fn assert_loaded(app: &mut App, handle: &Handle<TileMapAsset>) {
-    match wait_for(app, handle) {
-        LoadState::Loaded => {}
-        LoadState::Failed(e) => panic!("{e}"),
-        other => panic!("{other:?}"),
-    }
-}
-
-fn load(app: &mut App, path: &str) -> Handle<TileMapAsset> {
-    app.world().resource::<AssetServer>().load(path.to_string())
-}
+use tileslide_bevy::{CollisionMap, TileMapAsset, TileMapSettings};
 
 /// The loaded map of `handle`, as baked bytes (every tile, shape and flag).
 fn baked_bytes(app: &App, handle: &Handle<TileMapAsset>) -> Vec<u8> {
