@@ -142,6 +142,8 @@ pub struct CharacterContacts {
     pub right: Option<SurfaceTouch>,
     /// A platform that crushed it.
     pub crush: Option<SurfaceTouch>,
+    /// The same, as the core reported them (map units).
+    pub core: tileslide::Contacts,
 }
 
 impl CharacterContacts {
@@ -277,6 +279,7 @@ pub(crate) fn move_characters(
             left: touch(&touched.left),
             right: touch(&touched.right),
             crush: touch(&touched.crush),
+            core: touched,
         };
         for (side, touch) in contacts.touched() {
             let event = SurfaceContact {

@@ -135,6 +135,8 @@ pub struct TileslideHits {
     world: HitWorld,
     attack: Vec<Volume>,
     vulnerable: Vec<Volume>,
+    /// The entities registered this step, in spawn order.
+    order: Vec<Entity>,
 }
 
 impl TileslideHits {
@@ -164,9 +166,10 @@ pub(crate) fn detect_hits(
 ) {
     let hits = &mut *hits;
     hits.world.begin_frame();
-    let mut objects_in_order: Vec<Entity> = objects.iter().map(|(e, ..)| e).collect();
-    objects_in_order.sort_unstable_by_key(|&e| spawn_order(e));
-    for &entity in &objects_in_order {
+    hits.order.clear();
+    hits.order.extend(objects.iter().map(|(e, ..)| e));
+    hits.order.sort_unstable_by_key(|&e| spawn_order(e));
+    for &entity in &hits.order {
         let Ok((_, volumes, transform, mut link, _)) = objects.get_mut(entity) else {
             continue;
         };
@@ -216,7 +219,7 @@ pub(crate) fn detect_hits(
         commands.trigger(hit);
     }
     // Tiles hit the characters touching them whose vulnerability accepts their types.
-    for &entity in &objects_in_order {
+    for &entity in &hits.order {
         let Ok((_, volumes, _, _, Some(contacts))) = objects.get(entity) else {
             continue;
         };

@@ -24,6 +24,9 @@
 //! - [`HitVolumes`]: attack and vulnerability volumes with hit types and teams.
 //! - [`NavAgent`]: bodies that follow a path or a flow field to a goal.
 //! - [`Interpolated`]: shows a body or a character between fixed steps.
+//! - With the `debug` feature, `TileslideDebugPlugin` draws the core's debug lines (active
+//!   segments, normals, hidden seams, temporaries, bodies, contacts, volumes, paths) with
+//!   Bevy's gizmos.
 //! - Messages and entity events: [`SurfaceContact`], [`Crushed`], [`Hit`] (each with the
 //!   tile's cell and id where a tile is involved), [`NavArrived`], and [`TileslideError`]
 //!   for components the core refused.
@@ -46,6 +49,8 @@
 
 mod bodies;
 mod character;
+#[cfg(feature = "debug")]
+mod debug;
 mod hits;
 mod loader;
 mod map;
@@ -58,6 +63,8 @@ mod units;
 
 pub use bodies::{Body, BodyLink, ProposedMove, TileslideBodies, Velocity};
 pub use character::{CharacterContacts, CharacterController, CharacterInput};
+#[cfg(feature = "debug")]
+pub use debug::{DebugDraw, TileslideDebugPlugin, color_of};
 pub use hits::{HitLink, HitShape, HitVolume, HitVolumes, TileslideHits};
 pub use loader::{MAX_EXTERNAL_FILES, MapLoadError, TileMapLoader, TileMapSettings};
 pub use map::{CollisionMap, TileMapAsset};
@@ -69,3 +76,8 @@ pub use platform::{Platform, PlatformLink, PlatformSegment};
 pub use plugin::{StepCount, TileslidePlugin, TileslideSet};
 pub use position::{Interpolated, StepPosition};
 pub use units::MapUnits;
+
+/// The crate's README, its quick start compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
