@@ -8,7 +8,7 @@
 //!
 //! # The parts
 //!
-//! - [`TileslidePlugin`] adds everything; its systems run in [`FixedUpdate`] (or the
+//! - [`TileslidePlugin`] adds everything; its systems run in `FixedUpdate` (or the
 //!   schedule you give) in three public sets, [`TileslideSet::SyncIn`], `Step` and
 //!   `Writeback`, in that order.
 //! - [`CollisionMap`] (a resource) is the map every step collides against: built in code
