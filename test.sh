@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Every test of tileslide: the Rust workspace's (with the CLI's peer benchmarks and the core
-# crate's serde round trips), then the web package's (web/: built from
+# Every test of tileslide: the Rust workspace's (with the CLI's peer benchmarks, the core
+# crate's serde round trips, and the Bevy plugin's debug drawing and hot reload), then the web package's (web/: built from
 # crates/tileslide-wasm, tested in Node) and the playground's (web/playground, built with
 # Vite and played in headless Chromium). Installs what the web build lacks (the wasm32
 # target, wasm-bindgen-cli, see web/build.sh; the npm packages of web/package-lock.json).
@@ -14,7 +14,7 @@ if ! command -v cargo >/dev/null 2>&1 && [ -f "${CARGO_HOME:-$HOME/.cargo}/env" 
 fi
 
 status=0
-cargo test --workspace --features tileslide-cli/peers,tileslide/serde || status=1
+cargo test --workspace --features tileslide-cli/peers,tileslide/serde,tileslide-bevy/debug,tileslide-bevy/hot_reload || status=1
 if ! command -v node >/dev/null 2>&1; then
     echo "error: the web tests need Node.js 20.19 or later (node)" >&2
     exit 1
