@@ -8,13 +8,16 @@
 //!
 //! Every contender steps its own copy of the scene from the start and starts again after
 //! 100 steps (BENCHMARKS.md runs 100), untimed, so all are measured over the same steps.
+//! Before criterion's groups, an interleaved run takes the three in turn, step by step, and
+//! prints their medians and ratios: on a shared machine the load drifts between criterion's
+//! groups, minutes apart.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, missing_docs)]
 
 use std::time::{Duration, Instant};
 
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::Criterion;
 use tileslide::TileMap;
 use tileslide_bench::crowd::{CrowdContender, TileslideCrowd};
 use tileslide_bevy::{Body, CollisionMap, ProposedMove, TileslidePlugin, TileslideSet};
@@ -110,5 +113,56 @@ fn crowd(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, crowd);
-criterion_main!(benches);
+/// Rounds of the interleaved run.
+const ROUNDS: usize = 10;
+
+/// The same three contenders taken in turn, round after round, each for a whole run of
+/// [`STEPS_PER_RUN`] steps from the start: on a shared machine the load drifts over
+/// criterion's minutes, and turns taken within seconds see the same load. Prints each
+/// one's median step and its ratio to the core's.
+fn interleaved(grid: &tileslide_scenes::SolidGrid, map: &TileMap, crowd: &[CrowdBody]) {
+    let mut times: [Vec<Duration>; 3] = Default::default();
+    let time = |f: &mut dyn FnMut()| {
+        let start = Instant::now();
+        f();
+        start.elapsed()
+    };
+    for _ in 0..ROUNDS {
+        let mut core = TileslideCrowd::new(grid, crowd, CROWD_RADIUS).unwrap();
+        let mut fixed = bevy_crowd(map, crowd);
+        let mut frame = bevy_crowd(map, crowd);
+        for _ in 0..STEPS_PER_RUN {
+            times[0].push(time(&mut || core.step()));
+            times[1].push(time(&mut || fixed.world_mut().run_schedule(FixedUpdate)));
+            times[2].push(time(&mut || frame.update()));
+        }
+    }
+    let median = |v: &mut Vec<Duration>| {
+        v.sort_unstable();
+        v[v.len() / 2].as_secs_f64() * 1e3
+    };
+    let core = median(&mut times[0]);
+    println!("crowd, 10,000 circles, {ROUNDS} interleaved runs of {STEPS_PER_RUN} steps:");
+    for (name, t) in ["core", "bevy_fixed_step", "bevy_frame"]
+        .iter()
+        .zip(&mut times)
+    {
+        let m = median(t);
+        println!(
+            "  {name:<16} median {m:.3} ms/step  {:.2}x the core",
+            m / core
+        );
+    }
+}
+
+fn main() {
+    let mut c = Criterion::default().configure_from_args();
+    // `cargo test --benches` runs benchmarks once each as tests: no interleaved run then.
+    if !std::env::args().any(|a| a == "--test") {
+        let grid = dungeon256();
+        let map = grid.to_tile_map().unwrap();
+        interleaved(&grid, &map, &scene_crowd(&grid, N));
+    }
+    crowd(&mut c);
+    c.final_summary();
+}
