@@ -14,7 +14,7 @@ if ! command -v cargo >/dev/null 2>&1 && [ -f "${CARGO_HOME:-$HOME/.cargo}/env" 
 fi
 
 status=0
-cargo test --workspace --features tileslide-cli/peers,tileslide/serde,tileslide-bevy/debug,tileslide-bevy/hot_reload || status=1
+cargo test --workspace --no-fail-fast --features tileslide-cli/peers,tileslide/serde,tileslide-bevy/debug,tileslide-bevy/hot_reload || status=1
 if ! command -v node >/dev/null 2>&1; then
     echo "error: the web tests need Node.js 20.19 or later (node)" >&2
     exit 1
