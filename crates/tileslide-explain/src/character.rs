@@ -60,6 +60,7 @@ pub fn event_words(e: &MoveEvent, n: &mut usize) -> String {
         }
         MoveEvent::Pushed {
             source,
+            direction,
             depth,
             crushed,
         } => {
@@ -69,9 +70,10 @@ pub fn event_words(e: &MoveEvent, n: &mut usize) -> String {
                 ""
             };
             format!(
-                "pushed out of {} ({} deep){crush}",
+                "pushed out of {} ({} deep, towards {}){crush}",
                 wall(&source),
-                num(depth)
+                num(depth),
+                point(direction)
             )
         }
         MoveEvent::Sweep(s) => {

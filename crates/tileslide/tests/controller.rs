@@ -616,6 +616,36 @@ fn a_platform_moving_sideways_into_a_character_pushes_it() {
 }
 
 #[test]
+fn a_platform_rising_beside_a_character_lifts_it_only_when_more_of_it_is_under_it_than_in_it() {
+    // A box standing on the floor (y = 8), its right side at x = 5.25; a platform's top
+    // appears 0.1 above the floor with its left end `overlap` under the box. Touching the
+    // box's side, or reaching less far under it than into it (0.1 less a skin), it pushes
+    // the box sideways off its end, a skin clear; reaching further under it, it lifts the
+    // box onto itself. (A box wedged in a gap as wide as itself was once lifted
+    // out of it by the end of a ledge's top that its side touched.)
+    let stand = 8.0 - 0.4 - SKIN;
+    for (overlap, x, y) in [
+        (0.0, 5.0 - SKIN, stand),
+        (1e-4, 5.0 - 1e-4 - SKIN, stand),
+        (0.05, 5.0 - 0.05 - SKIN, stand),
+        (0.2, 5.0, 7.9 - 0.4 - SKIN),
+    ] {
+        let mut m = map(OPEN);
+        let mut ch = hero(boxed(), v(5.0, 7.0));
+        step(&mut ch, &m, v(0.0, 2.0));
+        assert!((ch.position - v(5.0, stand)).abs().max_element() < 1e-5);
+        platform(&mut m, v(5.25 - overlap + 1.0, 7.9), v(0.0, -0.1));
+        let c = step(&mut ch, &m, Vec2::ZERO);
+        assert!(
+            (ch.position - v(x, y)).abs().max_element() < 1e-4,
+            "overlap {overlap}: {:?}, not ({x}, {y})",
+            ch.position
+        );
+        assert!(c.crush.is_none(), "overlap {overlap}");
+    }
+}
+
+#[test]
 fn level_bounds_hold_when_submitted_as_segments_and_nothing_breaks_without_them() {
     // A floor with no side walls: the map's edge is x = 0 and x = 10.
     let mut m = map("\

@@ -96,10 +96,12 @@ fn step_json(step: u64, t: &MoveTrace) -> Value {
             }}),
             MoveEvent::Pushed {
                 source,
+                direction,
                 depth,
                 crushed,
             } => json!({"pushed": {
                 "source": wall_json(&source),
+                "direction": point_json(direction),
                 "depth": crate::json::number(depth),
                 "crushed": crushed,
             }}),

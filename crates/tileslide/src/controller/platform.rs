@@ -105,8 +105,9 @@ impl Character {
     }
 
     /// Pushes the character out of every temporary segment that overlaps it from the front,
-    /// along that segment's normal, a skin clear; records a crush when the world stops the
-    /// push short.
+    /// a skin clear: along that segment's normal, or off its end when the character
+    /// reaches less far past the end than into the segment (a box beside a platform's end
+    /// is not lifted by it); records a crush when the world stops the push short.
     ///
     /// A one-way platform pushes only a character whose lowest point is on or above its
     /// line (as it holds only those): one rising into a character from below passes
@@ -126,32 +127,33 @@ impl Character {
                 continue;
             }
             let capsule = Capsule::new(platform.segment, platform.normal, [true; 2]);
-            let Some(depth) = self.shape().penetration(&capsule, self.position) else {
+            let Some((direction, depth)) = self.shape().penetration(&capsule, self.position) else {
                 continue;
             };
-            if one_way && depth > 2.0 * skin {
+            if one_way && (direction != capsule.normal || depth > 2.0 * skin) {
                 continue;
             }
             let before = self.position;
             log.purpose(SweepPurpose::PushOut);
             self.go(
                 map,
-                capsule.normal * (depth + skin),
+                direction * (depth + skin),
                 options,
                 Some(platform.owner),
                 log,
             );
             // Short of the depth (not of the extra skin): the world is in the way.
-            let crushed = (self.position - before).dot(capsule.normal) < depth - 0.5 * skin;
+            let crushed = (self.position - before).dot(direction) < depth - 0.5 * skin;
             let owner = platform.owner;
             log.push(MoveEvent::Pushed {
                 source: WallSource::Temporary { owner, index },
+                direction,
                 depth,
                 crushed,
             });
             if crushed {
                 contacts.crush = Some(Contact {
-                    normal: capsule.normal,
+                    normal: direction,
                     flags: platform.flags,
                     source: SegmentSource::Temporary {
                         owner: platform.owner,

@@ -78,11 +78,14 @@ impl CharacterShape {
         }
     }
 
-    /// How far the shape at `center` reaches past the line of `capsule`'s segment while
-    /// its centre is in front of it and it touches the segment: the depth to push it out by
-    /// along the capsule's normal. `None` when it does not overlap the segment from the
-    /// front.
-    pub(crate) fn penetration(&self, capsule: &Capsule, center: Vec2) -> Option<f32> {
+    /// How to push the shape at `center` out of `capsule`'s segment when its centre is in
+    /// front of the segment's line, it reaches past that line and it touches the segment:
+    /// the unit direction and the distance. Along the capsule's normal by how far the shape
+    /// reaches past the line, unless it reaches less far past one of the segment's ends
+    /// (a box whose side overlaps the end of a platform, or only touches it): then along
+    /// the segment, off that end, by that much. `None` when it does not overlap the
+    /// segment from the front.
+    pub(crate) fn penetration(&self, capsule: &Capsule, center: Vec2) -> Option<(Vec2, f32)> {
         let (segment, normal) = (&capsule.segment, capsule.normal);
         let height = (center - segment.a).dot(normal);
         let support = self.support(normal);
@@ -90,16 +93,29 @@ impl CharacterShape {
         if !(height >= 0.0 && height < support && length > 0.0) {
             return None;
         }
+        let along = segment.delta() / length;
+        let s = (center - segment.a).dot(along);
         let touches = match *self {
             // The centre over the segment's extent (the flat side; the rounded ends are
             // left to the sweeps).
-            Self::Circle { .. } => {
-                let s = (center - segment.a).dot(segment.delta()) / length;
-                (0.0..=length).contains(&s)
-            }
+            Self::Circle { .. } => (0.0..=length).contains(&s),
             Self::Rect { half } => Aabb::from_center(center, half).overlaps_segment(segment),
         };
-        touches.then_some(support - height)
+        if !touches {
+            return None;
+        }
+        let depth = support - height;
+        // How far past each end the shape reaches along the segment: moved back by that
+        // much it is off the segment. (A circle over the segment's extent reaches past
+        // neither end less far than its radius, so it is pushed along the normal.)
+        let reach = self.support(along);
+        let (past_a, past_b) = (s + reach, length - s + reach);
+        let side = past_a.min(past_b);
+        Some(if side < depth {
+            (if past_a <= past_b { -along } else { along }, side)
+        } else {
+            (normal, depth)
+        })
     }
 
     /// The time of impact of the shape at `center` moving by `motion` against `capsule`'s

@@ -62,11 +62,14 @@ pub enum MoveEvent {
         /// The platform's owner.
         owner: Owner,
     },
-    /// A temporary segment that moved into the character pushed it out along its normal.
+    /// A temporary segment that moved into the character pushed it out.
     Pushed {
         /// The segment.
         source: WallSource,
-        /// How deep it was in.
+        /// The way it pushed: its normal, or along it off its nearer end when the character
+        /// reached less far past that end than into the segment.
+        direction: Vec2,
+        /// How deep it was in, that way.
         depth: f32,
         /// Whether the world stopped the push short: crushed.
         crushed: bool,
