@@ -13,7 +13,7 @@
 //!   `Writeback`, in that order.
 //! - [`CollisionMap`] (a resource) is the map every step collides against: built in code
 //!   from a `tileslide::TileMap`, or kept in step with a [`TileMapAsset`] that
-//!   [`TileMapLoader`] reads from `.txt`, `.tmx`, `.tmj` or `.tsm` files (reloaded when the
+//!   [`TileMapLoader`] reads from `.txt`, `.tmx`, `.tmj`, `.ldtk` or `.tsm` files (reloaded when the
 //!   file changes, with the `hot_reload` feature).
 //! - [`Body`] with [`ProposedMove`] and [`Velocity`]: circles and compounds, resolved
 //!   together by the core's `Bodies` each step.

@@ -9,13 +9,15 @@ use bevy::asset::{AssetLoader, LoadContext, ReadAssetBytesError};
 use bevy::prelude::*;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
+use tileslide::io::ldtk::{LdtkMap, LdtkOptions, LdtkProject};
 use tileslide::io::tiled::{TiledMap, TiledOptions};
 use tileslide::io::{LoadError, LoadErrorKind, ascii, baked, tiled};
 use tileslide::{HitTypes, TileId};
 
 use crate::map::TileMapAsset;
 
-/// Most external files (tile sets, templates) one Tiled map may name.
+/// Most external files (a Tiled map's tile sets and templates, an LDtk level's file) one
+/// map may name.
 pub const MAX_EXTERNAL_FILES: usize = 256;
 
 /// How a map file is read, per file: Bevy keeps these in the file's `.meta`, or a game
@@ -26,8 +28,12 @@ pub struct TileMapSettings {
     /// The side of an ASCII map's cells, in map units (default 1).
     pub cell_size: f32,
     /// The tile layer that collides, for the formats with layers (a Tiled layer's name,
-    /// `NAME#N` or `#N`); `None`: the format's default (see `tileslide::io::tiled`).
+    /// `NAME#N` or `#N`; an LDtk layer's identifier); `None`: the format's default (see
+    /// `tileslide::io::tiled` and `tileslide::io::ldtk`).
     pub layer: Option<String>,
+    /// The level of an LDtk project (its identifier); `None`: its first level.
+    #[serde(default)]
+    pub level: Option<String>,
     /// Most cells the map may have, checked before anything is allocated; `None`: the core's
     /// limit (`tileslide::limits::MAX_CELLS`).
     pub max_cells: Option<u64>,
@@ -38,6 +44,7 @@ impl Default for TileMapSettings {
         Self {
             cell_size: 1.0,
             layer: None,
+            level: None,
             max_cells: None,
         }
     }
@@ -59,7 +66,7 @@ pub enum MapLoadError {
     /// cause.
     #[error(transparent)]
     Load(#[from] LoadError),
-    /// A file the map names (a tile set, a template) could not be read.
+    /// A file the map names (a tile set, a template, a level file) could not be read.
     #[error("{path}: could not read `{file}`, which it names: {source}")]
     External {
         /// The map's asset path.
@@ -78,7 +85,7 @@ pub enum MapLoadError {
         max: usize,
     },
     /// The file's extension is none this loader reads.
-    #[error("{path}: not a map this loader reads (expected .txt, .tmx, .tmj or .tsm)")]
+    #[error("{path}: not a map this loader reads (expected .txt, .tmx, .tmj, .ldtk or .tsm)")]
     UnknownFormat {
         /// The map's asset path.
         path: PathBuf,
@@ -91,6 +98,7 @@ enum MapFormat {
     Ascii,
     Tmx,
     Tmj,
+    Ldtk,
     Baked,
 }
 
@@ -101,15 +109,17 @@ impl MapFormat {
             "txt" => Self::Ascii,
             "tmx" => Self::Tmx,
             "tmj" => Self::Tmj,
+            "ldtk" => Self::Ldtk,
             "tsm" => Self::Baked,
             _ => return None,
         })
     }
 }
 
-/// Loads [`TileMapAsset`]s from `.txt`, `.tmx`, `.tmj` and `.tsm` files through the core's
-/// loaders (`tileslide::io`). A Tiled map's external tile sets and templates are read
-/// through Bevy's asset sources too, so they reload the map when they change.
+/// Loads [`TileMapAsset`]s from `.txt`, `.tmx`, `.tmj`, `.ldtk` and `.tsm` files through the
+/// core's loaders (`tileslide::io`). A Tiled map's external tile sets and templates, and an
+/// LDtk level's `.ldtkl` file, are read through Bevy's asset sources too (never from outside
+/// the map's folder), so they reload the map when they change.
 #[derive(Clone, Copy, Debug, Default, TypePath)]
 pub struct TileMapLoader;
 
@@ -148,11 +158,16 @@ impl AssetLoader for TileMapLoader {
                 let level = load_tiled(text, format, settings, &path, load_context).await?;
                 Ok(tiled_asset(level))
             }
+            MapFormat::Ldtk => {
+                let text = text_of(&bytes, &path)?;
+                let level = load_ldtk(text, settings, &path, load_context).await?;
+                Ok(ldtk_asset(level))
+            }
         }
     }
 
     fn extensions(&self) -> &[&str] {
-        &["txt", "tmx", "tmj", "tsm"]
+        &["txt", "tmx", "tmj", "ldtk", "tsm"]
     }
 }
 
@@ -167,9 +182,9 @@ fn text_of<'a>(bytes: &'a [u8], path: &Path) -> Result<&'a str, LoadError> {
     })
 }
 
-/// A name no file can have (paths hold no NUL byte): given in memory, it tells the Tiled
-/// loader to take every external file from memory, never from the disk, and to report the
-/// first one it lacks, which is then read through Bevy and given.
+/// A name no file can have (paths hold no NUL byte): given in memory, it tells the core's
+/// Tiled and LDtk loaders to take every external file from memory, never from the disk, and
+/// to report the first one they lack, which is then read through Bevy and given.
 const NO_FILE: &str = "\0";
 
 /// Parses a Tiled map, reading each external file it names through `load_context` as the
@@ -181,29 +196,75 @@ async fn load_tiled(
     path: &Path,
     load_context: &mut LoadContext<'_>,
 ) -> Result<TiledMap, MapLoadError> {
-    let mut options = TiledOptions::default().with_file(NO_FILE, Vec::new());
+    let mut options = TiledOptions::default();
     if let Some(layer) = &settings.layer {
         options = options.with_layer(layer.clone());
     }
     if let Some(cells) = settings.max_cells {
         options = options.with_max_cells(cells);
     }
-    let dir = path.parent().unwrap_or(Path::new(""));
-    loop {
-        let parsed = match format {
+    with_files(path, load_context, |files| {
+        let options = TiledOptions {
+            files: files.clone(),
+            ..options.clone()
+        };
+        match format {
             MapFormat::Tmx => tiled::parse_tmx(text, path, &options),
             _ => tiled::parse_tmj(text, path, &options),
-        };
-        let error = match parsed {
-            Ok(level) => return Ok(level),
+        }
+    })
+    .await
+}
+
+/// Parses an LDtk project and builds the level the settings choose, reading its level file
+/// (if it has one) through `load_context`. The core refuses a level file outside the
+/// project's folder before it is asked for.
+async fn load_ldtk(
+    text: &str,
+    settings: &TileMapSettings,
+    path: &Path,
+    load_context: &mut LoadContext<'_>,
+) -> Result<LdtkMap, MapLoadError> {
+    let project = LdtkProject::parse(text, path)?;
+    let mut options = LdtkOptions::default();
+    if let Some(level) = &settings.level {
+        options = options.with_level(level.clone());
+    }
+    if let Some(layer) = &settings.layer {
+        options = options.with_layer(layer.clone());
+    }
+    if let Some(cells) = settings.max_cells {
+        options = options.with_max_cells(cells);
+    }
+    with_files(path, load_context, |files| {
+        project.build(&LdtkOptions {
+            files: files.clone(),
+            ..options.clone()
+        })
+    })
+    .await
+}
+
+/// Runs `parse` with the external files read so far (given in memory, so that the core's
+/// loader never reads the disk), reading each one it reports missing through
+/// `load_context` and running it again, until it succeeds or fails otherwise.
+async fn with_files<T>(
+    path: &Path,
+    load_context: &mut LoadContext<'_>,
+    mut parse: impl FnMut(&BTreeMap<String, Vec<u8>>) -> Result<T, LoadError>,
+) -> Result<T, MapLoadError> {
+    let mut files = BTreeMap::from([(NO_FILE.to_owned(), Vec::new())]);
+    let dir = path.parent().unwrap_or(Path::new(""));
+    loop {
+        let error = match parse(&files) {
+            Ok(parsed) => return Ok(parsed),
             Err(e) => e,
         };
         // A file the parse asked for and was not given: read it and parse again.
-        let Some(name) = missing_file(&error, dir).filter(|n| !options.files.contains_key(n))
-        else {
+        let Some(name) = missing_file(&error, dir).filter(|n| !files.contains_key(n)) else {
             return Err(error.into());
         };
-        if options.files.len() > MAX_EXTERNAL_FILES {
+        if files.len() > MAX_EXTERNAL_FILES {
             return Err(MapLoadError::TooManyFiles {
                 path: path.to_path_buf(),
                 max: MAX_EXTERNAL_FILES,
@@ -221,7 +282,7 @@ async fn load_tiled(
                 file: asset_path.to_string(),
                 source,
             })?;
-        options = options.with_file(name, bytes);
+        files.insert(name, bytes);
     }
 }
 
@@ -268,9 +329,26 @@ fn tiled_asset(level: TiledMap) -> TileMapAsset {
         map, object_layers, ..
     } = level;
     TileMapAsset {
-        map,
         tile_hits,
         object_layers,
+        ..TileMapAsset::new(map)
+    }
+}
+
+/// The asset of a loaded LDtk level: its collision layer, its entity layers and the
+/// project's levels.
+fn ldtk_asset(level: LdtkMap) -> TileMapAsset {
+    let level_index = level.level_index;
+    let LdtkMap {
+        map,
+        entity_layers,
+        mut levels,
+        ..
+    } = level;
+    TileMapAsset {
+        entity_layers,
+        level: (level_index < levels.len()).then(|| levels.swap_remove(level_index)),
+        ..TileMapAsset::new(map)
     }
 }
 
@@ -283,6 +361,7 @@ mod tests {
         assert_eq!(MapFormat::of(Path::new("a/b.TXT")), Some(MapFormat::Ascii));
         assert_eq!(MapFormat::of(Path::new("b.tmx")), Some(MapFormat::Tmx));
         assert_eq!(MapFormat::of(Path::new("b.tmj")), Some(MapFormat::Tmj));
+        assert_eq!(MapFormat::of(Path::new("b.LDtk")), Some(MapFormat::Ldtk));
         assert_eq!(MapFormat::of(Path::new("b.tsm")), Some(MapFormat::Baked));
         assert_eq!(MapFormat::of(Path::new("b.json")), None);
         assert_eq!(MapFormat::of(Path::new("b")), None);

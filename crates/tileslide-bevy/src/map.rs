@@ -3,11 +3,12 @@
 use std::collections::BTreeMap;
 
 use bevy::prelude::*;
+use tileslide::io::ldtk::{EntityLayer, LdtkLevel};
 use tileslide::io::tiled::ObjectLayer;
 use tileslide::{HitTypes, TileId, TileMap};
 
-/// A collision map loaded from a file: `.txt` (ASCII), `.tmx` / `.tmj` (Tiled) or `.tsm`
-/// (baked), by [`TileMapLoader`](crate::TileMapLoader).
+/// A collision map loaded from a file: `.txt` (ASCII), `.tmx` / `.tmj` (Tiled), `.ldtk`
+/// (LDtk) or `.tsm` (baked), by [`TileMapLoader`](crate::TileMapLoader).
 ///
 /// ```no_run
 /// # use bevy::prelude::*;
@@ -27,6 +28,12 @@ pub struct TileMapAsset {
     /// A Tiled map's object layers (spawn points, regions), in map coordinates; empty for
     /// other formats.
     pub object_layers: Vec<ObjectLayer>,
+    /// An LDtk level's entity layers (type, position, size, fields), in map coordinates
+    /// (world pixels); empty for other formats.
+    pub entity_layers: Vec<EntityLayer>,
+    /// The LDtk level loaded (its identifier, world position, size and fields); `None` for
+    /// other formats.
+    pub level: Option<LdtkLevel>,
 }
 
 impl TileMapAsset {
@@ -37,6 +44,8 @@ impl TileMapAsset {
             map,
             tile_hits: BTreeMap::new(),
             object_layers: Vec::new(),
+            entity_layers: Vec::new(),
+            level: None,
         }
     }
 }

@@ -11,6 +11,7 @@ use std::path::PathBuf;
 use bevy::asset::LoadState;
 use bevy::prelude::*;
 use support::{app_reading, assert_loaded, load, maps_dir, wait_for};
+use tileslide::io::ldtk::{self, LdtkOptions};
 use tileslide::io::tiled::{self, TiledOptions};
 use tileslide::io::{ascii, baked};
 use tileslide::{HitTypes, TileId, TileMap};
@@ -95,6 +96,91 @@ fn a_tiled_map_brings_its_tiles_hit_types_and_object_layers() {
     assert!(spawns.object("player").is_some());
 }
 
+/// The loaded asset of `handle`.
+fn asset<'a>(app: &'a App, handle: &Handle<TileMapAsset>) -> &'a TileMapAsset {
+    app.world()
+        .resource::<Assets<TileMapAsset>>()
+        .get(handle)
+        .unwrap()
+}
+
+#[test]
+fn an_ldtk_level_loads_as_the_core_builds_it_with_its_entities() {
+    let dir = maps_dir();
+    let mut app = app_reading(&dir);
+    let path = dir.join("ldtk/platformer.ldtk");
+    let expected = ldtk::load(&path, &LdtkOptions::default()).unwrap();
+    let handle = load(&mut app, "ldtk/platformer.ldtk");
+    assert_loaded(&mut app, &handle);
+    assert_eq!(baked_bytes(&app, &handle), baked::to_bytes(&expected.map));
+    let loaded = asset(&app, &handle);
+    assert_eq!(loaded.entity_layers, expected.entity_layers);
+    assert_eq!(loaded.level.as_ref().unwrap().identifier, "Meadow");
+    let entities = &loaded.entity_layers[0];
+    assert_eq!(entities.entities_of("MovingPlatform").count(), 2);
+    assert!(entities.entity("PlayerStart").is_some());
+}
+
+#[test]
+fn an_ldtk_level_in_its_own_file_is_read_through_the_asset_source() {
+    let dir = maps_dir();
+    let mut app = app_reading(&dir);
+    let expected = ldtk::load(
+        dir.join("ldtk/dungeon.ldtk"),
+        &LdtkOptions::default().with_level("Crypt"),
+    )
+    .unwrap();
+    let handle = app
+        .world()
+        .resource::<AssetServer>()
+        .load_builder()
+        .with_settings(|s: &mut TileMapSettings| s.level = Some("Crypt".into()))
+        .load("ldtk/dungeon.ldtk");
+    assert_loaded(&mut app, &handle);
+    assert_eq!(baked_bytes(&app, &handle), baked::to_bytes(&expected.map));
+    let loaded = asset(&app, &handle);
+    assert_eq!(loaded.level.as_ref().unwrap().identifier, "Crypt");
+    assert_eq!(loaded.entity_layers, expected.entity_layers);
+}
+
+#[test]
+fn an_ldtk_level_file_outside_the_project_folder_is_refused_unread() {
+    // The project in `root/maps` names `../secret.ldtkl`, which exists: the core refuses
+    // the path before the loader is asked for the file, so it is never read.
+    let root = scratch_dir("ldtk-outside");
+    std::fs::create_dir_all(root.join("maps")).unwrap();
+    let project = std::fs::read_to_string(maps_dir().join("ldtk/dungeon.ldtk")).unwrap();
+    let project = project.replace("dungeon/Entrance.ldtkl", "../secret.ldtkl");
+    std::fs::write(root.join("maps/dungeon.ldtk"), project).unwrap();
+    std::fs::copy(
+        maps_dir().join("ldtk/dungeon/Entrance.ldtkl"),
+        root.join("secret.ldtkl"),
+    )
+    .unwrap();
+    let message = load_error(&mut app_reading(&root), "maps/dungeon.ldtk");
+    assert!(
+        message.contains("maps/dungeon.ldtk")
+            && message.contains("../secret.ldtkl")
+            && message.contains("climbs above the folder"),
+        "{message}"
+    );
+}
+
+#[test]
+fn a_missing_ldtk_level_file_fails_naming_it() {
+    let root = scratch_dir("ldtk-missing");
+    std::fs::copy(
+        maps_dir().join("ldtk/dungeon.ldtk"),
+        root.join("dungeon.ldtk"),
+    )
+    .unwrap();
+    let message = load_error(&mut app_reading(&root), "dungeon.ldtk");
+    assert!(
+        message.contains("dungeon.ldtk") && message.contains("dungeon/Entrance.ldtkl"),
+        "{message}"
+    );
+}
+
 #[test]
 fn a_broken_map_fails_naming_the_file_and_the_place() {
     let root = scratch_dir("broken");
@@ -105,11 +191,7 @@ fn a_broken_map_fails_naming_the_file_and_the_place() {
         ("level.tmj", "level.tmj:3:"),
         ("room.txt", "room.txt:2:2: "),
     ] {
-        let handle = load(&mut app, path);
-        let LoadState::Failed(error) = wait_for(&mut app, &handle) else {
-            panic!("{path} loaded");
-        };
-        let message = error.to_string();
+        let message = load_error(&mut app, path);
         assert!(message.contains(expected), "{path}: {message}");
     }
 }
@@ -118,12 +200,7 @@ fn a_broken_map_fails_naming_the_file_and_the_place() {
 fn a_missing_tile_set_fails_naming_it() {
     let root = scratch_dir("missing");
     std::fs::copy(maps_dir().join("cave.tmj"), root.join("cave.tmj")).unwrap();
-    let mut app = app_reading(&root);
-    let handle = load(&mut app, "cave.tmj");
-    let LoadState::Failed(error) = wait_for(&mut app, &handle) else {
-        panic!("loaded without its tile set");
-    };
-    let message = error.to_string();
+    let message = load_error(&mut app_reading(&root), "cave.tmj");
     assert!(
         message.contains("cave.tmj") && message.contains("tiles.tsj"),
         "{message}"
@@ -160,6 +237,15 @@ fn the_collision_map_follows_its_asset_when_it_loads_and_changes() {
         baked::to_bytes(map.map().unwrap()),
         baked::to_bytes(&smaller)
     );
+}
+
+/// The error loading `path` fails with (a panic if it loads).
+fn load_error(app: &mut App, path: &str) -> String {
+    let handle = load(app, path);
+    let LoadState::Failed(error) = wait_for(app, &handle) else {
+        panic!("{path} loaded");
+    };
+    error.to_string()
 }
 
 /// A fresh folder for one test's files.
