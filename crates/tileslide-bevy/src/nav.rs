@@ -137,7 +137,8 @@ type FieldKey = (u32, u32, u32);
 /// The navigation grid of the map and the flow fields agents follow.
 #[derive(Resource, Debug, Default)]
 pub struct Navigation {
-    config: NavConfig,
+    /// `None`: the core's default, for circles up to one cell of the map wide.
+    config: Option<NavConfig>,
     grid: Option<NavGrid>,
     /// The map generation the grid was built for.
     built_for: u64,
@@ -150,9 +151,19 @@ impl Navigation {
     #[must_use]
     pub fn new(config: NavConfig) -> Self {
         Self {
-            config,
+            config: Some(config),
             ..Self::default()
         }
+    }
+
+    /// The config the grid of `map` is built with: the one given, or else the core's
+    /// default with `max_radius` one cell of the map (the core's default is one map unit,
+    /// a cell of a unit-cell map, but a Tiled or LDtk map is in pixels).
+    fn config_for(&self, map: &TileMap) -> NavConfig {
+        self.config.unwrap_or_else(|| NavConfig {
+            max_radius: map.cell_size().min_element(),
+            ..NavConfig::default()
+        })
     }
 
     /// The grid, once built.
@@ -164,6 +175,7 @@ impl Navigation {
     /// Builds the grid for `map`, or catches it up with the map's edits. `None` when the
     /// map was edited in a way no path survives (the agents then plan again).
     fn catch_up(&mut self, map: &TileMap, generation: u64) -> Result<bool, NavError> {
+        let config = self.config_for(map);
         let rebuild = |config| NavGrid::new(map, config);
         match &mut self.grid {
             Some(grid) if self.built_for == generation => match grid.sync(map) {
@@ -176,14 +188,14 @@ impl Navigation {
                     Ok(!change.is_empty())
                 }
                 Err(NavError::OtherMap) => {
-                    self.grid = Some(rebuild(self.config)?);
+                    self.grid = Some(rebuild(config)?);
                     self.fields.clear();
                     Ok(true)
                 }
                 Err(e) => Err(e),
             },
             _ => {
-                self.grid = Some(rebuild(self.config)?);
+                self.grid = Some(rebuild(config)?);
                 self.built_for = generation;
                 self.fields.clear();
                 Ok(true)

@@ -49,7 +49,7 @@ pub struct TileslidePlugin {
     schedule: Interned<dyn ScheduleLabel>,
     units: MapUnits,
     resolve: ResolveConfig,
-    nav: NavConfig,
+    nav: Option<NavConfig>,
 }
 
 impl Default for TileslidePlugin {
@@ -58,7 +58,7 @@ impl Default for TileslidePlugin {
             schedule: FixedUpdate.intern(),
             units: MapUnits::default(),
             resolve: ResolveConfig::default(),
-            nav: NavConfig::default(),
+            nav: None,
         }
     }
 }
@@ -93,11 +93,13 @@ impl TileslidePlugin {
         }
     }
 
-    /// The plugin building its navigation grid with `config` (map units).
+    /// The plugin building its navigation grid with `config` (map units). Without it, the
+    /// core's default serves circles up to one cell of the map wide (`max_radius` the
+    /// map's shorter cell side, so 16 for a map of 16-pixel tiles).
     #[must_use]
     pub fn with_nav_config(self, config: NavConfig) -> Self {
         Self {
-            nav: config,
+            nav: Some(config),
             ..self
         }
     }
@@ -132,7 +134,7 @@ impl Plugin for TileslidePlugin {
         let refused = bodies.set_config(self.resolve).err();
         app.insert_resource(self.units)
             .insert_resource(bodies)
-            .insert_resource(Navigation::new(self.nav))
+            .insert_resource(self.nav.map_or_else(Navigation::default, Navigation::new))
             .init_resource::<TileslideHits>()
             .init_resource::<StepCount>()
             .add_message::<SurfaceContact>()

@@ -193,3 +193,95 @@ fn a_transform_moved_by_the_game_teleports_the_body() {
     let set = app.world().resource::<tileslide_bevy::TileslideBodies>();
     assert!(set.bodies().is_empty());
 }
+
+#[test]
+fn an_interpolated_body_is_shown_between_its_last_two_steps() {
+    // Frames a quarter of a fixed step long: a step runs every fourth frame, and in between
+    // the interpolated body is shown a quarter further each frame from where the step before
+    // left it to where the last step did, while its twin (not interpolated) jumps a whole
+    // step every fourth frame. Both are where the core puts them at each step.
+    let room = "##########\n#........#\n#........#\n#........#\n#........#\n##########";
+    let mut app = App::new();
+    app.add_plugins((MinimalPlugins, TileslidePlugin::default()))
+        .insert_resource(CollisionMap::new(
+            ascii::parse(room, "room.txt", 1.0).unwrap(),
+        ))
+        .insert_resource(Time::<Fixed>::from_duration(support::STEP))
+        .insert_resource(bevy::time::TimeUpdateStrategy::ManualDuration(
+            support::STEP / 4,
+        ));
+    let spawn = |app: &mut App, y: f32, smooth: bool| {
+        let mut e = app.world_mut().spawn((
+            Body::circle(0.3),
+            tileslide_bevy::Velocity(Vec2::new(3.0, 0.0)),
+            Transform::from_xyz(1.5, y, 0.0),
+        ));
+        if smooth {
+            e.insert(tileslide_bevy::Interpolated);
+        }
+        e.id()
+    };
+    let smooth = spawn(&mut app, -1.5, true);
+    let twin = spawn(&mut app, -3.5, false);
+    let x = |app: &App, e: Entity| app.world().get::<Transform>(e).unwrap().translation.x;
+    let mut last_shown = x(&app, smooth);
+    let mut moved = 0;
+    for frame in 0..48 {
+        app.update();
+        let position = *app
+            .world()
+            .get::<tileslide_bevy::StepPosition>(smooth)
+            .unwrap();
+        if !position.placed {
+            // No step yet (an app's first update runs none).
+            continue;
+        }
+        let f = app.world().resource::<Time<Fixed>>().overstep_fraction();
+        let shown = x(&app, smooth);
+        // The true position is the twin's, and the one shown lies between the last two.
+        assert_eq!(position.current.x, x(&app, twin), "frame {frame}");
+        assert_eq!(
+            shown,
+            position.previous.lerp(position.current, f).x,
+            "frame {frame}"
+        );
+        assert!(shown <= position.current.x, "frame {frame}");
+        if shown > last_shown {
+            moved += 1;
+        } else {
+            assert_eq!(shown, last_shown, "frame {frame}: shown moving back");
+        }
+        last_shown = shown;
+    }
+    // Once moving it moves every frame (three frames of four the twin stands still): 12
+    // steps of 0.05.
+    assert!(moved >= 36, "moved in {moved} of 48 frames");
+    assert!(x(&app, twin) > 1.9, "{}", x(&app, twin));
+}
+
+#[test]
+fn agents_find_their_way_on_a_map_in_pixels_without_a_nav_config() {
+    // The rooms in 16-pixel cells, drawn a world unit a cell: an agent of radius 0.3 is
+    // 4.8 map units wide, which the core's default grid (circles up to 1 map unit) refuses;
+    // the plugin's default serves circles up to a cell.
+    let map = ascii::parse(ROOMS, "rooms.txt", 16.0).unwrap();
+    let mut app = support::headless(TileslidePlugin::default().with_scale(1.0 / 16.0));
+    app.insert_resource(CollisionMap::new(map));
+    support::collect::<NavArrived>(&mut app);
+    support::collect::<TileslideError>(&mut app);
+    let goal = Vec2::new(16.5, -2.5);
+    let mut agent = NavAgent::new(0.3, 4.0).with_goal(NavGoal::Flow(goal));
+    agent.arrive_distance = 0.3;
+    let id = app
+        .world_mut()
+        .spawn((
+            Body::circle(0.3),
+            agent,
+            Transform::from_xyz(1.5, -1.5, 0.0),
+        ))
+        .id();
+    support::run_steps(&mut app, 600);
+    assert!(support::collected::<TileslideError>(&app).is_empty());
+    let arrived = support::collected::<NavArrived>(&app);
+    assert_eq!(arrived.iter().map(|a| a.entity).collect::<Vec<_>>(), [id]);
+}
