@@ -63,6 +63,8 @@ struct Game {
 #[derive(Component)]
 struct Player {
     since_ground: u32,
+    /// The speed of the platform it jumped off, kept until it lands.
+    carried: f32,
 }
 
 #[derive(Component)]
@@ -115,7 +117,10 @@ fn spawn_level(
                     ..ControllerConfig::default()
                 };
                 commands.spawn((
-                    Player { since_ground: 0 },
+                    Player {
+                        since_ground: 0,
+                        carried: 0.0,
+                    },
                     CharacterController::rect(half).with_config(config),
                     Interpolated,
                     Transform::from_translation(at.extend(1.0)),
@@ -265,20 +270,18 @@ fn drive_player(
         (run, jump, pressed([KeyCode::ArrowDown, KeyCode::KeyS]))
     };
     if contacts.is_grounded() {
-        player.since_ground = 0;
+        (player.since_ground, player.carried) = (0, 0.0);
     } else {
         player.since_ground = player.since_ground.saturating_add(1);
     }
     let mut velocity = input.velocity;
-    velocity.x = run * RUN;
     if jump && player.since_ground <= COYOTE_STEPS {
         velocity.y = JUMP;
         player.since_ground = COYOTE_STEPS + 1;
-        // A jump off a moving platform keeps its speed.
-        if let Some(ground) = contacts.ground {
-            velocity.x += ground.velocity.x;
-        }
+        // A jump off a moving platform keeps its speed until the landing.
+        player.carried = contacts.ground.map_or(0.0, |ground| ground.velocity.x);
     }
+    velocity.x = run * RUN + player.carried;
     velocity.y = (velocity.y - GRAVITY * dt).max(-MAX_FALL);
     input.velocity = velocity;
     input.drop_through = drop;
