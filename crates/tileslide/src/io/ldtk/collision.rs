@@ -143,6 +143,42 @@ impl Collision {
             .unwrap_or(Collision::Tile(base))
     }
 
+    /// This collision's shape in a cell of `size` (y down), mirrored by the flip bits `flip`
+    /// (1: in x, 2: in y, as LDtk's `f`); a game's own tile takes its shape in a unit cell
+    /// from `own`. `None` for [`Empty`](Self::Empty), and for a game's tile without `own`.
+    /// This is how the LDtk loader shapes its tiles, for other sources of tile grids (a
+    /// tile-map layer in an engine).
+    ///
+    /// ```
+    /// use tileslide::io::ldtk::Collision;
+    /// use tileslide::Vec2;
+    /// let ramp = Collision::RampUpRight.shape_in_cell(Vec2::new(16.0, 8.0), 1, None);
+    /// let mirrored = ramp.unwrap().unwrap();
+    /// let down = Collision::RampDownRight.shape_in_cell(Vec2::new(16.0, 8.0), 0, None);
+    /// assert_eq!(mirrored.segments().len(), down.unwrap().unwrap().segments().len());
+    /// assert!(Collision::Empty.shape_in_cell(Vec2::ONE, 0, None).is_none());
+    /// ```
+    pub fn shape_in_cell(
+        self,
+        size: Vec2,
+        flip: u32,
+        own: Option<&TileShape>,
+    ) -> Option<Result<TileShape, ShapeError>> {
+        let unit = match self {
+            Collision::Tile(_) => own.cloned().map(Ok),
+            built_in => built_in.unit_shape(),
+        }?;
+        Some(unit.and_then(|u| place(&u, size, flip)))
+    }
+
+    /// The tile id of this collision mirrored by the flip bits `flip` (1: x, 2: y): its
+    /// [`tile_id`](Self::tile_id) with [`FLIP_X_BIT`] and [`FLIP_Y_BIT`] set as `flip` says;
+    /// `None` for [`Empty`](Self::Empty).
+    #[must_use]
+    pub fn flipped_tile_id(self, flip: u32) -> Option<TileId> {
+        self.tile_id().map(|id| flipped(id, flip))
+    }
+
     /// The built-in shape in a unit cell (`[0, 1]²`, y down); `None` for
     /// [`Empty`](Self::Empty) and the game's tiles.
     pub(super) fn unit_shape(self) -> Option<Result<TileShape, ShapeError>> {
@@ -171,10 +207,10 @@ impl Collision {
     }
 }
 
-/// `unit`, a shape in a unit cell, scaled to a cell of side `size` and mirrored by LDtk's
-/// flip bits `f` (1: x, 2: y). Mirroring keeps each segment's normal pointing the same way
-/// out of the shape.
-pub(super) fn place(unit: &TileShape, size: f32, f: u32) -> Result<TileShape, ShapeError> {
+/// `unit`, a shape in a unit cell, scaled to a cell of `size` and mirrored by LDtk's flip
+/// bits `f` (1: x, 2: y). Mirroring keeps each segment's normal pointing the same way out of
+/// the shape.
+pub(super) fn place(unit: &TileShape, size: Vec2, f: u32) -> Result<TileShape, ShapeError> {
     let mirror = |p: Vec2| {
         Vec2::new(
             if f & 1 != 0 { 1.0 - p.x } else { p.x },
@@ -246,7 +282,7 @@ mod tests {
             Collision::RampDownRight,
         ] {
             let unit = c.unit_shape().unwrap().unwrap();
-            let placed = place(&unit, 16.0, 0).unwrap();
+            let placed = place(&unit, Vec2::splat(16.0), 0).unwrap();
             let ascii = set.shape(c.tile_id().unwrap()).unwrap();
             assert_eq!(placed.segments(), ascii.segments(), "{c:?}");
         }
@@ -255,10 +291,10 @@ mod tests {
     #[test]
     fn a_ramp_mirrored_in_x_is_the_other_ramp_and_normals_stay_outward() {
         let up = Collision::RampUpRight.unit_shape().unwrap().unwrap();
-        let mirrored = place(&up, 8.0, 1).unwrap();
+        let mirrored = place(&up, Vec2::splat(8.0), 1).unwrap();
         let down = place(
             &Collision::RampDownRight.unit_shape().unwrap().unwrap(),
-            8.0,
+            Vec2::splat(8.0),
             0,
         )
         .unwrap();
@@ -283,7 +319,7 @@ mod tests {
         for unit in Collision::BUILT_IN.iter().filter_map(|c| c.unit_shape()) {
             let unit = unit.unwrap();
             for f in 0..4 {
-                let s = place(&unit, 1.0, f).unwrap();
+                let s = place(&unit, Vec2::ONE, f).unwrap();
                 if !s.has_inside() {
                     continue;
                 }
@@ -304,7 +340,7 @@ mod tests {
                 .unit_shape()
                 .unwrap()
                 .unwrap(),
-            16.0,
+            Vec2::splat(16.0),
             0,
         )
         .unwrap();
@@ -313,7 +349,7 @@ mod tests {
                 .unit_shape()
                 .unwrap()
                 .unwrap(),
-            16.0,
+            Vec2::splat(16.0),
             0,
         )
         .unwrap();
@@ -322,5 +358,41 @@ mod tests {
         assert!(!low.contains_point(Vec2::new(15.0, 7.0)));
         assert!(high.contains_point(Vec2::new(1.0, 9.0)));
         assert!(!high.contains_point(Vec2::new(1.0, 7.0)));
+    }
+
+    #[test]
+    fn a_shape_in_a_cell_wider_than_tall_spans_the_cell_and_a_flip_sets_the_ids_bits() {
+        let size = Vec2::new(16.0, 8.0);
+        let ramp = Collision::RampUpRight
+            .shape_in_cell(size, 2, None)
+            .unwrap()
+            .unwrap();
+        // Mirrored in y, the ramp rising to the right hangs from the top: solid near the
+        // top-right corner, open near the bottom-right one.
+        assert!(ramp.contains_point(Vec2::new(15.0, 1.0)));
+        assert!(ramp.contains_point(Vec2::new(8.0, 1.0)));
+        assert!(!ramp.contains_point(Vec2::new(1.0, 1.0)));
+        assert!(!ramp.contains_point(Vec2::new(1.0, 7.0)));
+        let xs: Vec<f32> = ramp
+            .segments()
+            .iter()
+            .flat_map(|s| [s.a.x, s.b.x])
+            .collect();
+        let ys: Vec<f32> = ramp
+            .segments()
+            .iter()
+            .flat_map(|s| [s.a.y, s.b.y])
+            .collect();
+        assert_eq!(xs.iter().copied().fold(f32::MIN, f32::max), 16.0);
+        assert_eq!(ys.iter().copied().fold(f32::MIN, f32::max), 8.0);
+        assert_eq!(
+            Collision::OneWay.flipped_tile_id(1),
+            Some(TileId(4 | FLIP_X_BIT))
+        );
+        assert_eq!(Collision::Empty.flipped_tile_id(3), None);
+        let own = TileShape::polygon(&[Vec2::ZERO, Vec2::X, Vec2::ONE]).unwrap();
+        let game = Collision::Tile(TileId(20));
+        assert!(game.shape_in_cell(size, 0, None).is_none());
+        assert!(game.shape_in_cell(size, 0, Some(&own)).unwrap().is_ok());
     }
 }

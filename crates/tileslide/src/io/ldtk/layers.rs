@@ -433,18 +433,16 @@ impl Placed {
         let size = grid as f32;
         let mut set = TileSet::new(Vec2::splat(size)).map_err(|e| BuildError::Kind(e.into()))?;
         for (&id, &(collision, f)) in &self.ids {
-            let unit = match collision {
-                Collision::Tile(game) => options.tile_shapes.get(&game).cloned().map(Ok),
-                built_in => built_in.unit_shape(),
+            let own = match collision {
+                Collision::Tile(game) => options.tile_shapes.get(&game),
+                _ => None,
             };
-            let Some(unit) = unit else {
+            let Some(shape) = collision.shape_in_cell(Vec2::splat(size), f, own) else {
                 continue;
             };
-            let shape = unit
-                .and_then(|u| collision::place(&u, size, f))
-                .map_err(|source| {
-                    BuildError::Kind(TileSetError::InvalidTile { id, source }.into())
-                })?;
+            let shape = shape.map_err(|source| {
+                BuildError::Kind(TileSetError::InvalidTile { id, source }.into())
+            })?;
             set.insert(id, shape)
                 .map_err(|e| BuildError::Kind(e.into()))?;
         }
