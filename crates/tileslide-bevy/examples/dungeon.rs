@@ -7,8 +7,10 @@
 //!
 //! The left mouse button digs the rock under the cursor, the right one builds it back
 //! (not on an imp); F1 shows or hides the debug lines (active segments, bodies, paths), F2
-//! shows every kind (hidden seams too). The map is edited in place (`CollisionMap::map_mut`): bodies and paths
-//! follow its change journal.
+//! shows every kind (hidden seams too). The dungeon is a bevy_ecs_tilemap layer, drawn by
+//! bevy_ecs_tilemap: digging and building retexture its tiles (floor and rock), and the
+//! layer's `TilemapCollision` keeps the collision map in step, edited in place, so bodies
+//! and paths follow the map's change journal.
 
 // Bevy systems take what they use as parameters, queries as tuples: that is how Bevy code
 // reads.
@@ -16,13 +18,16 @@
 
 mod support;
 
+use bevy::asset::RenderAssetUsages;
 use bevy::prelude::*;
+use bevy::render::render_resource::{Extent3d, TextureDimension, TextureFormat};
 use bevy::window::PrimaryWindow;
-use tileslide::io::ascii;
+use bevy_ecs_tilemap::prelude::*;
+use tileslide::io::ldtk::Collision;
 use tileslide::{Cell, TileMap};
 use tileslide_bevy::{
     Body, CollisionMap, Interpolated, MapUnits, NavAgent, NavGoal, NavStatus, StepCount,
-    TileslidePlugin,
+    TilemapCollision, TileslidePlugin,
 };
 
 const WIDTH: u32 = 44;
@@ -30,40 +35,124 @@ const HEIGHT: u32 = 26;
 const IMPS: usize = 14;
 const RADIUS: f32 = 0.3;
 const SPEED: f32 = 3.5;
+/// The tiles' size in the texture, in pixels; the layer is scaled to one world unit a tile.
+const TILE_PX: u32 = 16;
+/// The layer's textures: floor (no collision) and rock (solid, as every other texture).
+const FLOOR: u32 = 0;
+const ROCK: u32 = 1;
 
 fn main() -> AppExit {
-    let rock = match rock() {
-        Ok(map) => map,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return AppExit::error();
-        }
-    };
     let plugin = TileslidePlugin::default();
     let mut app = support::app("tileslide: digging a dungeon", plugin);
-    app.insert_resource(CollisionMap::new(rock))
+    app.add_plugins(TilemapPlugin)
+        .insert_resource(support::TilesDrawnElsewhere)
         .insert_resource(Dig {
             dug: 0,
             random: 0x2545_f491_4f6c_dd1d,
             script: 0,
         })
-        .add_systems(Startup, setup)
+        .add_systems(Startup, (setup, spawn_rock))
         .add_systems(Update, (dig_and_build, wander, hud));
     app.run()
 }
 
-/// Solid rock with a hall in the middle and a treasure room, walled in, to its right.
-fn rock() -> Result<TileMap, tileslide::io::LoadError> {
-    let mut text = String::new();
+/// Whether the cell at (`col`, `row`), y down, starts open: a hall in the middle and a
+/// treasure room, walled in, to its right.
+fn starts_open(col: u32, row: u32) -> bool {
+    let hall = (8..16).contains(&col) && (9..16).contains(&row);
+    let treasure = (32..38).contains(&col) && (4..9).contains(&row);
+    hall || treasure
+}
+
+/// The dungeon's layer.
+#[derive(Component)]
+struct Rock;
+
+/// The rock as a bevy_ecs_tilemap layer of floor and rock tiles, one world unit a tile, its
+/// top-left corner at the world's origin (where the plugin puts the map's).
+fn spawn_rock(mut commands: Commands, mut images: ResMut<Assets<Image>>) {
+    let size = TilemapSize {
+        x: WIDTH,
+        y: HEIGHT,
+    };
+    let layer = commands.spawn_empty().id();
+    let mut storage = TileStorage::empty(size);
     for row in 0..HEIGHT {
         for col in 0..WIDTH {
-            let hall = (8..16).contains(&col) && (9..16).contains(&row);
-            let treasure = (32..38).contains(&col) && (4..9).contains(&row);
-            text.push(if hall || treasure { '.' } else { '#' });
+            // The layer counts rows up from the bottom.
+            let position = TilePos {
+                x: col,
+                y: HEIGHT - 1 - row,
+            };
+            let texture = if starts_open(col, row) { FLOOR } else { ROCK };
+            let tile = commands
+                .spawn(TileBundle {
+                    position,
+                    tilemap_id: TilemapId(layer),
+                    texture_index: TileTextureIndex(texture),
+                    ..default()
+                })
+                .id();
+            storage.set(&position, tile);
         }
-        text.push('\n');
     }
-    ascii::parse(&text, "dungeon.txt", 1.0)
+    let px = TILE_PX as f32;
+    commands.entity(layer).insert((
+        TilemapBundle {
+            grid_size: TilemapGridSize { x: px, y: px },
+            map_type: TilemapType::Square,
+            size,
+            storage,
+            texture: TilemapTexture::Single(images.add(tile_texture())),
+            tile_size: TilemapTileSize { x: px, y: px },
+            // Tile (0, 0), the bottom-left one, centred half a unit in from the corner.
+            transform: Transform::from_xyz(0.5, 0.5 - HEIGHT as f32, -2.0)
+                .with_scale(Vec3::splat(1.0 / px)),
+            ..default()
+        },
+        TilemapCollision::default().with_texture(FLOOR, Collision::Empty),
+        Rock,
+    ));
+}
+
+/// The two tiles side by side: a dark floor with a faint grid, and rock lit from the top
+/// left.
+fn tile_texture() -> Image {
+    let (w, h) = (2 * TILE_PX, TILE_PX);
+    let mut pixels = Vec::with_capacity((w * h * 4) as usize);
+    for y in 0..h {
+        for x in 0..w {
+            let (tile, tx) = (x / TILE_PX, x % TILE_PX);
+            let edge = |v: u32| v == 0 || v == TILE_PX - 1;
+            let rgb: [u8; 3] = if tile == 0 {
+                if edge(tx) || edge(y) {
+                    [30, 28, 34]
+                } else {
+                    [22, 21, 26]
+                }
+            } else if tx == 0 || y == 0 {
+                [112, 124, 148]
+            } else if tx == TILE_PX - 1 || y == TILE_PX - 1 {
+                [50, 56, 70]
+            } else if (tx * 7 + y * 13) % 11 == 0 {
+                [88, 98, 118]
+            } else {
+                [76, 86, 106]
+            };
+            pixels.extend_from_slice(&[rgb[0], rgb[1], rgb[2], 255]);
+        }
+    }
+    Image::new(
+        Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        },
+        TextureDimension::D2,
+        pixels,
+        TextureFormat::Rgba8UnormSrgb,
+        RenderAssetUsages::default(),
+    )
 }
 
 /// How much has been dug, the imps' random numbers, and the script's last cell.
@@ -125,10 +214,15 @@ fn dig_and_build(
     scripted: Option<Res<support::Screenshotting>>,
     steps: Res<StepCount>,
     units: Res<MapUnits>,
-    mut map: ResMut<CollisionMap>,
+    map: Option<Res<CollisionMap>>,
+    rock: Single<&TileStorage, With<Rock>>,
+    mut textures: Query<&mut TileTextureIndex>,
     mut dig: ResMut<Dig>,
     imps: Query<&Transform, With<Imp>>,
 ) {
+    let Some(tiles) = map.as_ref().and_then(|m| m.map()) else {
+        return;
+    };
     let cells: Vec<Cell> = if scripted.is_some() {
         // A cell every fourth step (however many steps a frame ran): east along row 12,
         // then north along column 30, then east into the treasure room.
@@ -145,61 +239,55 @@ fn dig_and_build(
         let Some(at) = support::cursor_world(&window, &camera) else {
             return;
         };
-        map.map()
-            .and_then(|tiles| tiles.cell_at(units.to_map(at)))
-            .into_iter()
-            .collect()
+        tiles.cell_at(units.to_map(at)).into_iter().collect()
     };
     let digging = scripted.is_some() || buttons.pressed(MouseButton::Left);
     if cells.is_empty() || !digging && !buttons.pressed(MouseButton::Right) {
         return;
     }
-    // Taken mutably only to edit: the map's change journal tells bodies and paths.
-    let Some(tiles) = map.map_mut() else {
-        return;
-    };
     for cell in cells {
-        dig_or_build(tiles, cell, digging, &mut dig, &imps, &units);
-    }
-}
-
-/// Digs out `cell` (`digging`) or builds it back, unless it is the map's border or an imp
-/// stands there.
-fn dig_or_build(
-    tiles: &mut TileMap,
-    cell: Cell,
-    digging: bool,
-    dig: &mut Dig,
-    imps: &Query<&Transform, With<Imp>>,
-    units: &MapUnits,
-) {
-    let border = cell.col == 0 || cell.row == 0 || cell.col + 1 >= WIDTH || cell.row + 1 >= HEIGHT;
-    if border {
-        return;
-    }
-    if digging {
-        if tiles.tile(cell).is_some() && tiles.clear_tile(cell).is_ok() {
-            dig.dug += 1;
+        let border =
+            cell.col == 0 || cell.row == 0 || cell.col + 1 >= WIDTH || cell.row + 1 >= HEIGHT;
+        let position = TilePos {
+            x: cell.col,
+            y: HEIGHT - 1 - cell.row,
+        };
+        let Some(mut texture) = rock
+            .get(&position)
+            .and_then(|tile| textures.get_mut(tile).ok())
+        else {
+            continue;
+        };
+        if border {
+            continue;
         }
-    } else if tiles.tile(cell).is_none() {
-        let rect = tiles.cell_rect(cell).expand(RADIUS);
-        let occupied = imps
-            .iter()
-            .any(|t| rect.contains_point(units.to_map(t.translation.truncate())));
-        if !occupied && tiles.set_tile(cell, Some(ascii::SOLID)).is_ok() {
-            dig.dug = dig.dug.saturating_sub(1);
+        // Only a tile that changes is written: the plugin edits the map for each one.
+        if digging {
+            if texture.0 == ROCK {
+                texture.0 = FLOOR;
+                dig.dug += 1;
+            }
+        } else if texture.0 == FLOOR {
+            let rect = tiles.cell_rect(cell).expand(RADIUS);
+            let occupied = imps
+                .iter()
+                .any(|t| rect.contains_point(units.to_map(t.translation.truncate())));
+            if !occupied {
+                texture.0 = ROCK;
+                dig.dug = dig.dug.saturating_sub(1);
+            }
         }
     }
 }
 
 /// An imp with nowhere to go (arrived, or its goal walled off) heads for a random open cell.
 fn wander(
-    map: Res<CollisionMap>,
+    map: Option<Res<CollisionMap>>,
     units: Res<MapUnits>,
     mut dig: ResMut<Dig>,
     mut imps: Query<&mut NavAgent, With<Imp>>,
 ) {
-    let Some(tiles) = map.map() else {
+    let Some(tiles) = map.as_ref().and_then(|m| m.map()) else {
         return;
     };
     let mut open: Option<Vec<Cell>> = None;

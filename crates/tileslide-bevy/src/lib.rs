@@ -23,6 +23,8 @@
 //!   to the map as temporary segments each step.
 //! - [`HitVolumes`]: attack and vulnerability volumes with hit types and teams.
 //! - [`NavAgent`]: bodies that follow a path or a flow field to a goal.
+//! - [`TilemapCollision`]: with the `ecs_tilemap` feature, a bevy_ecs_tilemap layer as the
+//!   collision map, kept in step with its tiles.
 //! - [`Interpolated`]: shows a body or a character between fixed steps.
 //! - With the `debug` feature, `TileslideDebugPlugin` draws the core's debug lines (active
 //!   segments, normals, hidden seams, temporaries, bodies, contacts, volumes, paths) with
@@ -51,6 +53,8 @@ mod bodies;
 mod character;
 #[cfg(feature = "debug")]
 mod debug;
+#[cfg(feature = "ecs_tilemap")]
+mod ecs_tilemap;
 mod hits;
 mod loader;
 mod map;
@@ -59,6 +63,10 @@ mod nav;
 mod platform;
 mod plugin;
 mod position;
+// Without the `ecs_tilemap` feature nothing reads a layer: the module's logic is still built
+// and tested, free of the renderer the feature brings.
+#[cfg_attr(not(feature = "ecs_tilemap"), allow(dead_code))]
+mod tilemap;
 mod units;
 
 pub use bodies::{Body, BodyLink, ProposedMove, TileslideBodies, Velocity};
@@ -75,6 +83,7 @@ pub use nav::{NavAgent, NavGoal, NavStatus, Navigation};
 pub use platform::{Platform, PlatformLink, PlatformSegment};
 pub use plugin::{StepCount, TileslidePlugin, TileslideSet};
 pub use position::{Interpolated, StepPosition};
+pub use tilemap::TilemapCollision;
 pub use units::MapUnits;
 
 /// The crate's README, its quick start compiled and run as a doctest.

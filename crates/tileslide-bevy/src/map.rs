@@ -141,6 +141,14 @@ impl CollisionMap {
         }
     }
 
+    /// Puts `map`, built from a tile-map layer, in place of any map (an asset's included),
+    /// keeping the tile hit types.
+    pub(crate) fn put_layer_map(&mut self, map: TileMap) {
+        self.map = Some(map);
+        self.source = None;
+        self.generation += 1;
+    }
+
     /// Puts `asset`'s map and tile hit types in place.
     fn replace_with(&mut self, asset: &TileMapAsset) {
         self.map = Some(asset.map.clone());

@@ -176,6 +176,11 @@ impl Plugin for TileslidePlugin {
                     .in_set(TileslideSet::Writeback),
             ),
         );
+        #[cfg(feature = "ecs_tilemap")]
+        app.add_systems(
+            schedule,
+            crate::ecs_tilemap::follow_tilemap_layer.before(TileslideSet::SyncIn),
+        );
         app.add_systems(
             PostUpdate,
             position::interpolate.before(TransformSystems::Propagate),

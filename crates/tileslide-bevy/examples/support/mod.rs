@@ -191,6 +191,11 @@ pub fn cursor_world(
     camera.viewport_to_world_2d(transform, at).ok()
 }
 
+/// Put in an app whose tiles are drawn by something else (a bevy_ecs_tilemap layer): the
+/// map is then not drawn as meshes.
+#[derive(Resource)]
+pub struct TilesDrawnElsewhere;
+
 /// The meshes drawing the map's tiles, and the map generation and revision they show.
 #[derive(Resource, Default)]
 struct MapMeshes {
@@ -208,8 +213,9 @@ fn draw_map(
     mut shown: ResMut<MapMeshes>,
     mut meshes: ResMut<Assets<Mesh>>,
     mut materials: ResMut<Assets<ColorMaterial>>,
+    elsewhere: Option<Res<TilesDrawnElsewhere>>,
 ) {
-    let Some(map) = map else {
+    let Some(map) = map.filter(|_| elsewhere.is_none()) else {
         return;
     };
     let Some(tiles) = map.map() else {
