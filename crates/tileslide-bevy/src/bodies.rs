@@ -3,10 +3,13 @@
 
 use bevy::ecs::entity::EntityHashMap;
 use bevy::prelude::*;
-use tileslide::{BodyDesc, BodyFilter, BodyHandle, BodyShape, Circle, Owner, ResolveConfig};
+use tileslide::{
+    BodyDesc, BodyFilter, BodyHandle, BodyShape, Circle, ContactSource, Owner, ResolveConfig,
+    ResolveTrace, WallSource,
+};
 
 use crate::map::CollisionMap;
-use crate::messages::TileslideError;
+use crate::messages::{BodyContact, TileRef, TileslideError};
 use crate::position::StepPosition;
 use crate::units::MapUnits;
 
@@ -82,6 +85,28 @@ pub struct ProposedMove(pub Vec2);
 /// the game's to keep: the resolver slides the move, it does not change the velocity.
 #[derive(Component, Clone, Copy, Debug, Default, PartialEq)]
 pub struct Velocity(pub Vec2);
+
+/// Asks for a body's contacts: each step, a [`BodyContact`] message and entity event for
+/// each tile, platform or body the resolver stopped or turned it at (a bullet's wall, a
+/// ball's bounce). The resolve of these bodies is traced, which costs a little for each of
+/// them and nothing for the others; their moves are the same either way.
+///
+/// ```
+/// # use bevy::prelude::*;
+/// # use tileslide_bevy::{Body, BodyContact, ReportContacts};
+/// fn spawn(mut commands: Commands) {
+///     commands
+///         .spawn((Body::circle(0.1), ReportContacts, Transform::from_xyz(1.5, -1.5, 0.0)))
+///         .observe(|contact: On<BodyContact>| {
+///             if let Some(tile) = contact.tile {
+///                 println!("hit tile {} in cell {:?}", tile.tile, tile.cell);
+///             }
+///         });
+/// }
+/// # let _ = spawn;
+/// ```
+#[derive(Component, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ReportContacts;
 
 /// Which core body an entity's [`Body`] is (none until the first step takes it).
 #[derive(Component, Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -259,15 +284,67 @@ pub(crate) fn propose_moves(
     }
 }
 
-/// The step of the bodies: resolve every proposed move together, then make them.
-pub(crate) fn step_bodies(map: Res<CollisionMap>, mut set: ResMut<TileslideBodies>) {
+/// The step of the bodies: resolve every proposed move together, then make them; the
+/// resolve traced for the bodies with [`ReportContacts`], whose contacts are then sent.
+pub(crate) fn step_bodies(
+    mut commands: Commands,
+    units: Res<MapUnits>,
+    map: Res<CollisionMap>,
+    mut set: ResMut<TileslideBodies>,
+    reporting: Query<&BodyLink, With<ReportContacts>>,
+    mut out: MessageWriter<BodyContact>,
+) {
     let Some(map) = map.map() else {
         return;
     };
     if set.bodies.is_empty() {
         return;
     }
-    set.report = set.bodies.step(map);
+    if reporting.is_empty() {
+        set.report = set.bodies.step(map);
+        return;
+    }
+    let mut trace = ResolveTrace::of_bodies(reporting.iter().filter_map(BodyLink::handle));
+    set.report = set.bodies.step_traced(map, &mut trace);
+    let entity_of_body = |handle| {
+        set.bodies
+            .get(handle)
+            .ok()
+            .and_then(|b| entity_of(b.owner()))
+    };
+    for story in &trace.bodies {
+        let Some(entity) = entity_of_body(story.handle) else {
+            continue;
+        };
+        for contact in story.passes.iter().filter_map(|p| p.chosen()) {
+            let (tile, platform, other) = match contact.source {
+                ContactSource::Wall(WallSource::Tile { segment, .. }) => (
+                    Some(TileRef {
+                        cell: segment.cell,
+                        tile: segment.tile,
+                    }),
+                    None,
+                    None,
+                ),
+                ContactSource::Wall(WallSource::Temporary { owner, .. }) => {
+                    (None, entity_of(owner), None)
+                }
+                ContactSource::Body { handle, .. } => (None, None, entity_of_body(handle)),
+                // A source a later core may add: reported with what is known.
+                _ => (None, None, None),
+            };
+            let event = BodyContact {
+                entity,
+                tile,
+                platform,
+                other,
+                point: units.to_world(contact.point),
+                normal: units.direction_to_world(contact.normal),
+            };
+            out.write(event);
+            commands.trigger(event);
+        }
+    }
 }
 
 /// Writes each body's position into its `Transform`.

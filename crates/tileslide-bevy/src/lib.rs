@@ -16,7 +16,8 @@
 //!   [`TileMapLoader`] reads from `.txt`, `.tmx`, `.tmj`, `.ldtk` or `.tsm` files (reloaded when the
 //!   file changes, with the `hot_reload` feature).
 //! - [`Body`] with [`ProposedMove`] and [`Velocity`]: circles and compounds, resolved
-//!   together by the core's `Bodies` each step.
+//!   together by the core's `Bodies` each step; with [`ReportContacts`], each contact that
+//!   stopped or turned one is sent as a [`BodyContact`].
 //! - [`CharacterController`] with [`CharacterInput`] and [`CharacterContacts`]: the core's
 //!   platformer character.
 //! - [`Platform`]: segments that move with an entity (moving platforms, doors), submitted
@@ -29,8 +30,9 @@
 //! - With the `debug` feature, `TileslideDebugPlugin` draws the core's debug lines (active
 //!   segments, normals, hidden seams, temporaries, bodies, contacts, volumes, paths) with
 //!   Bevy's gizmos.
-//! - Messages and entity events: [`SurfaceContact`], [`Crushed`], [`Hit`] (each with the
-//!   tile's cell and id where a tile is involved), [`NavArrived`], and [`TileslideError`]
+//! - Messages and entity events: [`SurfaceContact`], [`BodyContact`], [`Crushed`], [`Hit`]
+//!   (each with the tile's cell and id where a tile is involved), [`NavArrived`], and
+//!   [`TileslideError`]
 //!   for components the core refused.
 //!
 //! # Units and axes
@@ -69,7 +71,7 @@ mod position;
 mod tilemap;
 mod units;
 
-pub use bodies::{Body, BodyLink, ProposedMove, TileslideBodies, Velocity};
+pub use bodies::{Body, BodyLink, ProposedMove, ReportContacts, TileslideBodies, Velocity};
 pub use character::{CharacterContacts, CharacterController, CharacterInput};
 #[cfg(feature = "debug")]
 pub use debug::{DebugDraw, TileslideDebugPlugin, color_of};
@@ -77,7 +79,8 @@ pub use hits::{HitLink, HitShape, HitVolume, HitVolumes, TileslideHits};
 pub use loader::{MAX_EXTERNAL_FILES, MapLoadError, TileMapLoader, TileMapSettings};
 pub use map::{CollisionMap, TileMapAsset};
 pub use messages::{
-    Crushed, Hit, NavArrived, Side, SurfaceContact, SurfaceTouch, TileRef, TileslideError,
+    BodyContact, Crushed, Hit, NavArrived, Side, SurfaceContact, SurfaceTouch, TileRef,
+    TileslideError,
 };
 pub use nav::{NavAgent, NavGoal, NavStatus, Navigation};
 pub use platform::{Platform, PlatformLink, PlatformSegment};

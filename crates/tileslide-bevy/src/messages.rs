@@ -55,6 +55,27 @@ pub struct SurfaceContact {
     pub touch: SurfaceTouch,
 }
 
+/// A body with [`ReportContacts`](crate::ReportContacts) met something during a step: a
+/// tile, a moving platform or another body. Sent for each contact the resolver acted on
+/// (the first of each pass of collide and slide: what stopped the body or turned it), in
+/// the order of the passes; a body that moved freely sends none.
+#[derive(Message, EntityEvent, Clone, Copy, Debug, PartialEq)]
+pub struct BodyContact {
+    /// The body.
+    pub entity: Entity,
+    /// The tile met; `None` for a platform or a body.
+    pub tile: Option<TileRef>,
+    /// The moving platform met; `None` otherwise.
+    pub platform: Option<Entity>,
+    /// The other body met; `None` otherwise.
+    pub other: Option<Entity>,
+    /// The point met (world units): on a wall, the point nearest the circle's centre; on
+    /// another body, the point of its circle facing this one's centre.
+    pub point: Vec2,
+    /// The unit contact normal, from what was met towards the body (world axes).
+    pub normal: Vec2,
+}
+
 /// A moving platform pushed a character into the world with no room left: the character is
 /// crushed (it stays on the world's side, overlapping the platform).
 #[derive(Message, EntityEvent, Clone, Copy, Debug, PartialEq)]

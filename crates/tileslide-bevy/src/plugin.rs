@@ -12,7 +12,7 @@ use crate::character;
 use crate::hits::{self, TileslideHits};
 use crate::loader::TileMapLoader;
 use crate::map::{self, TileMapAsset};
-use crate::messages::{Crushed, Hit, NavArrived, SurfaceContact, TileslideError};
+use crate::messages::{BodyContact, Crushed, Hit, NavArrived, SurfaceContact, TileslideError};
 use crate::nav::{self, Navigation};
 use crate::platform;
 use crate::position;
@@ -138,6 +138,7 @@ impl Plugin for TileslidePlugin {
             .init_resource::<TileslideHits>()
             .init_resource::<StepCount>()
             .add_message::<SurfaceContact>()
+            .add_message::<BodyContact>()
             .add_message::<Crushed>()
             .add_message::<Hit>()
             .add_message::<NavArrived>()

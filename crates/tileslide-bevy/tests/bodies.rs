@@ -9,8 +9,8 @@ use bevy::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{Bodies, BodyDesc, BodyShape};
 use tileslide_bevy::{
-    Body, CollisionMap, NavAgent, NavArrived, NavGoal, NavStatus, ProposedMove, TileslideError,
-    TileslidePlugin, TileslideSet,
+    Body, BodyContact, CollisionMap, NavAgent, NavArrived, NavGoal, NavStatus, ProposedMove,
+    ReportContacts, TileRef, TileslideError, TileslidePlugin, TileslideSet, Velocity,
 };
 use tileslide_scenes::{CROWD_RADIUS, dungeon256, scene_crowd};
 
@@ -53,22 +53,34 @@ fn the_crowd_moves_as_the_core_moves_it_bit_for_bit() {
     app.insert_resource(CollisionMap::new(grid.to_tile_map().unwrap()))
         .add_systems(FixedUpdate, propose_crowd.before(TileslideSet::SyncIn));
     support::collect::<TileslideError>(&mut app);
+    support::collect::<BodyContact>(&mut app);
+    // Every tenth body reports its contacts: their resolve is traced, which must change
+    // no move.
     let entities: Vec<Entity> = crowd
         .iter()
-        .map(|b| {
+        .enumerate()
+        .map(|(k, b)| {
             let (p, v) = (b.position, b.velocity);
-            app.world_mut()
-                .spawn((
-                    Body::circle(CROWD_RADIUS),
-                    CrowdMove(Vec2::new(v.x, -v.y)),
-                    Transform::from_xyz(p.x, -p.y, 0.0),
-                ))
-                .id()
+            let mut body = app.world_mut().spawn((
+                Body::circle(CROWD_RADIUS),
+                CrowdMove(Vec2::new(v.x, -v.y)),
+                Transform::from_xyz(p.x, -p.y, 0.0),
+            ));
+            if k % 10 == 0 {
+                body.insert(ReportContacts);
+            }
+            body.id()
         })
         .collect();
 
     support::run_steps(&mut app, STEPS as u64);
     assert!(support::collected::<TileslideError>(&app).is_empty());
+    let contacts = support::collected::<BodyContact>(&app);
+    assert!(contacts.len() > 10, "{} contacts", contacts.len());
+    for contact in &contacts {
+        let k = entities.iter().position(|e| *e == contact.entity).unwrap();
+        assert_eq!(k % 10, 0, "a body without ReportContacts reported");
+    }
     let mut moved = 0;
     for ((entity, handle), start) in entities.iter().zip(&handles).zip(&crowd) {
         let at = app.world().get::<Transform>(*entity).unwrap().translation;
@@ -284,4 +296,90 @@ fn agents_find_their_way_on_a_map_in_pixels_without_a_nav_config() {
     assert!(support::collected::<TileslideError>(&app).is_empty());
     let arrived = support::collected::<NavArrived>(&app);
     assert_eq!(arrived.iter().map(|a| a.entity).collect::<Vec<_>>(), [id]);
+}
+
+/// The contacts of `entity` kept by the observer.
+#[derive(Resource, Default)]
+struct Observed(Vec<BodyContact>);
+
+#[test]
+fn a_body_reporting_contacts_names_the_tile_and_the_body_it_met() {
+    // y down: a wall at column 6; a still body at (2.5, 3.5).
+    let map = ascii::parse(
+        "########\n#.....##\n#.....##\n#.....##\n#.....##\n########",
+        "walls.txt",
+        1.0,
+    )
+    .unwrap();
+    let mut app = support::headless(TileslidePlugin::default());
+    app.insert_resource(CollisionMap::new(map))
+        .init_resource::<Observed>();
+    support::collect::<BodyContact>(&mut app);
+    let world = app.world_mut();
+    // Runs right into the wall (its face at x = 6).
+    let runner = world
+        .spawn((
+            Body::circle(0.4),
+            ReportContacts,
+            Velocity(Vec2::new(120.0, 0.0)),
+            Transform::from_xyz(3.5, -1.5, 0.0),
+        ))
+        .observe(|contact: On<BodyContact>, mut seen: ResMut<Observed>| {
+            seen.0.push(*contact);
+        })
+        .id();
+    // Runs up into the still body above it.
+    let climber = world
+        .spawn((
+            Body::circle(0.4),
+            ReportContacts,
+            Velocity(Vec2::new(0.0, 60.0)),
+            Transform::from_xyz(2.5, -4.5, 0.0),
+        ))
+        .id();
+    let still = world
+        .spawn((Body::circle(0.4), Transform::from_xyz(2.5, -3.2, 0.0)))
+        .id();
+    // Runs into the wall too, but does not ask.
+    world.spawn((
+        Body::circle(0.4),
+        Velocity(Vec2::new(120.0, 0.0)),
+        Transform::from_xyz(3.5, -2.5, 0.0),
+    ));
+    support::run_steps(&mut app, 3);
+
+    let contacts = support::collected::<BodyContact>(&app);
+    let wall: Vec<&BodyContact> = contacts.iter().filter(|c| c.entity == runner).collect();
+    assert!(!wall.is_empty(), "{contacts:?}");
+    for c in &wall {
+        assert_eq!(
+            c.tile,
+            Some(TileRef {
+                cell: tileslide::Cell::new(6, 1),
+                tile: ascii::SOLID,
+            })
+        );
+        assert_eq!((c.platform, c.other), (None, None));
+        assert_eq!(c.normal, Vec2::new(-1.0, 0.0));
+        assert_eq!(c.point.x, 6.0);
+    }
+    assert_eq!(
+        app.world().resource::<Observed>().0,
+        wall.into_iter().copied().collect::<Vec<_>>()
+    );
+    let bump: Vec<&BodyContact> = contacts.iter().filter(|c| c.entity == climber).collect();
+    assert!(!bump.is_empty(), "{contacts:?}");
+    assert!(
+        bump.iter()
+            .all(|c| c.other == Some(still) && c.tile.is_none())
+    );
+    // First head-on, on the line of the centres; then round the still body's side.
+    assert_eq!(bump[0].normal, Vec2::new(0.0, -1.0));
+    assert_eq!(bump[0].point.x, 2.5);
+    assert!((bump[0].point.y - -3.6).abs() < 1e-5, "{bump:?}");
+    assert!(
+        contacts
+            .iter()
+            .all(|c| c.entity == runner || c.entity == climber)
+    );
 }

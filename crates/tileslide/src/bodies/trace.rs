@@ -47,7 +47,8 @@ use crate::tiles::{TileMap, WallSource};
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ResolveTrace {
-    only: Option<BodyHandle>,
+    /// The bodies to trace, sorted; `None` for every body.
+    only: Option<Vec<BodyHandle>>,
     /// The bodies traced, in slot order (the order `resolve` takes them in).
     pub bodies: Vec<BodyTrace>,
 }
@@ -63,7 +64,20 @@ impl ResolveTrace {
     #[must_use]
     pub fn of(handle: BodyHandle) -> Self {
         Self {
-            only: Some(handle),
+            only: Some(vec![handle]),
+            bodies: Vec::new(),
+        }
+    }
+
+    /// A trace of the bodies `handles` alone (what an engine asks for the few bodies whose
+    /// contacts it reports).
+    #[must_use]
+    pub fn of_bodies(handles: impl IntoIterator<Item = BodyHandle>) -> Self {
+        let mut only: Vec<BodyHandle> = handles.into_iter().collect();
+        only.sort_unstable();
+        only.dedup();
+        Self {
+            only: Some(only),
             bodies: Vec::new(),
         }
     }
@@ -75,7 +89,9 @@ impl ResolveTrace {
     }
 
     fn wants(&self, handle: BodyHandle) -> bool {
-        self.only.is_none_or(|only| only == handle)
+        self.only
+            .as_ref()
+            .is_none_or(|only| only.binary_search(&handle).is_ok())
     }
 }
 
