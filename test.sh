@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every test of tileslide: the Rust workspace's (with the CLI's peer benchmarks, the core
-# crate's serde round trips, and the Bevy plugin's debug drawing and hot reload), then the web package's (web/: built from
+# crate's serde round trips, and the Bevy plugin's debug drawing and hot reload), the C
+# API's in C (examples/c), then the web package's (web/: built from
 # crates/tileslide-wasm, tested in Node) and the playground's (web/playground, built with
 # Vite and played in headless Chromium). Installs what the web build lacks (the wasm32
 # target, wasm-bindgen-cli, see web/build.sh; the npm packages of web/package-lock.json).
@@ -15,6 +16,9 @@ fi
 
 status=0
 cargo test --workspace --no-fail-fast --features tileslide-cli/peers,tileslide/serde,tileslide-bevy/debug,tileslide-bevy/hot_reload || status=1
+# The C API's tests and example in C, under AddressSanitizer and UndefinedBehaviorSanitizer
+# (the system's C compiler and make; examples/c/Makefile builds the static library first).
+make -C examples/c test || status=1
 if ! command -v node >/dev/null 2>&1; then
     echo "error: the web tests need Node.js 20.19 or later (node)" >&2
     exit 1

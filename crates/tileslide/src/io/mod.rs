@@ -1,6 +1,7 @@
 //! Loaders. Each returns a [`LoadError`] naming the file, the position (line:column or byte
 //! offset) and the cause; none panics or allocates from an unchecked size field.
 
+mod any;
 pub mod ascii;
 pub mod baked;
 #[cfg(feature = "png")]
@@ -19,6 +20,7 @@ mod replica_objects;
 pub mod tiled;
 mod tiled_faults;
 
+pub use any::load_file;
 pub use baked::BakedFault;
 pub use error::{LoadError, LoadErrorKind, Location, ParserError};
 #[cfg(feature = "ldtk")]

@@ -1,0 +1,128 @@
+/* The C API's tests, in C: built with AddressSanitizer and UndefinedBehaviorSanitizer by
+ * `make -C examples/c test`, run from examples/c. Each check prints what failed; the exit
+ * status counts the failures. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "tileslide.h"
+
+static int failures = 0;
+
+#define CHECK(cond)                                                           \
+    do {                                                                      \
+        if (!(cond)) {                                                        \
+            fprintf(stderr, "%s:%d: failed: %s\n", __FILE__, __LINE__, #cond); \
+            failures++;                                                       \
+        }                                                                     \
+    } while (0)
+
+static int contains(const char *text, const char *words) { return strstr(text, words) != NULL; }
+
+/* rays.csv's first ray against cave.txt: left into a wall's right face at (8, 12.5). */
+static void a_ray_hits_the_wall_the_cli_names(void) {
+    ts_map *map = NULL;
+    CHECK(ts_map_load_file("../maps/cave.txt", NULL, &map) == TS_OK);
+    if (!map) return;
+    ts_ray_hit hit;
+    CHECK(ts_map_cast_ray(map, 12.0f, 12.5f, 4.0f, 12.5f, 0, &hit));
+    CHECK(hit.x == 8.0f && hit.y == 12.5f);
+    CHECK(hit.nx == 1.0f && hit.ny == 0.0f);
+    CHECK(hit.col == 7 && hit.row == 12 && hit.tile != TS_NONE);
+    CHECK(hit.t == 0.5f);
+    /* From inside the wall out, only with both sides. */
+    CHECK(!ts_map_cast_ray(map, 7.5f, 12.5f, 12.0f, 12.5f, 0, &hit));
+    CHECK(ts_map_cast_ray(map, 7.5f, 12.5f, 12.0f, 12.5f, TS_RAY_BOTH_SIDES, &hit));
+    ts_map_free(map);
+}
+
+/* Every format the CLI reads (but Replica Island's, whose files are not in the repository). */
+static void every_format_loads(void) {
+    const char *files[] = {"../maps/cave.txt", "../maps/cave.tmx", "../maps/cave.tmj",
+                           "../maps/dungeon.tmj", "../maps/ldtk/dungeon.ldtk",
+                           "../maps/ldtk/platformer.ldtk"};
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        ts_map *map = NULL;
+        ts_status status = ts_map_load_file(files[i], NULL, &map);
+        if (status != TS_OK) fprintf(stderr, "%s: %s\n", files[i], ts_last_error_message());
+        CHECK(status == TS_OK && map != NULL);
+        uint32_t w = 0, h = 0;
+        CHECK(ts_map_size(map, &w, &h, NULL, NULL) == TS_OK && w > 0 && h > 0);
+        ts_map_free(map);
+    }
+}
+
+static void a_batch_agrees_with_single_rays_and_misses_are_nan(void) {
+    ts_map *map = NULL;
+    CHECK(ts_map_from_ascii("#####\n#...#\n#...#\n#####", 2.0f, &map) == TS_OK);
+    if (!map) return;
+    enum { N = 5000 };
+    static float rays[4 * N];
+    static ts_ray_hit hits[N];
+    for (int k = 0; k < N; k++) {
+        float a = (float)k * 0.0123f;
+        rays[4 * k + 0] = 5.0f;
+        rays[4 * k + 1] = 4.0f;
+        /* Every tenth ray is too short to reach a wall. */
+        float reach = k % 10 == 0 ? 0.5f : 20.0f;
+        rays[4 * k + 2] = 5.0f + cosf(a) * reach;
+        rays[4 * k + 3] = 4.0f + sinf(a) * reach;
+    }
+    CHECK(ts_map_cast_rays(map, rays, N, 0, hits) == TS_OK);
+    int agree = 0;
+    for (int k = 0; k < N; k++) {
+        ts_ray_hit one;
+        bool found = ts_map_cast_ray(map, rays[4 * k], rays[4 * k + 1], rays[4 * k + 2],
+                                     rays[4 * k + 3], 0, &one);
+        if (k % 10 == 0) {
+            agree += !found && isnan(hits[k].t) && hits[k].tile == TS_NONE;
+        } else {
+            agree += found && memcmp(&one, &hits[k], sizeof one) == 0;
+        }
+    }
+    CHECK(agree == N);
+    ts_map_free(map);
+}
+
+static void bad_input_gets_a_status_and_a_message(void) {
+    ts_map *map = NULL;
+    CHECK(ts_map_load_file("../maps/nowhere.tmx", NULL, &map) == TS_ERROR_NOT_FOUND);
+    CHECK(map == NULL);
+    CHECK(contains(ts_last_error_message(), "nowhere.tmx"));
+    CHECK(ts_map_load_file(NULL, NULL, &map) == TS_ERROR_NULL_POINTER);
+    CHECK(contains(ts_last_error_message(), "path is a null pointer"));
+    CHECK(ts_map_load_file("../maps/tiles.png", NULL, &map) == TS_ERROR_INVALID_ARGUMENT);
+    CHECK(contains(ts_last_error_message(), "unknown map format"));
+    CHECK(ts_map_from_ascii("###\n#?#\n###", 1.0f, &map) == TS_ERROR_LOAD);
+    CHECK(contains(ts_last_error_message(), ":2:2"));
+    CHECK(ts_map_from_ascii("###", NAN, &map) == TS_ERROR_INVALID_ARGUMENT);
+
+    CHECK(ts_map_from_ascii("####\n#..#\n####", 1.0f, &map) == TS_OK);
+    ts_ray_hit hit;
+    CHECK(!ts_map_cast_ray(map, NAN, 1.5f, 3.0f, 1.5f, 0, &hit));
+    CHECK(contains(ts_last_error_message(), "not finite"));
+    CHECK(!ts_map_cast_ray(NULL, 1.5f, 1.5f, 3.0f, 1.5f, 0, &hit));
+    CHECK(!ts_map_cast_ray(map, 1.5f, 1.5f, 3.0f, 1.5f, 0x80, &hit));
+    CHECK(contains(ts_last_error_message(), "flags 0x80"));
+    float rays[8] = {1.5f, 1.5f, 3.0f, 1.5f, 1.5f, 1.5f, INFINITY, 1.5f};
+    ts_ray_hit hits[2];
+    CHECK(ts_map_cast_rays(map, rays, 2, 0, hits) == TS_ERROR_INVALID_ARGUMENT);
+    CHECK(contains(ts_last_error_message(), "ray 1"));
+    CHECK(ts_map_cast_rays(map, NULL, 2, 0, hits) == TS_ERROR_NULL_POINTER);
+    CHECK(ts_map_cast_rays(map, NULL, 0, 0, NULL) == TS_OK);
+    ts_map_free(map);
+    ts_map_free(NULL);
+}
+
+int main(void) {
+    a_ray_hits_the_wall_the_cli_names();
+    every_format_loads();
+    a_batch_agrees_with_single_rays_and_misses_are_nan();
+    bad_input_gets_a_status_and_a_message();
+    if (failures) {
+        fprintf(stderr, "%d checks failed\n", failures);
+        return 1;
+    }
+    printf("test_capi: every check passed\n");
+    return 0;
+}
