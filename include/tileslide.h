@@ -31,7 +31,12 @@ typedef enum {
   TS_ERROR_LOAD = 5,
   // tileslide panicked: a bug, reported rather than carried across the boundary.
   TS_ERROR_PANIC = 6,
+  // A body id whose body was removed (or that never named one).
+  TS_ERROR_STALE_HANDLE = 7,
 } ts_status;
+
+// A set of bodies (opaque): made by `ts_bodies_create`, freed by `ts_bodies_free`.
+typedef struct ts_bodies ts_bodies;
 
 // A collision map (opaque): made by `ts_map_load_file` or `ts_map_from_ascii`, freed by
 // `ts_map_free`.
@@ -58,6 +63,55 @@ typedef struct {
   // The id of the tile hit.
   uint32_t tile;
 } ts_ray_hit;
+
+// One circle of a compound body: its centre's offset from the body's position, and its
+// radius.
+typedef struct {
+  // The centre's offset, x.
+  float x;
+  // The centre's offset, y.
+  float y;
+  // The radius (positive).
+  float radius;
+} ts_circle;
+
+// What a body is: start from `ts_default_body_def()` and set what differs.
+typedef struct {
+  // The position, x.
+  float x;
+  // The position, y.
+  float y;
+  // The radius of a circle centred on the position (when `circle_count` is 0).
+  float radius;
+  // A compound's circles (`circle_count` of them), or null for one circle of `radius`.
+  const ts_circle *circles;
+  // How many circles `circles` holds.
+  size_t circle_count;
+  // The groups the body belongs to (bits).
+  uint32_t groups;
+  // The groups it collides with (bits).
+  uint32_t collides_with;
+} ts_body_def;
+
+// A body's id, passed by value. Once its body is removed the id is stale for good: calls
+// with it return `TS_ERROR_STALE_HANDLE`, even after its slot is given to another body.
+typedef struct {
+  // The body's slot (bodies are resolved in slot order).
+  uint32_t index;
+  // How many bodies had the slot before this one.
+  uint32_t generation;
+} ts_body_id;
+
+// What a step did.
+typedef struct {
+  // Bodies with a move to make.
+  size_t moving;
+  // Contacts met (each sweep stopped at something counts once).
+  size_t contacts;
+  // Bodies whose move was still blocked after the last pass, and cut at its first
+  // contact.
+  size_t cut_short;
+} ts_step_report;
 
 #ifdef __cplusplus
 extern "C" {
@@ -133,6 +187,91 @@ ts_status ts_map_cast_rays(const ts_map *map,
                            size_t n,
                            uint32_t flags,
                            ts_ray_hit *out);
+
+// A body definition's defaults: at (0, 0), one circle of radius 0.5, in group 1,
+// colliding with every group.
+ts_body_def ts_default_body_def(void);
+
+// Makes an empty set of bodies with the resolver's default settings. On `TS_OK`, `*out` is
+// the set, for `ts_bodies_free`.
+//
+// # Safety
+// `out` points to a writable `ts_bodies*`.
+ts_status ts_bodies_create(ts_bodies **out);
+
+// Frees a set of bodies (null is ignored); their ids are meaningless afterwards.
+//
+// # Safety
+// `bodies` is null or a set from this library not yet freed.
+void ts_bodies_free(ts_bodies *bodies);
+
+// Adds a body as `def` says. On `TS_OK`, `*out` is its id. A radius that is not positive,
+// a position or offset that is not finite or beyond the coordinate range, and a compound
+// with `circle_count` circles but a null `circles` are refused.
+//
+// # Safety
+// `bodies` is a live set; `def` points to a definition whose `circles` holds
+// `circle_count` circles (or is null); `out` points to a writable `ts_body_id`.
+ts_status ts_bodies_add(ts_bodies *bodies, const ts_body_def *def, ts_body_id *out);
+
+// Removes a body; its id is stale from now on.
+//
+// # Safety
+// `bodies` is a live set.
+ts_status ts_bodies_remove(ts_bodies *bodies, ts_body_id id);
+
+// The number of bodies in the set (0 for null).
+//
+// # Safety
+// `bodies` is null or a live set.
+size_t ts_bodies_count(const ts_bodies *bodies);
+
+// Proposes the move (`dx`, `dy`) for the next step (replacing one proposed before).
+//
+// # Safety
+// `bodies` is a live set.
+ts_status ts_bodies_propose(ts_bodies *bodies, ts_body_id id, float dx, float dy);
+
+// Proposes `moves[2k]`, `moves[2k + 1]` for `ids[k]`, in order. On a failure the entries
+// before the one named in the message are proposed, the rest are not.
+//
+// # Safety
+// `bodies` is a live set; `ids` holds `n` ids and `moves` `2 n` floats (either may be null
+// when `n` is 0).
+ts_status ts_bodies_propose_many(ts_bodies *bodies,
+                                 const ts_body_id *ids,
+                                 const float *moves,
+                                 size_t n);
+
+// Moves a body to (`x`, `y`) at once (a teleport: no sweep), dropping its proposed move.
+//
+// # Safety
+// `bodies` is a live set.
+ts_status ts_bodies_set_position(ts_bodies *bodies, ts_body_id id, float x, float y);
+
+// One step: every proposed move resolved together against `map` and each other (no
+// overlap, no tunnelling), then made. `report` may be null.
+//
+// # Safety
+// `bodies` is a live set, `map` a live map; `report` is null or writable.
+ts_status ts_bodies_step(ts_bodies *bodies, const ts_map *map, ts_step_report *report);
+
+// A body's position, into `*x` and `*y`.
+//
+// # Safety
+// `bodies` is a live set; `x` and `y` are writable.
+ts_status ts_bodies_position(const ts_bodies *bodies, ts_body_id id, float *x, float *y);
+
+// The positions of `ids`: `out_xy[2k]`, `out_xy[2k + 1]` for `ids[k]`. Every id is checked
+// first: a stale one fails the call, names its entry, and leaves `out_xy` as it was.
+//
+// # Safety
+// `bodies` is a live set; `ids` holds `n` ids and `out_xy` room for `2 n` floats (either
+// may be null when `n` is 0).
+ts_status ts_bodies_positions(const ts_bodies *bodies,
+                              const ts_body_id *ids,
+                              size_t n,
+                              float *out_xy);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -114,11 +114,56 @@ static void bad_input_gets_a_status_and_a_message(void) {
     ts_map_free(NULL);
 }
 
+/* Two bodies pushed into each other in a room: they meet and stop touching, not overlapping;
+ * a removed body's id is stale. */
+static void bodies_meet_without_overlap_and_removed_ids_go_stale(void) {
+    ts_map *map = NULL;
+    CHECK(ts_map_from_ascii("##########\n#........#\n#........#\n##########", 1.0f, &map) == TS_OK);
+    ts_bodies *bodies = NULL;
+    CHECK(ts_bodies_create(&bodies) == TS_OK);
+    if (!map || !bodies) return;
+    ts_body_def def = ts_default_body_def();
+    def.radius = 0.4f;
+    def.y = 1.5f;
+    ts_body_id a, b;
+    def.x = 2.0f;
+    CHECK(ts_bodies_add(bodies, &def, &a) == TS_OK);
+    def.x = 8.0f;
+    CHECK(ts_bodies_add(bodies, &def, &b) == TS_OK);
+    /* Head-on, they turn opposite ways and slide round each other: never closer than
+     * their radii. */
+    float xy[4], closest = INFINITY;
+    ts_body_id ids[2] = {a, b};
+    for (int step = 0; step < 30; step++) {
+        CHECK(ts_bodies_propose(bodies, a, 0.3f, 0.0f) == TS_OK);
+        CHECK(ts_bodies_propose(bodies, b, -0.3f, 0.0f) == TS_OK);
+        CHECK(ts_bodies_step(bodies, map, NULL) == TS_OK);
+        CHECK(ts_bodies_positions(bodies, ids, 2, xy) == TS_OK);
+        float d = hypotf(xy[2] - xy[0], xy[3] - xy[1]);
+        if (d < closest) closest = d;
+    }
+    CHECK(closest >= 0.8f - 1e-4f && closest < 0.81f);
+    CHECK(xy[0] > xy[2]); /* past each other */
+    CHECK(ts_bodies_count(bodies) == 2);
+    CHECK(ts_bodies_remove(bodies, a) == TS_OK);
+    CHECK(ts_bodies_propose(bodies, a, 0.1f, 0.0f) == TS_ERROR_STALE_HANDLE);
+    CHECK(contains(ts_last_error_message(), "stale body handle"));
+    CHECK(ts_bodies_positions(bodies, ids, 2, xy) == TS_ERROR_STALE_HANDLE);
+    CHECK(contains(ts_last_error_message(), "entry 0"));
+    def.radius = NAN;
+    CHECK(ts_bodies_add(bodies, &def, &a) == TS_ERROR_INVALID_ARGUMENT);
+    CHECK(ts_bodies_propose(bodies, b, INFINITY, 0.0f) == TS_ERROR_INVALID_ARGUMENT);
+    CHECK(ts_bodies_step(bodies, NULL, NULL) == TS_ERROR_NULL_POINTER);
+    ts_bodies_free(bodies);
+    ts_map_free(map);
+}
+
 int main(void) {
     a_ray_hits_the_wall_the_cli_names();
     every_format_loads();
     a_batch_agrees_with_single_rays_and_misses_are_nan();
     bad_input_gets_a_status_and_a_message();
+    bodies_meet_without_overlap_and_removed_ids_go_stale();
     if (failures) {
         fprintf(stderr, "%d checks failed\n", failures);
         return 1;

@@ -1,4 +1,5 @@
-//! tileslide's C API, in the manner of Box2D v3's: opaque handles, a status on every fallible
+//! tileslide's C API (maps, ray casts, bodies), in the manner of Box2D v3's: opaque handles,
+//! ids passed by value, definition structs with defaults, a status on every fallible
 //! call, the reason in `ts_last_error_message()` (per thread), caller-supplied buffers for
 //! batches. No panic crosses the boundary: each call runs under `catch_unwind` and a panic
 //! becomes `TS_ERROR_PANIC`. Null pointers and coordinates that are not finite are refused
@@ -18,6 +19,9 @@ use std::ffi::{CStr, CString, c_char};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
+mod bodies;
+
+pub use bodies::*;
 use tileslide::io::{LoadErrorKind, ascii};
 use tileslide::{Faces, QueryFilter, Ray, RayHit, TileMap, Vec2};
 
@@ -41,6 +45,8 @@ pub enum ts_status {
     TS_ERROR_LOAD = 5,
     /// tileslide panicked: a bug, reported rather than carried across the boundary.
     TS_ERROR_PANIC = 6,
+    /// A body id whose body was removed (or that never named one).
+    TS_ERROR_STALE_HANDLE = 7,
 }
 
 /// A collision map (opaque): made by `ts_map_load_file` or `ts_map_from_ascii`, freed by
@@ -103,23 +109,23 @@ fn set_error(message: &str) {
 }
 
 /// A failure: its status and its message.
-struct Failure(ts_status, String);
+pub(crate) struct Failure(pub(crate) ts_status, pub(crate) String);
 
 impl Failure {
-    fn null(what: &str) -> Self {
+    pub(crate) fn null(what: &str) -> Self {
         Failure(
             ts_status::TS_ERROR_NULL_POINTER,
             format!("{what} is a null pointer"),
         )
     }
 
-    fn invalid(why: String) -> Self {
+    pub(crate) fn invalid(why: String) -> Self {
         Failure(ts_status::TS_ERROR_INVALID_ARGUMENT, why)
     }
 }
 
 /// Runs `body` with panics caught: its status, with the message kept on failure.
-fn guarded(name: &str, body: impl FnOnce() -> Result<(), Failure>) -> ts_status {
+pub(crate) fn guarded(name: &str, body: impl FnOnce() -> Result<(), Failure>) -> ts_status {
     match catch_unwind(AssertUnwindSafe(body)) {
         Ok(Ok(())) => ts_status::TS_OK,
         Ok(Err(Failure(status, message))) => {
@@ -153,7 +159,7 @@ unsafe fn text<'a>(ptr: *const c_char, what: &str) -> Result<&'a str, Failure> {
 ///
 /// # Safety
 /// `map` is null or a live map from this library.
-unsafe fn map_ref<'a>(map: *const ts_map) -> Result<&'a TileMap, Failure> {
+pub(crate) unsafe fn map_ref<'a>(map: *const ts_map) -> Result<&'a TileMap, Failure> {
     // SAFETY: null or a live map, as the caller promises.
     unsafe { map.as_ref() }
         .map(|m| &m.map)

@@ -231,17 +231,7 @@ fn the_rays_scene_through_c_is_the_rust_batch_bit_for_bit() {
     let grid = dungeon256();
     let rust_map = grid.to_tile_map().unwrap();
     // The same map through C: dungeon256 as ASCII text, unit cells.
-    let mut text = String::new();
-    for y in 0..grid.height {
-        for x in 0..grid.width {
-            text.push(if grid.solid[y * grid.width + x] {
-                '#'
-            } else {
-                '.'
-            });
-        }
-        text.push('\n');
-    }
+    let text = grid.to_ascii();
     let ascii = c(&text);
     let mut map = ptr::null_mut();
     // SAFETY: a valid string and out pointer.

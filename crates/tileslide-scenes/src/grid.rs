@@ -54,6 +54,25 @@ impl SolidGrid {
         }
     }
 
+    /// The grid as an ASCII map (`#` solid, `.` empty, a line a row, row 0 first), the text
+    /// [`from_rows`](Self::from_rows) and tileslide's ASCII loader read: how a binding that
+    /// takes maps as text gets the standard scenes.
+    ///
+    /// ```
+    /// # use tileslide_scenes::SolidGrid;
+    /// let grid = SolidGrid::from_rows(&["###", "#.#"]);
+    /// assert_eq!(grid.to_ascii(), "###\n#.#\n");
+    /// ```
+    #[must_use]
+    pub fn to_ascii(&self) -> String {
+        let mut text = String::with_capacity((self.width + 1) * self.height);
+        for row in self.solid.chunks(self.width.max(1)).take(self.height) {
+            text.extend(row.iter().map(|&s| if s { '#' } else { '.' }));
+            text.push('\n');
+        }
+        text
+    }
+
     /// Whether cell `(x, y)` is solid; cells outside the grid are empty (`false`).
     #[must_use]
     pub fn is_solid(&self, x: i64, y: i64) -> bool {
