@@ -1,0 +1,25 @@
+//! tileslide for Python: the extension module `tileslide`, built by maturin
+//! (`pyproject.toml`). Maps and their ray casts (one at a time, or a NumPy batch without a
+//! Python loop), bodies (positions and proposed moves as NumPy arrays), with errors as
+//! Python's own exceptions and `tileslide.LoadError` for a map that does not load. The
+//! stubs editors read are `tileslide.pyi`; the tests are `tests/` (pytest).
+
+use pyo3::prelude::*;
+
+mod bodies;
+mod errors;
+mod map;
+
+/// The module: its classes, its exception and its version.
+#[pymodule]
+#[pyo3(name = "tileslide")]
+fn tileslide_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add("LoadError", m.py().get_type::<errors::LoadError>())?;
+    m.add_class::<map::TileMap>()?;
+    m.add_class::<map::RayHit>()?;
+    m.add_class::<bodies::Bodies>()?;
+    m.add_class::<bodies::BodyId>()?;
+    m.add_class::<bodies::StepReport>()?;
+    Ok(())
+}

@@ -1,0 +1,229 @@
+//! `TileMap` and `RayHit`: a collision map loaded from a file or ASCII text, and its ray
+//! casts, one at a time or a NumPy batch.
+
+use std::path::PathBuf;
+
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use tileslide::io::ascii;
+use tileslide::{Faces, QueryFilter, Ray, Vec2};
+
+use crate::errors::{finite, load_error};
+
+/// Rays cast a chunk at a time, so the batch's own buffers stay small whatever its size.
+const CHUNK: usize = 4096;
+
+/// A collision map: tiles on a grid, each a set of solid segments with seams culled.
+#[pyclass(module = "tileslide", frozen)]
+pub struct TileMap {
+    pub(crate) map: tileslide::TileMap,
+}
+
+/// The first face a ray hit.
+#[pyclass(module = "tileslide", frozen, get_all)]
+#[derive(Clone, Debug)]
+pub struct RayHit {
+    /// Fraction of the way from the start to the end, in [0, 1].
+    t: f32,
+    /// The point hit.
+    x: f32,
+    y: f32,
+    /// The face's outward unit normal.
+    nx: f32,
+    ny: f32,
+    /// The tile's cell `(col, row)`, or None for a face that is not a tile's.
+    cell: Option<(u32, u32)>,
+    /// The tile's id, or None.
+    tile: Option<u32>,
+}
+
+#[pymethods]
+impl RayHit {
+    fn __repr__(&self) -> String {
+        let cell = self
+            .cell
+            .map_or_else(|| "None".to_owned(), |(c, r)| format!("({c}, {r})"));
+        let tile = self
+            .tile
+            .map_or_else(|| "None".to_owned(), |t| t.to_string());
+        format!(
+            "RayHit(t={}, x={}, y={}, nx={}, ny={}, cell={cell}, tile={tile})",
+            self.t, self.x, self.y, self.nx, self.ny
+        )
+    }
+}
+
+fn filter(both_sides: bool) -> QueryFilter {
+    let mut filter = QueryFilter::default();
+    if both_sides {
+        filter.faces = Faces::Both;
+    }
+    filter
+}
+
+fn hit_of(hit: &tileslide::RayHit) -> RayHit {
+    RayHit {
+        t: hit.t,
+        x: hit.point.x,
+        y: hit.point.y,
+        nx: hit.normal.x,
+        ny: hit.normal.y,
+        cell: hit.cell().map(|c| (c.col, c.row)),
+        tile: hit.tile().map(|t| t.0),
+    }
+}
+
+#[pymethods]
+impl TileMap {
+    /// Loads the map at `path`, its format told by its extension (`.txt` ASCII, `.tmx`,
+    /// `.tmj`, `.json` Tiled, `.ldtk` LDtk, `.tsm` baked, `.bin` Replica Island with
+    /// `tileset`, its `collision.bin`).
+    #[staticmethod]
+    #[pyo3(signature = (path, tileset = None))]
+    fn from_file(py: Python<'_>, path: PathBuf, tileset: Option<PathBuf>) -> PyResult<Self> {
+        let map =
+            tileslide::io::load_file(&path, tileset.as_deref()).map_err(|e| load_error(py, &e))?;
+        Ok(TileMap { map })
+    }
+
+    /// Builds a map from ASCII text (`#` solid, `.` empty, `/` `\` ramps, `-` one-way; rows
+    /// top to bottom) with square cells of side `cell`.
+    #[staticmethod]
+    #[pyo3(signature = (text, cell = 1.0))]
+    fn from_ascii(py: Python<'_>, text: &str, cell: f32) -> PyResult<Self> {
+        if !(cell.is_finite() && cell > 0.0) {
+            return Err(PyValueError::new_err(format!(
+                "cell is {cell}: it must be a finite positive number"
+            )));
+        }
+        let map = ascii::parse(text, "<ascii>", cell).map_err(|e| load_error(py, &e))?;
+        Ok(TileMap { map })
+    }
+
+    /// Saves the map as a baked map (`.tsm`): the segments seam-culled once, loaded back
+    /// without a tile set by `TileMap.from_file`.
+    fn save(&self, path: PathBuf) -> PyResult<()> {
+        // An OSError subclass by the error's kind: FileNotFoundError for a missing folder.
+        tileslide::io::baked::save(&self.map, &path).map_err(|e| {
+            PyErr::from(std::io::Error::new(
+                e.kind(),
+                format!("{}: {e}", path.display()),
+            ))
+        })
+    }
+
+    /// The map's width in cells.
+    #[getter]
+    fn width(&self) -> u32 {
+        self.map.width()
+    }
+
+    /// The map's height in cells.
+    #[getter]
+    fn height(&self) -> u32 {
+        self.map.height()
+    }
+
+    /// A cell's size `(width, height)`.
+    #[getter]
+    fn cell_size(&self) -> (f32, f32) {
+        let c = self.map.cell_size();
+        (c.x, c.y)
+    }
+
+    /// The first face the ray from (`x0`, `y0`) to (`x1`, `y1`) hits, or None. By default
+    /// only faces the ray meets head-on count; `both_sides` counts back faces too.
+    #[pyo3(signature = (x0, y0, x1, y1, both_sides = false))]
+    fn cast_ray(
+        &self,
+        x0: f32,
+        y0: f32,
+        x1: f32,
+        y1: f32,
+        both_sides: bool,
+    ) -> PyResult<Option<RayHit>> {
+        let start = Vec2::new(finite("x0", x0)?, finite("y0", y0)?);
+        let end = Vec2::new(finite("x1", x1)?, finite("y1", y1)?);
+        let ray = Ray::between(start, end);
+        if !ray.is_finite() {
+            return Err(PyValueError::new_err(format!(
+                "the ray ({x0}, {y0}) to ({x1}, {y1}) is too long to cast"
+            )));
+        }
+        Ok(self
+            .map
+            .cast_ray(ray, &filter(both_sides))
+            .map(|h| hit_of(&h)))
+    }
+
+    /// Casts a batch of rays: `rays` is a `float32` array of shape `(N, 4)`, each row
+    /// `x0, y0, x1, y1`. Returns a `float32` array of shape `(N, 5)`, each row
+    /// `t, x, y, nx, ny` of the ray's first hit, every value NaN for a miss.
+    #[pyo3(signature = (rays, both_sides = false))]
+    fn cast_rays<'py>(
+        &self,
+        py: Python<'py>,
+        rays: PyReadonlyArray2<'py, f32>,
+        both_sides: bool,
+    ) -> PyResult<Bound<'py, PyArray2<f32>>> {
+        let shape = rays.shape();
+        if shape[1] != 4 {
+            return Err(PyValueError::new_err(format!(
+                "rays has shape ({}, {}): it must be (N, 4), rows x0, y0, x1, y1",
+                shape[0], shape[1]
+            )));
+        }
+        let n = shape[0];
+        // A C-contiguous array is read in place; any other layout is copied once.
+        let copied;
+        // (`as_slice` also takes a Fortran-ordered array, whose memory is column by column.)
+        let input: &[f32] = if let (true, Ok(slice)) = (rays.is_c_contiguous(), rays.as_slice()) {
+            slice
+        } else {
+            copied = rays.as_array().iter().copied().collect::<Vec<f32>>();
+            &copied
+        };
+        if let Some(k) = input.iter().position(|v| !v.is_finite()) {
+            let r = &input[k / 4 * 4..k / 4 * 4 + 4];
+            return Err(PyValueError::new_err(format!(
+                "rays[{}] = ({}, {}, {}, {}) is not finite",
+                k / 4,
+                r[0],
+                r[1],
+                r[2],
+                r[3]
+            )));
+        }
+        let filter = filter(both_sides);
+        let mut out = vec![f32::NAN; n * 5];
+        let mut batch = Vec::with_capacity(CHUNK.min(n));
+        let mut hits = Vec::with_capacity(CHUNK.min(n));
+        for (coords, rows) in input.chunks(CHUNK * 4).zip(out.chunks_mut(CHUNK * 5)) {
+            batch.clear();
+            batch.extend(
+                coords
+                    .chunks_exact(4)
+                    .map(|r| Ray::between(Vec2::new(r[0], r[1]), Vec2::new(r[2], r[3]))),
+            );
+            self.map.cast_rays_into(&batch, &filter, &mut hits);
+            for (row, hit) in rows.chunks_exact_mut(5).zip(&hits) {
+                if let Some(h) = hit {
+                    row.copy_from_slice(&[h.t, h.point.x, h.point.y, h.normal.x, h.normal.y]);
+                }
+            }
+        }
+        PyArray1::from_vec(py, out).reshape([n, 5])
+    }
+
+    fn __repr__(&self) -> String {
+        let c = self.map.cell_size();
+        format!(
+            "TileMap(width={}, height={}, cell_size=({}, {}))",
+            self.map.width(),
+            self.map.height(),
+            c.x,
+            c.y
+        )
+    }
+}

@@ -1,0 +1,61 @@
+"""Shared fixtures: the standard scenes and the Rust core's answers on them.
+
+The scenes are written by `cargo run -p tileslide-scenes --example export` (once per
+test session, into the cargo target directory, always anew), so every agreement test
+compares with the core's own answers from the same checkout.
+"""
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[3]
+MAPS = ROOT / "examples" / "maps"
+# The rays the tests compare (the benchmark takes a million).
+TEST_RAYS = 100_000
+
+
+def target_dir() -> Path:
+    return Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
+
+
+class Scenes:
+    """The exported scenes: arrays, the map's text and the expected numbers."""
+
+    def __init__(self, folder: Path):
+        self.folder = folder
+        self.expected = json.loads((folder / "expected.json").read_text())
+        self.map_text = (folder / "dungeon256.txt").read_text()
+        self.rays = np.fromfile(folder / "rays.f32", dtype="<f4").reshape(-1, 4)
+        self.ray_hits = np.fromfile(folder / "rays_hits.f32", dtype="<f4").reshape(-1, 5)
+        self.crowd = np.fromfile(folder / "crowd.f32", dtype="<f4").reshape(-1, 4)
+        self.crowd_end = np.fromfile(folder / "crowd_end.f32", dtype="<f4").reshape(-1, 2)
+
+
+def export_scenes(rays: int) -> Scenes:
+    folder = target_dir() / "scenes" / str(rays)
+    subprocess.run(
+        ["cargo", "run", "--quiet", "-p", "tileslide-scenes", "--example", "export", "--"]
+        + [str(folder), str(rays)],
+        cwd=ROOT,
+        check=True,
+    )
+    return Scenes(folder)
+
+
+@pytest.fixture(scope="session")
+def scenes() -> Scenes:
+    return export_scenes(TEST_RAYS)
+
+
+def fnv1a64(data: bytes) -> int:
+    """FNV-1a 64, as tileslide_scenes::Fnv1a."""
+    h = 0xCBF29CE484222325
+    for byte in data:
+        h ^= byte
+        h = (h * 0x100000001B3) & 0xFFFFFFFFFFFFFFFF
+    return h
