@@ -70,6 +70,23 @@ class TileMap:
         """Builds a map from ASCII text: `#` solid, `.` or space empty, `/` and `\\`
         ramps, `=` one-way platform; rows top to bottom, lines starting with `;` are
         comments. Cells are squares of side `cell`."""
+    @staticmethod
+    def from_tiles(
+        tiles: npt.NDArray[np.int64], tileset: TileSet, origin: Tuple[float, float] = (0.0, 0.0)
+    ) -> TileMap:
+        """A map laid out from `tiles` (2-D int64, row 0 at the top: each cell's tile id in
+        `tileset`, negative for an empty cell), its corner at `origin`. Raises ValueError
+        naming the first cell whose id the tile set lacks."""
+    @property
+    def tileset(self) -> TileSet:
+        """The map's tile set."""
+    def tile(self, col: int, row: int) -> Optional[int]:
+        """The id of the tile in cell (col, row), or None for an empty cell. Raises
+        IndexError for a cell outside the map."""
+    def set_tile(self, col: int, row: int, id: Optional[int]) -> None:
+        """Puts tile `id` of the map's tile set in cell (col, row), or empties it (None):
+        only the segments around the cell change; bodies stepped on the map next meet the
+        new wall. Raises IndexError outside the map, ValueError for an unknown id."""
     def save(self, path: _Path) -> None:
         """Saves the map as a baked map (`.tsm`), which loads without a tile set."""
     @property
@@ -164,3 +181,54 @@ class Bodies:
         """A body's position."""
     def positions(self, ids: Optional[Sequence[BodyId]] = None) -> npt.NDArray[np.float32]:
         """The positions of `ids` (every body's, in slot order, when None), shape (N, 2)."""
+
+class TileSet:
+    """Tile shapes by id, all of one tile size."""
+
+    @staticmethod
+    def from_image(
+        path: _Path,
+        tile_width: int,
+        tile_height: int,
+        threshold: int = 128,
+        tolerance: float = 1.0,
+    ) -> TileSet:
+        """Cuts the PNG tile sheet at `path` into tile_width × tile_height pixel tiles, row
+        by row (tile k gets id k), each traced (see `trace`): a pixel is solid when its
+        alpha is at least `threshold`, or, without transparency, when it is darker.
+        Raises FileNotFoundError, LoadError, or ValueError for a tile size of 0."""
+    @property
+    def tile_size(self) -> Tuple[float, float]:
+        """A tile's size (width, height)."""
+    def __len__(self) -> int: ...
+    def ids(self) -> list[int]:
+        """The ids of the tiles, in increasing order."""
+    def segments(
+        self, id: int
+    ) -> Tuple[npt.NDArray[np.float32], npt.NDArray[np.float32]]:
+        """Tile `id`'s segments (N, 4) and outward normals (N, 2), tile-local. Raises
+        KeyError for an id the set lacks."""
+
+def trace(
+    mask: npt.NDArray[np.bool_], tolerance: float = 1.0
+) -> Tuple[npt.NDArray[np.float32], npt.NDArray[np.float32]]:
+    """The outline of the solid pixels of `mask` (2-D bool, row 0 at the top), simplified
+    to within `tolerance` pixels so staircases become slopes: segments (N, 4) rows
+    ax, ay, bx, by in pixels (y down) and outward unit normals (N, 2)."""
+
+def render(
+    map: TileMap,
+    path: Optional[_Path] = None,
+    *,
+    bodies: Optional[Bodies] = None,
+    circles: Optional[npt.NDArray[np.float32]] = None,
+    rays: Optional[npt.NDArray[np.float32]] = None,
+    paths: Optional[Sequence[npt.NDArray[np.float32]]] = None,
+    scale: float = 16.0,
+    y_up: bool = False,
+) -> bytes:
+    """A PNG picture of `map` (solid material, segments with their normals) with, over it,
+    `bodies`, `circles` ((N, 3) rows x, y, radius), `rays` ((N, 4), each drawn with what
+    it hits) and `paths` ((N, 2) arrays of points). `scale` is pixels per cell; `y_up`
+    draws row 0 at the bottom. Returns the PNG's bytes and writes them to `path` when
+    given. Raises ValueError for a scale that is not positive or an image too large."""

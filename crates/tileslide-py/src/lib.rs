@@ -9,6 +9,8 @@ use pyo3::prelude::*;
 mod bodies;
 mod errors;
 mod map;
+mod render;
+mod trace;
 
 /// The module: its classes, its exception and its version.
 #[pymodule]
@@ -21,5 +23,8 @@ fn tileslide_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<bodies::Bodies>()?;
     m.add_class::<bodies::BodyId>()?;
     m.add_class::<bodies::StepReport>()?;
+    m.add_class::<trace::TileSet>()?;
+    m.add_function(wrap_pyfunction!(render::render, m)?)?;
+    m.add_function(wrap_pyfunction!(trace::trace, m)?)?;
     Ok(())
 }

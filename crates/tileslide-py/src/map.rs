@@ -2,20 +2,22 @@
 //! casts, one at a time or a NumPy batch.
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyIndexError, PyValueError};
 use pyo3::prelude::*;
 use tileslide::io::ascii;
-use tileslide::{Faces, QueryFilter, Ray, Vec2};
+use tileslide::{Cell, Faces, QueryFilter, Ray, TileId, Vec2};
 
 use crate::errors::{finite, load_error};
+use crate::trace::{TileSet, map_from_tiles};
 
 /// Rays cast a chunk at a time, so the batch's own buffers stay small whatever its size.
 const CHUNK: usize = 4096;
 
 /// A collision map: tiles on a grid, each a set of solid segments with seams culled.
-#[pyclass(module = "tileslide", frozen)]
+#[pyclass(module = "tileslide")]
 pub struct TileMap {
     pub(crate) map: tileslide::TileMap,
 }
@@ -74,6 +76,20 @@ fn hit_of(hit: &tileslide::RayHit) -> RayHit {
     }
 }
 
+impl TileMap {
+    fn check_cell(&self, col: u32, row: u32) -> PyResult<()> {
+        if col < self.map.width() && row < self.map.height() {
+            Ok(())
+        } else {
+            Err(PyIndexError::new_err(format!(
+                "cell ({col}, {row}) is outside the {} × {} map",
+                self.map.width(),
+                self.map.height()
+            )))
+        }
+    }
+}
+
 #[pymethods]
 impl TileMap {
     /// Loads the map at `path`, its format told by its extension (`.txt` ASCII, `.tmx`,
@@ -111,6 +127,44 @@ impl TileMap {
                 format!("{}: {e}", path.display()),
             ))
         })
+    }
+
+    /// A map laid out from `tiles` (a 2-D integer array, row 0 at the top: the id of each
+    /// cell's tile in `tileset`, negative for an empty cell), its corner at `origin`.
+    #[staticmethod]
+    #[pyo3(signature = (tiles, tileset, origin = (0.0, 0.0)))]
+    fn from_tiles(
+        tiles: PyReadonlyArray2<'_, i64>,
+        tileset: &TileSet,
+        origin: (f32, f32),
+    ) -> PyResult<Self> {
+        map_from_tiles(&tiles, tileset, origin)
+    }
+
+    /// The map's tile set (for ASCII maps, the ids of `tileslide::io::ascii`).
+    #[getter]
+    fn tileset(&self) -> TileSet {
+        TileSet {
+            set: Arc::clone(self.map.tile_set()),
+        }
+    }
+
+    /// The id of the tile in cell (`col`, `row`), or None for an empty cell. Raises
+    /// IndexError for a cell outside the map.
+    fn tile(&self, col: u32, row: u32) -> PyResult<Option<u32>> {
+        self.check_cell(col, row)?;
+        Ok(self.map.tile(Cell::new(col, row)).map(|t| t.0))
+    }
+
+    /// Puts tile `id` of the map's tile set in cell (`col`, `row`), or empties it (None):
+    /// only the segments around the cell change, and bodies and characters stepped on the
+    /// map next see the new wall. Raises IndexError for a cell outside the map, ValueError
+    /// for an id the tile set lacks.
+    fn set_tile(&mut self, col: u32, row: u32, id: Option<u32>) -> PyResult<()> {
+        self.check_cell(col, row)?;
+        self.map
+            .set_tile(Cell::new(col, row), id.map(TileId))
+            .map_err(|e| PyValueError::new_err(e.to_string()))
     }
 
     /// The map's width in cells.

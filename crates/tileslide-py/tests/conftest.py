@@ -52,6 +52,20 @@ def scenes() -> Scenes:
     return export_scenes(TEST_RAYS)
 
 
+def run_crowd(scenes: Scenes, m):
+    """The crowd scene run through Python as the golden test runs it: the bodies and ids."""
+    import tileslide
+
+    bodies = tileslide.Bodies()
+    radius = scenes.expected["crowd_radius"]
+    ids = [bodies.add(float(x), float(y), radius) for x, y in scenes.crowd[:, :2]]
+    moves = np.ascontiguousarray(scenes.crowd[:, 2:])
+    for _ in range(scenes.expected["crowd_steps"]):
+        bodies.propose_many(ids, moves)
+        bodies.step(m)
+    return bodies, ids
+
+
 def fnv1a64(data: bytes) -> int:
     """FNV-1a 64, as tileslide_scenes::Fnv1a."""
     h = 0xCBF29CE484222325

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import tileslide
-from conftest import fnv1a64
+from conftest import fnv1a64, run_crowd
 
 # The Rust core's golden hash of the crowd (crates/tileslide/tests/resolver_golden.rs).
 GOLDEN = 0x85842B31C9D3E773
@@ -17,13 +17,7 @@ ROOM = "########\n#......#\n#......#\n#......#\n########\n"
 
 def test_the_crowd_ends_on_the_cores_golden_hash(scenes):
     m = tileslide.TileMap.from_ascii(scenes.map_text)
-    bodies = tileslide.Bodies()
-    radius = scenes.expected["crowd_radius"]
-    ids = [bodies.add(float(x), float(y), radius) for x, y in scenes.crowd[:, :2]]
-    moves = np.ascontiguousarray(scenes.crowd[:, 2:])
-    for _ in range(scenes.expected["crowd_steps"]):
-        bodies.propose_many(ids, moves)
-        bodies.step(m)
+    bodies, ids = run_crowd(scenes, m)
     end = bodies.positions(ids)
     assert end.dtype == np.float32 and end.shape == (len(ids), 2)
     assert np.array_equal(end.view(np.uint32), scenes.crowd_end.view(np.uint32))

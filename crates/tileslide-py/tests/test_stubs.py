@@ -1,5 +1,5 @@
 """The type stubs (tileslide.pyi, shipped in the wheel) declare exactly what the module
-has: every class, method and property, and nothing it lacks."""
+has: every class, function, method and property, and nothing it lacks."""
 
 import ast
 import inspect
@@ -21,6 +21,8 @@ def stub_names():
                 for n in node.body
                 if isinstance(n, (ast.FunctionDef, ast.AnnAssign))
             }
+        elif isinstance(node, ast.FunctionDef):
+            top.add(node.name)
         elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
             top.add(node.target.id)
     return top, members

@@ -18,8 +18,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use tileslide::io::ascii;
-use tileslide::{Bodies, BodyDesc, BodyShape, QueryFilter, Ray};
-use tileslide_scenes::{CROWD_RADIUS, dungeon256, positions_hash, scene_crowd, scene_rays};
+use tileslide::{QueryFilter, Ray};
+use tileslide_scenes::{
+    CROWD_RADIUS, dungeon256, positions_hash, run_crowd, scene_crowd, scene_rays,
+};
 
 /// The crowd as the golden test runs it (crates/tileslide/tests/resolver_golden.rs).
 const CROWD_BODIES: usize = 2_000;
@@ -79,22 +81,7 @@ fn run() -> Result<(), String> {
                 .flat_map(|b| [b.position.x, b.position.y, b.velocity.x, b.velocity.y]),
         ),
     )?;
-    let mut bodies = Bodies::new();
-    let mut handles = Vec::with_capacity(crowd.len());
-    for b in &crowd {
-        let shape = BodyShape::circle(CROWD_RADIUS).map_err(|e| e.to_string())?;
-        handles.push(
-            bodies
-                .add(BodyDesc::new(b.position, shape))
-                .map_err(|e| e.to_string())?,
-        );
-    }
-    for _ in 0..CROWD_STEPS {
-        for (h, b) in handles.iter().zip(&crowd) {
-            bodies.propose(*h, b.velocity).map_err(|e| e.to_string())?;
-        }
-        bodies.step(&map);
-    }
+    let (bodies, handles) = run_crowd(&map, &crowd, CROWD_STEPS).map_err(|e| e.to_string())?;
     let end = handles
         .iter()
         .map(|h| bodies.get(*h).map(|b| b.position()))

@@ -137,6 +137,32 @@ pub fn scene_crowd(grid: &SolidGrid, n: usize) -> Vec<CrowdBody> {
         .collect()
 }
 
+/// `crowd` run on `map` with the core's [`Bodies`](tileslide::Bodies) as the golden test
+/// runs it: one circle of [`CROWD_RADIUS`] per body, each proposing its velocity every step,
+/// `steps` steps. The set, and the handles in crowd order.
+///
+/// # Errors
+/// A body the set refuses (a position out of range): never for the scene's own bodies.
+pub fn run_crowd(
+    map: &tileslide::TileMap,
+    crowd: &[CrowdBody],
+    steps: usize,
+) -> Result<(tileslide::Bodies, Vec<tileslide::BodyHandle>), tileslide::BodyError> {
+    let mut bodies = tileslide::Bodies::new();
+    let mut handles = Vec::with_capacity(crowd.len());
+    for b in crowd {
+        let shape = tileslide::BodyShape::circle(CROWD_RADIUS)?;
+        handles.push(bodies.add(tileslide::BodyDesc::new(b.position, shape))?);
+    }
+    for _ in 0..steps {
+        for (h, b) in handles.iter().zip(crowd) {
+            bodies.propose(*h, b.velocity)?;
+        }
+        bodies.step(map);
+    }
+    Ok((bodies, handles))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -51,7 +51,7 @@ pub use broad::{
     BROAD_RADIUS, BroadCircle, boxes_overlap, broad_box, broad_boxes, broad_pairs_reference,
     scene_broad, update_broad,
 };
-pub use crowd::{CROWD_RADIUS, CrowdBody, crowd_candidates, scene_crowd};
+pub use crowd::{CROWD_RADIUS, CrowdBody, crowd_candidates, run_crowd, scene_crowd};
 pub use dungeon::{dungeon256, open256};
 pub use edges::ExposedEdge;
 pub use fnv::{Fnv1a, positions_hash};
