@@ -13,6 +13,21 @@
 // Ray flag: faces count from both sides (by default only faces the ray meets head-on).
 #define TS_RAY_BOTH_SIDES 1
 
+// Shape: a circle (of a character or a hit volume).
+#define TS_SHAPE_CIRCLE 0
+
+// Shape: an axis-aligned rectangle, by its half width and half height.
+#define TS_SHAPE_RECT 1
+
+// Segment flag: a solid segment.
+#define TS_SEGMENT_SOLID 1
+
+// Segment flag: a one-way platform (blocks only from its front).
+#define TS_SEGMENT_ONE_WAY 2
+
+// The most contacts a character reports after a move: one of each side.
+#define TS_CHARACTER_MAX_CONTACTS 5
+
 // What a call did: `TS_OK`, or why it did nothing (`ts_last_error_message()` says more).
 typedef enum {
   // Done.
@@ -31,12 +46,33 @@ typedef enum {
   TS_ERROR_LOAD = 5,
   // tileslide panicked: a bug, reported rather than carried across the boundary.
   TS_ERROR_PANIC = 6,
-  // A body id whose body was removed (or that never named one).
+  // A body or hit object id whose body or object was removed (or that never named one).
   TS_ERROR_STALE_HANDLE = 7,
+  // A caller's buffer has less room than the answer needs: nothing was written to it,
+  // and the call's `count` says how many entries it needs.
+  TS_ERROR_BUFFER_TOO_SMALL = 8,
 } ts_status;
+
+// Which surface of a character a contact is.
+typedef enum {
+  // Walkable ground under it after the move.
+  TS_CONTACT_GROUND = 0,
+  // A ceiling that stopped it.
+  TS_CONTACT_CEILING = 1,
+  // A wall on its left (lower x): the normal points right.
+  TS_CONTACT_LEFT = 2,
+  // A wall on its right: the normal points left.
+  TS_CONTACT_RIGHT = 3,
+  // A moving platform that pressed it into the world.
+  TS_CONTACT_CRUSH = 4,
+} ts_contact_side;
 
 // A set of bodies (opaque): made by `ts_bodies_create`, freed by `ts_bodies_free`.
 typedef struct ts_bodies ts_bodies;
+
+// A platformer character (opaque): made by `ts_character_create`, freed by
+// `ts_character_free`.
+typedef struct ts_character ts_character;
 
 // A collision map (opaque): made by `ts_map_load_file` or `ts_map_from_ascii`, freed by
 // `ts_map_free`.
@@ -113,6 +149,72 @@ typedef struct {
   size_t cut_short;
 } ts_step_report;
 
+// What a character is and how it moves: start from `ts_default_character_def()` and set
+// what differs. Distances are in map units (the defaults suit cells of size 1).
+typedef struct {
+  // The shape's centre, x.
+  float x;
+  // The shape's centre, y.
+  float y;
+  // `TS_SHAPE_RECT` (by `half_width`, `half_height`) or `TS_SHAPE_CIRCLE` (by `radius`).
+  uint32_t shape;
+  // A rectangle's half width.
+  float half_width;
+  // A rectangle's half height.
+  float half_height;
+  // A circle's radius.
+  float radius;
+  // The up direction, x (any length but zero).
+  float up_x;
+  // The up direction, y: -1 by default, for maps whose row 0 is the top (ASCII, Tiled).
+  float up_y;
+  // The steepest walkable slope, in degrees from level, in [0, 90).
+  float max_slope_degrees;
+  // How far below its feet a grounded character looks for ground to stay on.
+  float snap_distance;
+  // The gap kept between the character and every surface it stops against.
+  float skin;
+  // How many times one move may hit a surface and slide on (at least 1).
+  uint32_t max_slides;
+  // The highest ledge a walk steps up onto (0: none).
+  float step_height;
+  // The segment flags that block it (`TS_SEGMENT_SOLID | TS_SEGMENT_ONE_WAY`).
+  uint32_t mask;
+} ts_character_def;
+
+// Where a character is after its last step, how fast the game's velocity is once the
+// surfaces touched have taken out what they stopped, and whether it stands on ground.
+typedef struct {
+  // The shape's centre, x.
+  float x;
+  // The shape's centre, y.
+  float y;
+  // The velocity, x.
+  float vx;
+  // The velocity, y.
+  float vy;
+  // Stands on walkable ground.
+  bool grounded;
+} ts_character_state;
+
+// One surface a character touched in its last move.
+typedef struct {
+  // Which surface.
+  ts_contact_side side;
+  // The surface's unit normal, pointing towards the character, x.
+  float nx;
+  // The normal, y.
+  float ny;
+  // The segment's flags (`TS_SEGMENT_ONE_WAY` for a platform).
+  uint32_t flags;
+  // The tile's column (`TS_NONE` for a surface that is not a tile's).
+  uint32_t col;
+  // The tile's row (`TS_NONE` likewise).
+  uint32_t row;
+  // The tile's id (`TS_NONE` likewise).
+  uint32_t tile;
+} ts_character_contact;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -135,7 +237,7 @@ const char *ts_version(void);
 // to a writable `ts_map*`.
 ts_status ts_map_load_file(const char *path, const char *tileset_path_or_null, ts_map **out);
 
-// Builds a map from ASCII text (`#` solid, `.` empty, `/` `\` ramps, `-` one-way; rows
+// Builds a map from ASCII text (`#` solid, `.` empty, `/` `\` ramps, `=` one-way; rows
 // top to bottom) with square cells of side `cell`. On `TS_OK`, `*out` is the map.
 //
 // # Safety
@@ -272,6 +374,84 @@ ts_status ts_bodies_positions(const ts_bodies *bodies,
                               const ts_body_id *ids,
                               size_t n,
                               float *out_xy);
+
+// A character definition's defaults: at (0, 0), a box 0.5 wide and 0.8 tall, up -y, and
+// the core's `ControllerConfig` defaults (slopes to 50°, snap 0.3, skin 0.001, 4 slides,
+// no stepping up, blocked by solid and one-way segments).
+ts_character_def ts_default_character_def(void);
+
+// Makes a character as `def` says, standing still. On `TS_OK`, `*out` is the character,
+// for `ts_character_free`. A position or up that is not finite (or up zero), a size that is
+// not positive, an unknown shape and settings out of range are refused, named.
+//
+// # Safety
+// `def` points to a definition; `out` points to a writable `ts_character*`.
+ts_status ts_character_create(const ts_character_def *def, ts_character **out);
+
+// Frees a character (null is ignored).
+//
+// # Safety
+// `character` is null or a character from this library not yet freed.
+void ts_character_free(ts_character *character);
+
+// Sets what the game asks of the character for the coming steps: its velocity (`vx`,
+// `vy`, map units per second, gravity and jumps included: those are the game's rules) and
+// whether it drops through one-way platforms (hold it until it is clear of one). Each
+// `ts_character_step` moves it by velocity × dt and keeps in the velocity what the
+// surfaces touched leave of it, so a game adds gravity to `ts_character_get_state`'s
+// velocity and sets it back.
+//
+// # Safety
+// `character` is a live character.
+ts_status ts_character_set_input(ts_character *character, float vx, float vy, bool drop_through);
+
+// One step of `dt` seconds (finite, not negative) through `map` and its temporary
+// segments: moves the character by its velocity × dt as far as the world lets it
+// (`Character::move_and_slide`), takes out of the velocity what the surfaces touched
+// stopped (landing zeroes the fall, a ceiling the rise, a wall the speed into it), and
+// keeps what it touched for `ts_character_contacts`. On a failure nothing changes.
+//
+// # Safety
+// `character` is a live character, `map` a live map.
+ts_status ts_character_step(ts_character *character, const ts_map *map, float dt);
+
+// Moves the character by (`dx`, `dy`) through `map` as far as the world lets it
+// (`Character::move_by`), for a game that makes its own displacements; its velocity is
+// left as it was. `drop_through` falls through one-way platforms during this move.
+//
+// # Safety
+// `character` is a live character, `map` a live map.
+ts_status ts_character_move_by(ts_character *character,
+                               const ts_map *map,
+                               float dx,
+                               float dy,
+                               bool drop_through);
+
+// Moves the character to (`x`, `y`) at once (a teleport: no sweep), forgetting its ground
+// and contacts; its velocity is left as it was.
+//
+// # Safety
+// `character` is a live character.
+ts_status ts_character_teleport(ts_character *character, float x, float y);
+
+// The character's position, velocity and whether it stands on ground, into `*out`.
+//
+// # Safety
+// `character` is a live character; `out` points to a writable `ts_character_state`.
+ts_status ts_character_get_state(const ts_character *character, ts_character_state *out);
+
+// The surfaces the character touched in its last step or move, into `out` (room for
+// `capacity`; `TS_CHARACTER_MAX_CONTACTS` always suffices), ground first, then ceiling,
+// left, right and crush, each at most once; `*count` is how many. When they do not fit,
+// `TS_ERROR_BUFFER_TOO_SMALL` with only `*count` written.
+//
+// # Safety
+// `character` is a live character; `out` has room for `capacity` contacts (or is null
+// when `capacity` is 0); `count` is writable.
+ts_status ts_character_contacts(const ts_character *character,
+                                ts_character_contact *out,
+                                size_t capacity,
+                                size_t *count);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -158,12 +158,75 @@ static void bodies_meet_without_overlap_and_removed_ids_go_stale(void) {
     ts_map_free(map);
 }
 
+/* A box falls onto a one-way platform, stands on it, drops through on request, lands on the
+ * floor and runs into the wall; its contacts name the tiles. */
+static void a_character_lands_drops_through_and_meets_the_wall(void) {
+    ts_map *map = NULL;
+    CHECK(ts_map_from_ascii("#########\n#.......#\n#..===..#\n#.......#\n#########", 1.0f,
+                            &map) == TS_OK);
+    ts_character_def def = ts_default_character_def();
+    def.x = 4.5f;
+    def.y = 1.5f;
+    ts_character *hero = NULL;
+    CHECK(ts_character_create(&def, &hero) == TS_OK);
+    if (!map || !hero) return;
+    ts_character_state s;
+    ts_character_contact contacts[TS_CHARACTER_MAX_CONTACTS];
+    size_t n = 0;
+    const float dt = 1.0f / 60.0f;
+    for (int step = 0; step < 60; step++) {
+        CHECK(ts_character_get_state(hero, &s) == TS_OK);
+        CHECK(ts_character_set_input(hero, 0.0f, s.vy + 30.0f * dt, false) == TS_OK);
+        CHECK(ts_character_step(hero, map, dt) == TS_OK);
+    }
+    CHECK(ts_character_get_state(hero, &s) == TS_OK);
+    CHECK(s.grounded && fabsf(s.y - (2.0f - 0.4f - 0.001f)) < 1e-4f && s.vy == 0.0f);
+    CHECK(ts_character_contacts(hero, contacts, TS_CHARACTER_MAX_CONTACTS, &n) == TS_OK);
+    CHECK(n == 1 && contacts[0].side == TS_CONTACT_GROUND);
+    CHECK(contacts[0].col == 4 && contacts[0].row == 2 && contacts[0].tile != TS_NONE);
+    CHECK((contacts[0].flags & TS_SEGMENT_ONE_WAY) != 0 && contacts[0].ny == -1.0f);
+    /* Down through the platform to the floor, then right into the wall at x = 8. */
+    for (int step = 0; step < 60; step++) {
+        CHECK(ts_character_get_state(hero, &s) == TS_OK);
+        CHECK(ts_character_set_input(hero, 0.0f, s.vy + 30.0f * dt, step < 20) == TS_OK);
+        CHECK(ts_character_step(hero, map, dt) == TS_OK);
+    }
+    CHECK(ts_character_get_state(hero, &s) == TS_OK);
+    CHECK(s.grounded && fabsf(s.y - (4.0f - 0.4f - 0.001f)) < 1e-4f);
+    for (int step = 0; step < 60; step++) {
+        CHECK(ts_character_set_input(hero, 6.0f, 1.0f, false) == TS_OK);
+        CHECK(ts_character_step(hero, map, dt) == TS_OK);
+    }
+    CHECK(ts_character_get_state(hero, &s) == TS_OK);
+    CHECK(fabsf(s.x - (8.0f - 0.25f - 0.001f)) < 1e-4f && s.vx == 0.0f);
+    /* Two contacts: a buffer of one is too small, and says how many it needs. */
+    CHECK(ts_character_contacts(hero, contacts, 1, &n) == TS_ERROR_BUFFER_TOO_SMALL && n == 2);
+    CHECK(ts_character_contacts(hero, contacts, 2, &n) == TS_OK && n == 2);
+    CHECK(contacts[0].side == TS_CONTACT_GROUND && contacts[1].side == TS_CONTACT_RIGHT);
+    CHECK(contacts[1].nx == -1.0f && contacts[1].col == 8 && contacts[1].row == 3);
+    /* Bad input. */
+    CHECK(ts_character_set_input(hero, NAN, 0.0f, false) == TS_ERROR_INVALID_ARGUMENT);
+    CHECK(contains(ts_last_error_message(), "vx is NaN"));
+    CHECK(ts_character_step(hero, map, -1.0f) == TS_ERROR_INVALID_ARGUMENT);
+    CHECK(contains(ts_last_error_message(), "dt"));
+    CHECK(ts_character_step(hero, NULL, dt) == TS_ERROR_NULL_POINTER);
+    CHECK(ts_character_teleport(hero, INFINITY, 0.0f) == TS_ERROR_INVALID_ARGUMENT);
+    def.shape = 7;
+    ts_character *bad = NULL;
+    CHECK(ts_character_create(&def, &bad) == TS_ERROR_INVALID_ARGUMENT && bad == NULL);
+    CHECK(contains(ts_last_error_message(), "def.shape"));
+    ts_character_free(hero);
+    ts_character_free(NULL);
+    ts_map_free(map);
+}
+
 int main(void) {
     a_ray_hits_the_wall_the_cli_names();
     every_format_loads();
     a_batch_agrees_with_single_rays_and_misses_are_nan();
     bad_input_gets_a_status_and_a_message();
     bodies_meet_without_overlap_and_removed_ids_go_stale();
+    a_character_lands_drops_through_and_meets_the_wall();
     if (failures) {
         fprintf(stderr, "%d checks failed\n", failures);
         return 1;

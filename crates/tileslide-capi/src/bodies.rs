@@ -5,7 +5,7 @@ use std::ptr;
 
 use tileslide::{Bodies, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Circle, Vec2};
 
-use crate::{Failure, guarded, map_ref, ts_map, ts_status};
+use crate::{Failure, free_boxed, give_boxed, guarded, map_ref, ts_map, ts_status};
 
 /// A set of bodies (opaque): made by `ts_bodies_create`, freed by `ts_bodies_free`.
 pub struct ts_bodies {
@@ -133,11 +133,11 @@ pub unsafe extern "C" fn ts_bodies_create(out: *mut *mut ts_bodies) -> ts_status
         if out.is_null() {
             return Err(Failure::null("out"));
         }
-        let boxed = Box::into_raw(Box::new(ts_bodies {
+        let set = ts_bodies {
             bodies: Bodies::new(),
-        }));
+        };
         // SAFETY: not null, writable as the caller promises.
-        unsafe { out.write(boxed) };
+        unsafe { give_boxed(out, set) };
         Ok(())
     })
 }
@@ -148,13 +148,8 @@ pub unsafe extern "C" fn ts_bodies_create(out: *mut *mut ts_bodies) -> ts_status
 /// `bodies` is null or a set from this library not yet freed.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn ts_bodies_free(bodies: *mut ts_bodies) {
-    if bodies.is_null() {
-        return;
-    }
-    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        // SAFETY: a set from `Box::into_raw`, freed once as the caller promises.
-        drop(unsafe { Box::from_raw(bodies) });
-    }));
+    // SAFETY: null or from `ts_bodies_create`, freed once, as the caller promises.
+    unsafe { free_boxed(bodies) };
 }
 
 /// Adds a body as `def` says. On `TS_OK`, `*out` is its id. A radius that is not positive,
