@@ -28,6 +28,30 @@
 // The most contacts a character reports after a move: one of each side.
 #define TS_CHARACTER_MAX_CONTACTS 5
 
+// Hit type: damage.
+#define TS_HIT_TYPE_HIT 1
+
+// Hit type: kills outright.
+#define TS_HIT_TYPE_DEATH 2
+
+// Hit type: picks up (a coin, a gem).
+#define TS_HIT_TYPE_COLLECT 4
+
+// Hit type: takes control of (a robot).
+#define TS_HIT_TYPE_POSSESS 8
+
+// Hit type: presses (a button).
+#define TS_HIT_TYPE_DEPRESS 16
+
+// Hit type: throws (a spring, a cannon).
+#define TS_HIT_TYPE_LAUNCH 32
+
+// Every hit type: a vulnerability volume of it accepts anything.
+#define TS_HIT_TYPE_ANY UINT32_MAX
+
+// `swing` of an object making no swing.
+#define TS_NO_SWING UINT64_MAX
+
 // What a call did: `TS_OK`, or why it did nothing (`ts_last_error_message()` says more).
 typedef enum {
   // Done.
@@ -73,6 +97,10 @@ typedef struct ts_bodies ts_bodies;
 // A platformer character (opaque): made by `ts_character_create`, freed by
 // `ts_character_free`.
 typedef struct ts_character ts_character;
+
+// Hit objects and the hits between them (opaque): made by `ts_hit_world_create`, freed by
+// `ts_hit_world_free`.
+typedef struct ts_hit_world ts_hit_world;
 
 // A collision map (opaque): made by `ts_map_load_file` or `ts_map_from_ascii`, freed by
 // `ts_map_free`.
@@ -214,6 +242,88 @@ typedef struct {
   // The tile's id (`TS_NONE` likewise).
   uint32_t tile;
 } ts_character_contact;
+
+// An attack or vulnerability volume in its object's coordinates: a circle or a rectangle,
+// and the hit types it deals (attack) or accepts (vulnerability).
+typedef struct {
+  // `TS_SHAPE_CIRCLE` (by `radius`) or `TS_SHAPE_RECT` (by `half_width`, `half_height`).
+  uint32_t shape;
+  // The centre's offset from the object's position, x.
+  float x;
+  // The centre's offset, y.
+  float y;
+  // A circle's radius (not negative).
+  float radius;
+  // A rectangle's half width (not negative).
+  float half_width;
+  // A rectangle's half height (not negative).
+  float half_height;
+  // Hit types (`TS_HIT_TYPE_*` bits; bits 6 and up are the game's own).
+  uint32_t hit;
+} ts_volume;
+
+// What a hit object is: start from `ts_default_hit_object_def()` and set what differs.
+typedef struct {
+  // The position (its volumes' origin), x.
+  float x;
+  // The position, y.
+  float y;
+  // Its width: volumes are mirrored about the middle of its size when it is flipped.
+  float width;
+  // Its height.
+  float height;
+  // Mirrors its volumes left to right (facing left, for volumes drawn facing right).
+  bool flip_x;
+  // Mirrors its volumes top to bottom.
+  bool flip_y;
+  // Its team: hits within a team are refused.
+  uint32_t team;
+  // Refuses every hit (a hero blinking after one).
+  bool invulnerable;
+  // The attack it is making, to hit each victim at most once until it ends (the first
+  // step in which no object makes it), or `TS_NO_SWING`.
+  uint64_t swing;
+  // Its attack volumes (`attack_count` of them; null when 0). The first that meets a
+  // vulnerability volume accepting one of its types gives the hit.
+  const ts_volume *attack;
+  // How many `attack` holds.
+  size_t attack_count;
+  // Its vulnerability volumes (`vulnerable_count` of them; null when 0).
+  const ts_volume *vulnerable;
+  // How many `vulnerable` holds.
+  size_t vulnerable_count;
+} ts_hit_object_def;
+
+// A hit object's id, passed by value. Once its object is removed the id is stale for
+// good: calls with it return `TS_ERROR_STALE_HANDLE`, even after its slot is given to
+// another object.
+typedef struct {
+  // The object's slot (objects are tested in slot order).
+  uint32_t index;
+  // How many objects had the slot before this one.
+  uint32_t generation;
+} ts_hit_object_id;
+
+// One hit of the last step: an attack volume of `attacker` met a vulnerability volume of
+// `victim` accepting `hit_type`.
+typedef struct {
+  // Who hit.
+  ts_hit_object_id attacker;
+  // Who was hit.
+  ts_hit_object_id victim;
+  // The types dealt: the attack volume's that the vulnerability volume accepts.
+  uint32_t hit_type;
+  // Whether the victim took it: they are on different teams and the victim is not
+  // invulnerable.
+  bool accepted;
+  // When the volumes first touched, as a fraction of the step's move in [0, 1] (0 when
+  // they overlap where it starts).
+  float t;
+  // Where they touched then, x.
+  float x;
+  // Where they touched then, y.
+  float y;
+} ts_hit_event;
 
 #ifdef __cplusplus
 extern "C" {
@@ -452,6 +562,84 @@ ts_status ts_character_contacts(const ts_character *character,
                                 ts_character_contact *out,
                                 size_t capacity,
                                 size_t *count);
+
+// A hit object definition's defaults: at (0, 0), of size 0 (volumes mirror about the
+// position), facing right, team 0, not invulnerable, no swing, no volumes.
+ts_hit_object_def ts_default_hit_object_def(void);
+
+// Makes an empty hit world (sweep and prune on x, as Replica Island's). On `TS_OK`,
+// `*out` is the world, for `ts_hit_world_free`.
+//
+// # Safety
+// `out` points to a writable `ts_hit_world*`.
+ts_status ts_hit_world_create(ts_hit_world **out);
+
+// Frees a hit world (null is ignored); its ids are meaningless afterwards.
+//
+// # Safety
+// `world` is null or a world from this library not yet freed.
+void ts_hit_world_free(ts_hit_world *world);
+
+// Adds an object as `def` says (its volumes are copied). On `TS_OK`, `*out` is its id.
+// A position or size that is not finite or beyond the coordinate range, a negative radius
+// or half extent, an unknown shape, and a count with a null list are refused, named.
+//
+// # Safety
+// `world` is a live world; `def` points to a definition whose lists hold as many volumes
+// as it says (or are null); `out` points to a writable `ts_hit_object_id`.
+ts_status ts_hit_world_add(ts_hit_world *world,
+                           const ts_hit_object_def *def,
+                           ts_hit_object_id *out);
+
+// Replaces what the object is (volumes, size, facing, team, invulnerability, swing) with
+// what `def` says; its position becomes `def`'s as `ts_hit_world_move` moves it (swept at
+// the next step from where it was at the last).
+//
+// # Safety
+// `world` is a live world; `def` as for `ts_hit_world_add`.
+ts_status ts_hit_world_set(ts_hit_world *world, ts_hit_object_id id, const ts_hit_object_def *def);
+
+// Moves an object to (`x`, `y`): at the next step its volumes are swept from where they
+// were at the last step (or where it was added) to here, so a fast one cannot pass
+// through a target.
+//
+// # Safety
+// `world` is a live world.
+ts_status ts_hit_world_move(ts_hit_world *world, ts_hit_object_id id, float x, float y);
+
+// Removes an object; its id is stale from now on. The last step's events still name it.
+//
+// # Safety
+// `world` is a live world.
+ts_status ts_hit_world_remove(ts_hit_world *world, ts_hit_object_id id);
+
+// The number of objects in the world (0 for null).
+//
+// # Safety
+// `world` is null or a live world.
+size_t ts_hit_world_count(const ts_hit_world *world);
+
+// One step: every object's volumes tested against the others' along their moves since
+// the last step; the hits, in a fixed order (by pair of objects in slot order, then each
+// direction), kept for `ts_hit_world_events` until the next step. A victim takes a hit
+// from another team while it is not invulnerable; an attack with a swing hits each
+// victim once until the swing ends.
+//
+// # Safety
+// `world` is a live world.
+ts_status ts_hit_world_step(ts_hit_world *world);
+
+// The last step's hits, into `out` (room for `capacity`); `*count` is how many. When
+// they do not fit, `TS_ERROR_BUFFER_TOO_SMALL` with only `*count` written: the events stay
+// until the next step, so ask again with more room.
+//
+// # Safety
+// `world` is a live world; `out` has room for `capacity` events (or is null when
+// `capacity` is 0); `count` is writable.
+ts_status ts_hit_world_events(const ts_hit_world *world,
+                              ts_hit_event *out,
+                              size_t capacity,
+                              size_t *count);
 
 #ifdef __cplusplus
 }  // extern "C"

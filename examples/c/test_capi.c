@@ -220,6 +220,74 @@ static void a_character_lands_drops_through_and_meets_the_wall(void) {
     ts_map_free(map);
 }
 
+/* A hero's sword hits a slime of another team, once per swing; a fast fireball hits what it
+ * passes; a removed object's id is stale. */
+static void volumes_hit_across_teams_once_per_swing(void) {
+    ts_hit_world *world = NULL;
+    CHECK(ts_hit_world_create(&world) == TS_OK);
+    if (!world) return;
+    ts_volume sword = {TS_SHAPE_CIRCLE, 1.2f, 0.0f, 0.4f, 0.0f, 0.0f, TS_HIT_TYPE_HIT};
+    ts_volume body = {TS_SHAPE_RECT, 0.0f, 0.0f, 0.0f, 0.4f, 0.5f, TS_HIT_TYPE_ANY};
+    ts_hit_object_def def = ts_default_hit_object_def();
+    def.team = 1;
+    def.swing = 42;
+    def.attack = &sword;
+    def.attack_count = 1;
+    def.vulnerable = &body;
+    def.vulnerable_count = 1;
+    ts_hit_object_id hero, slime, fireball;
+    CHECK(ts_hit_world_add(world, &def, &hero) == TS_OK);
+    def = ts_default_hit_object_def();
+    def.x = 1.6f;
+    def.vulnerable = &body;
+    def.vulnerable_count = 1;
+    CHECK(ts_hit_world_add(world, &def, &slime) == TS_OK);
+    ts_hit_event events[8];
+    size_t n = 0;
+    CHECK(ts_hit_world_step(world) == TS_OK);
+    CHECK(ts_hit_world_events(world, events, 8, &n) == TS_OK && n == 1);
+    CHECK(events[0].attacker.index == hero.index && events[0].victim.index == slime.index);
+    CHECK(events[0].hit_type == TS_HIT_TYPE_HIT && events[0].accepted && events[0].t == 0.0f);
+    /* The same swing again: no second hit. */
+    CHECK(ts_hit_world_step(world) == TS_OK);
+    CHECK(ts_hit_world_events(world, events, 8, &n) == TS_OK && n == 0);
+    /* A fireball from x = 10 to x = -10 in one step: through the slime and the hero. */
+    ts_volume fire = {TS_SHAPE_CIRCLE, 0.0f, 0.0f, 0.2f, 0.0f, 0.0f, TS_HIT_TYPE_HIT};
+    def = ts_default_hit_object_def();
+    def.x = 10.0f;
+    def.team = 2;
+    def.attack = &fire;
+    def.attack_count = 1;
+    CHECK(ts_hit_world_add(world, &def, &fireball) == TS_OK);
+    CHECK(ts_hit_world_step(world) == TS_OK);
+    CHECK(ts_hit_world_move(world, fireball, -10.0f, 0.0f) == TS_OK);
+    CHECK(ts_hit_world_step(world) == TS_OK);
+    CHECK(ts_hit_world_events(world, events, 1, &n) == TS_ERROR_BUFFER_TOO_SMALL && n == 2);
+    CHECK(ts_hit_world_events(world, events, 2, &n) == TS_OK && n == 2);
+    CHECK(events[0].attacker.index == fireball.index && events[1].attacker.index == fireball.index);
+    /* The slime (at 1.6) is reached before the hero (at 0). */
+    int slime_first = events[0].victim.index == slime.index ? 0 : 1;
+    CHECK(events[slime_first].t < events[1 - slime_first].t);
+    /* Removed: stale, even once the slot is reused. */
+    CHECK(ts_hit_world_remove(world, slime) == TS_OK);
+    ts_hit_object_id reuse;
+    CHECK(ts_hit_world_add(world, &def, &reuse) == TS_OK && reuse.index == slime.index);
+    CHECK(ts_hit_world_move(world, slime, 0.0f, 0.0f) == TS_ERROR_STALE_HANDLE);
+    CHECK(contains(ts_last_error_message(), "stale hit object id"));
+    CHECK(ts_hit_world_count(world) == 3);
+    /* Bad input. */
+    CHECK(ts_hit_world_move(world, hero, NAN, 0.0f) == TS_ERROR_INVALID_ARGUMENT);
+    CHECK(contains(ts_last_error_message(), "x is NaN"));
+    fire.radius = -1.0f;
+    CHECK(ts_hit_world_add(world, &def, &reuse) == TS_ERROR_INVALID_ARGUMENT);
+    CHECK(contains(ts_last_error_message(), "def.attack[0]"));
+    def.attack = NULL;
+    CHECK(ts_hit_world_add(world, &def, &reuse) == TS_ERROR_NULL_POINTER);
+    CHECK(ts_hit_world_events(world, NULL, 0, NULL) == TS_ERROR_NULL_POINTER);
+    ts_hit_world_free(world);
+    ts_hit_world_free(NULL);
+}
+
 int main(void) {
     a_ray_hits_the_wall_the_cli_names();
     every_format_loads();
@@ -227,6 +295,7 @@ int main(void) {
     bad_input_gets_a_status_and_a_message();
     bodies_meet_without_overlap_and_removed_ids_go_stale();
     a_character_lands_drops_through_and_meets_the_wall();
+    volumes_hit_across_teams_once_per_swing();
     if (failures) {
         fprintf(stderr, "%d checks failed\n", failures);
         return 1;

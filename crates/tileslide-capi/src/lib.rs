@@ -21,9 +21,11 @@ use std::path::Path;
 
 mod bodies;
 mod character;
+mod hit_world;
 
 pub use bodies::*;
 pub use character::*;
+pub use hit_world::*;
 use tileslide::io::{LoadErrorKind, ascii};
 use tileslide::limits::MAX_COORD;
 use tileslide::{Faces, QueryFilter, Ray, RayHit, TileMap, Vec2};
