@@ -98,6 +98,10 @@ typedef struct ts_bodies ts_bodies;
 // `ts_character_free`.
 typedef struct ts_character ts_character;
 
+// The way to one goal for circles of one radius from everywhere on a map (opaque): made
+// by `ts_flow_field_create`, freed by `ts_flow_field_free`.
+typedef struct ts_flow_field ts_flow_field;
+
 // Hit objects and the hits between them (opaque): made by `ts_hit_world_create`, freed by
 // `ts_hit_world_free`.
 typedef struct ts_hit_world ts_hit_world;
@@ -105,6 +109,9 @@ typedef struct ts_hit_world ts_hit_world;
 // A collision map (opaque): made by `ts_map_load_file` or `ts_map_from_ascii`, freed by
 // `ts_map_free`.
 typedef struct ts_map ts_map;
+
+// A map's navigation grid (opaque): made by `ts_nav_create`, freed by `ts_nav_free`.
+typedef struct ts_nav ts_nav;
 
 // A ray's hit: where along the ray (`t` in [0, 1] from start to end), the point, the
 // outward unit normal of the face hit, and the tile's cell and id (`TS_NONE` for each when
@@ -640,6 +647,89 @@ ts_status ts_hit_world_events(const ts_hit_world *world,
                               ts_hit_event *out,
                               size_t capacity,
                               size_t *count);
+
+// Builds the navigation grid of `map` for circles up to `max_radius` wide (positive, at
+// most 31 of the map's shorter cell side; building costs more the larger it is). Solid
+// segments block; one-way platforms block from their front only. On `TS_OK`, `*out` is
+// the grid, for `ts_nav_free`; use it with this map only.
+//
+// # Safety
+// `map` is a live map; `out` points to a writable `ts_nav*`.
+ts_status ts_nav_create(const ts_map *map, float max_radius, ts_nav **out);
+
+// Frees a navigation grid (null is ignored).
+//
+// # Safety
+// `nav` is null or a grid from this library not yet freed.
+void ts_nav_free(ts_nav *nav);
+
+// The shortest path for a circle of `radius` from (`x0`, `y0`) to (`x1`, `y1`) on `map`
+// (the grid's map), smoothed into straight runs each clear by the map's circle cast
+// (`NavGrid::find_path`): its corners from start to goal into `out_xy`, `out_xy[2k]`,
+// `out_xy[2k + 1]` for corner k, room for `capacity` corners; `*count` is how many. A
+// path has at least two corners; `TS_OK` with `*count` 0 means there is none (the circle
+// does not fit at an end, or cannot get from one to the other), which is not an error.
+// When the corners do not fit, `TS_ERROR_BUFFER_TOO_SMALL` with only `*count` written.
+//
+// # Safety
+// `nav` is a live grid, `map` a live map; `out_xy` has room for `2 capacity` floats (or is
+// null when `capacity` is 0); `count` is writable.
+ts_status ts_nav_find_path(const ts_nav *nav,
+                           const ts_map *map,
+                           float x0,
+                           float y0,
+                           float x1,
+                           float y1,
+                           float radius,
+                           float *out_xy,
+                           size_t capacity,
+                           size_t *count);
+
+// Builds the flow field of the goal (`x`, `y`) for circles of `radius` on `map` (the
+// grid's map): every place's way to the goal, for crowds that share it. If the circle
+// does not fit at the goal, nothing reaches it. On `TS_OK`, `*out` is the field, for
+// `ts_flow_field_free`.
+//
+// # Safety
+// `nav` is a live grid, `map` a live map; `out` points to a writable `ts_flow_field*`.
+ts_status ts_flow_field_create(const ts_nav *nav,
+                               const ts_map *map,
+                               float x,
+                               float y,
+                               float radius,
+                               ts_flow_field **out);
+
+// Frees a flow field (null is ignored).
+//
+// # Safety
+// `field` is null or a field from this library not yet freed.
+void ts_flow_field_free(ts_flow_field *field);
+
+// The unit direction a circle at (`x`, `y`) should move in to reach the field's goal
+// (`FlowField::direction`), into `*dx`, `*dy`: (0, 0) when it cannot reach the goal or
+// is on it. `nav` and `map` are the field's.
+//
+// # Safety
+// `field`, `nav` and `map` are live; `dx` and `dy` are writable.
+ts_status ts_flow_field_direction(const ts_flow_field *field,
+                                  const ts_nav *nav,
+                                  const ts_map *map,
+                                  float x,
+                                  float y,
+                                  float *dx,
+                                  float *dy);
+
+// The length of the way from (`x`, `y`) to the field's goal along the field
+// (`FlowField::distance`), into `*out`: infinity when a circle there cannot reach it.
+//
+// # Safety
+// `field`, `nav` and `map` are live; `out` is writable.
+ts_status ts_flow_field_distance(const ts_flow_field *field,
+                                 const ts_nav *nav,
+                                 const ts_map *map,
+                                 float x,
+                                 float y,
+                                 float *out);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -288,6 +288,47 @@ static void volumes_hit_across_teams_once_per_swing(void) {
     ts_hit_world_free(NULL);
 }
 
+/* A path round a block, asked for with too little room first; a circle too wide for the
+ * corridors has none (not an error); a flow field points the way. */
+static void a_path_goes_round_the_block_and_a_wide_circle_has_none(void) {
+    ts_map *map = NULL;
+    CHECK(ts_map_from_ascii("#######\n#.....#\n#.###.#\n#.....#\n#######", 1.0f, &map) == TS_OK);
+    ts_nav *nav = NULL;
+    CHECK(ts_nav_create(map, 1.0f, &nav) == TS_OK);
+    if (!map || !nav) return;
+    float xy[2 * 16];
+    size_t n = 0;
+    CHECK(ts_nav_find_path(nav, map, 1.5f, 1.5f, 5.5f, 3.5f, 0.3f, xy, 1, &n) ==
+          TS_ERROR_BUFFER_TOO_SMALL);
+    CHECK(n > 2 && n <= 16);
+    size_t m = 0;
+    CHECK(ts_nav_find_path(nav, map, 1.5f, 1.5f, 5.5f, 3.5f, 0.3f, xy, 16, &m) == TS_OK);
+    CHECK(m == n && xy[0] == 1.5f && xy[1] == 1.5f);
+    CHECK(xy[2 * m - 2] == 5.5f && xy[2 * m - 1] == 3.5f);
+    /* Every corner lies in the open, clear of the block's middle row. */
+    for (size_t k = 0; k < m; k++) CHECK(xy[2 * k + 1] < 2.0f || xy[2 * k + 1] > 3.0f ||
+                                         xy[2 * k] < 2.0f || xy[2 * k] > 5.0f);
+    CHECK(ts_nav_find_path(nav, map, 1.5f, 1.5f, 5.5f, 3.5f, 0.6f, xy, 16, &m) == TS_OK && m == 0);
+    CHECK(ts_nav_find_path(nav, map, NAN, 1.5f, 5.5f, 3.5f, 0.3f, xy, 16, &m) ==
+          TS_ERROR_INVALID_ARGUMENT);
+    CHECK(contains(ts_last_error_message(), "x0 is NaN"));
+    CHECK(ts_nav_find_path(nav, map, 1.5f, 1.5f, 5.5f, 3.5f, 2.0f, xy, 16, &m) ==
+          TS_ERROR_INVALID_ARGUMENT);
+    CHECK(contains(ts_last_error_message(), "radius"));
+    ts_flow_field *field = NULL;
+    CHECK(ts_flow_field_create(nav, map, 5.5f, 1.5f, 0.3f, &field) == TS_OK);
+    float dx = 0.0f, dy = 0.0f, distance = 0.0f;
+    CHECK(ts_flow_field_direction(field, nav, map, 1.5f, 1.5f, &dx, &dy) == TS_OK);
+    CHECK(dx == 1.0f && dy == 0.0f);
+    CHECK(ts_flow_field_distance(field, nav, map, 1.5f, 1.5f, &distance) == TS_OK);
+    CHECK(fabsf(distance - 4.0f) < 1e-3f);
+    CHECK(ts_flow_field_distance(field, nav, map, 3.5f, 2.5f, &distance) == TS_OK);
+    CHECK(isinf(distance));
+    ts_flow_field_free(field);
+    ts_nav_free(nav);
+    ts_map_free(map);
+}
+
 int main(void) {
     a_ray_hits_the_wall_the_cli_names();
     every_format_loads();
@@ -296,6 +337,7 @@ int main(void) {
     bodies_meet_without_overlap_and_removed_ids_go_stale();
     a_character_lands_drops_through_and_meets_the_wall();
     volumes_hit_across_teams_once_per_swing();
+    a_path_goes_round_the_block_and_a_wide_circle_has_none();
     if (failures) {
         fprintf(stderr, "%d checks failed\n", failures);
         return 1;

@@ -22,10 +22,12 @@ use std::path::Path;
 mod bodies;
 mod character;
 mod hit_world;
+mod nav;
 
 pub use bodies::*;
 pub use character::*;
 pub use hit_world::*;
+pub use nav::*;
 use tileslide::io::{LoadErrorKind, ascii};
 use tileslide::limits::MAX_COORD;
 use tileslide::{Faces, QueryFilter, Ray, RayHit, TileMap, Vec2};
