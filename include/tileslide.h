@@ -28,6 +28,9 @@
 // The most contacts a character reports after a move: one of each side.
 #define TS_CHARACTER_MAX_CONTACTS 5
 
+// Every debug kind, for `ts_debug_lines_set_kinds`.
+#define TS_DEBUG_ALL_KINDS UINT32_MAX
+
 // Hit type: damage.
 #define TS_HIT_TYPE_HIT 1
 
@@ -91,12 +94,68 @@ typedef enum {
   TS_CONTACT_CRUSH = 4,
 } ts_contact_side;
 
+// What a debug line shows (the core's `DebugKind`, by the same numbers): a front end picks
+// its colour and layer by it.
+typedef enum {
+  // An active solid segment of the map, after seam culling (a segment).
+  TS_DEBUG_ACTIVE_SEGMENT = 0,
+  // An active one-way platform segment (a segment).
+  TS_DEBUG_ONE_WAY_SEGMENT = 1,
+  // A segment's outward normal, from its middle (a segment).
+  TS_DEBUG_NORMAL = 2,
+  // A piece of a tile's segment that seam culling hides (a segment).
+  TS_DEBUG_HIDDEN_SEGMENT = 3,
+  // A temporary segment: a moving platform, a door (a segment).
+  TS_DEBUG_TEMPORARY_SEGMENT = 4,
+  // A body's circle (a circle; one per circle of a compound).
+  TS_DEBUG_BODY = 5,
+  // A character's shape (a circle or a box).
+  TS_DEBUG_CHARACTER = 6,
+  // A surface a character touched, from the contact along its normal (a segment).
+  TS_DEBUG_CONTACT = 7,
+  // A ray (a segment).
+  TS_DEBUG_RAY = 8,
+  // Where a ray hit (a point).
+  TS_DEBUG_RAY_HIT = 9,
+  // An attack volume (a circle or a box).
+  TS_DEBUG_ATTACK_VOLUME = 10,
+  // A vulnerability volume (a circle or a box).
+  TS_DEBUG_VULNERABILITY_VOLUME = 11,
+  // An accepted hit, where it happened (a point).
+  TS_DEBUG_HIT = 12,
+  // A refused hit (a point).
+  TS_DEBUG_REFUSED_HIT = 13,
+  // A leg of a navigation path (a segment).
+  TS_DEBUG_PATH = 14,
+  // A flow field's next move out of a lattice node (a segment).
+  TS_DEBUG_FLOW_ARROW = 15,
+  // A box the broadphase files something under (a box).
+  TS_DEBUG_BROADPHASE_BOX = 16,
+} ts_debug_kind;
+
+// Which shape a debug line is, and so what its four numbers say.
+typedef enum {
+  // From (`x0`, `y0`) to (`x1`, `y1`).
+  TS_DEBUG_SEGMENT = 0,
+  // Centred on (`x0`, `y0`), of radius `x1` (`y1` is 0).
+  TS_DEBUG_CIRCLE = 1,
+  // At (`x0`, `y0`) (`x1`, `y1` are the same).
+  TS_DEBUG_POINT = 2,
+  // An axis-aligned box from its lowest corner (`x0`, `y0`) to its highest (`x1`, `y1`).
+  TS_DEBUG_BOX = 3,
+} ts_debug_shape;
+
 // A set of bodies (opaque): made by `ts_bodies_create`, freed by `ts_bodies_free`.
 typedef struct ts_bodies ts_bodies;
 
 // A platformer character (opaque): made by `ts_character_create`, freed by
 // `ts_character_free`.
 typedef struct ts_character ts_character;
+
+// A buffer of debug lines (opaque): made by `ts_debug_lines_create`, freed by
+// `ts_debug_lines_free`. Keep one, clear it each frame and fill it again: once it has
+// grown to a frame's size it allocates no more.
+typedef struct ts_debug_lines ts_debug_lines;
 
 // The way to one goal for circles of one radius from everywhere on a map (opaque): made
 // by `ts_flow_field_create`, freed by `ts_flow_field_free`.
@@ -249,6 +308,25 @@ typedef struct {
   // The tile's id (`TS_NONE` likewise).
   uint32_t tile;
 } ts_character_contact;
+
+// One debug shape, in map units.
+typedef struct {
+  // See `shape`.
+  float x0;
+  // See `shape`.
+  float y0;
+  // See `shape`.
+  float x1;
+  // See `shape`.
+  float y1;
+  // What it shows.
+  ts_debug_kind kind;
+  // What the four numbers say.
+  ts_debug_shape shape;
+  // Whose it is: a body's or hit object's id as `(generation << 32) | index`, the owner
+  // given for a character, 0 for the map's own.
+  uint64_t owner;
+} ts_debug_line;
 
 // An attack or vulnerability volume in its object's coordinates: a circle or a rectangle,
 // and the hit types it deals (attack) or accepts (vulnerability).
@@ -424,9 +502,10 @@ ts_status ts_bodies_create(ts_bodies **out);
 // `bodies` is null or a set from this library not yet freed.
 void ts_bodies_free(ts_bodies *bodies);
 
-// Adds a body as `def` says. On `TS_OK`, `*out` is its id. A radius that is not positive,
-// a position or offset that is not finite or beyond the coordinate range, and a compound
-// with `circle_count` circles but a null `circles` are refused.
+// Adds a body as `def` says. On `TS_OK`, `*out` is its id, which is also its owner in the
+// core, `(generation << 32) | index`, as its debug lines name it. A radius that is not
+// positive, a position or offset that is not finite or beyond the coordinate range, and a
+// compound with `circle_count` circles but a null `circles` are refused.
 //
 // # Safety
 // `bodies` is a live set; `def` points to a definition whose `circles` holds
@@ -569,6 +648,104 @@ ts_status ts_character_contacts(const ts_character *character,
                                 ts_character_contact *out,
                                 size_t capacity,
                                 size_t *count);
+
+// Makes an empty buffer of debug lines that takes every kind, everywhere. On `TS_OK`,
+// `*out` is the buffer, for `ts_debug_lines_free`.
+//
+// # Safety
+// `out` points to a writable `ts_debug_lines*`.
+ts_status ts_debug_lines_create(ts_debug_lines **out);
+
+// Frees a buffer of debug lines (null is ignored).
+//
+// # Safety
+// `lines` is null or a buffer from this library not yet freed.
+void ts_debug_lines_free(ts_debug_lines *lines);
+
+// Empties the buffer, keeping its memory, kinds and view.
+//
+// # Safety
+// `lines` is a live buffer.
+ts_status ts_debug_lines_clear(ts_debug_lines *lines);
+
+// Takes only the kinds in `kinds` from now on: bit `1 << k` for `ts_debug_kind` k
+// (`TS_DEBUG_ALL_KINDS` for every kind). Fillers skip the work for kinds left out (the
+// map works out no hidden pieces unless `TS_DEBUG_HIDDEN_SEGMENT` is in).
+//
+// # Safety
+// `lines` is a live buffer.
+ts_status ts_debug_lines_set_kinds(ts_debug_lines *lines, uint32_t kinds);
+
+// Takes only shapes touching the box `view` from now on (4 floats: lowest x and y, then
+// highest x and y, in map units), or shapes anywhere for null: a map then visits only the
+// cells the view overlaps.
+//
+// # Safety
+// `lines` is a live buffer; `view` is null or points to 4 floats.
+ts_status ts_debug_lines_set_view(ts_debug_lines *lines, const float *view);
+
+// How many shapes the buffer holds (0 for null).
+//
+// # Safety
+// `lines` is null or a live buffer.
+size_t ts_debug_lines_count(const ts_debug_lines *lines);
+
+// The buffer's shapes into `out` (room for `capacity`): segments first, then circles,
+// points and boxes, each in the order they were added; `*count` is how many. When they do
+// not fit, `TS_ERROR_BUFFER_TOO_SMALL` with only `*count` written.
+//
+// # Safety
+// `lines` is a live buffer; `out` has room for `capacity` lines (or is null when
+// `capacity` is 0); `count` is writable.
+ts_status ts_debug_lines_read(ts_debug_lines *lines,
+                              ts_debug_line *out,
+                              size_t capacity,
+                              size_t *count);
+
+// Adds the map to `lines` (`TileMap::debug_lines`): cell by cell, each active segment
+// (`TS_DEBUG_ACTIVE_SEGMENT` or `TS_DEBUG_ONE_WAY_SEGMENT`) followed by its
+// `TS_DEBUG_NORMAL`, and each piece seam culling hides (`TS_DEBUG_HIDDEN_SEGMENT`).
+//
+// # Safety
+// `map` is a live map, `lines` a live buffer.
+ts_status ts_map_debug_lines(const ts_map *map, ts_debug_lines *lines);
+
+// Adds every body to `lines` (`Bodies::debug_lines`): each circle where it is
+// (`TS_DEBUG_BODY`), and after a step the box the broadphase filed it under
+// (`TS_DEBUG_BROADPHASE_BOX`), with the body's id as owner.
+//
+// # Safety
+// `bodies` is a live set, `lines` a live buffer.
+ts_status ts_bodies_debug_lines(const ts_bodies *bodies, ts_debug_lines *lines);
+
+// Adds the character to `lines` with `owner` (`Character::debug_lines`): its shape
+// (`TS_DEBUG_CHARACTER`, a box or a circle) and each surface its last move touched
+// (`TS_DEBUG_CONTACT`, from the shape's edge along the surface's normal).
+//
+// # Safety
+// `character` is a live character, `lines` a live buffer.
+ts_status ts_character_debug_lines(const ts_character *character,
+                                   uint64_t owner,
+                                   ts_debug_lines *lines);
+
+// Adds the hit world's objects as at the last step to `lines` (`HitWorld::debug_lines`):
+// attack and vulnerability volumes (`TS_DEBUG_ATTACK_VOLUME`,
+// `TS_DEBUG_VULNERABILITY_VOLUME`) and the box each swept (`TS_DEBUG_BROADPHASE_BOX`), with
+// the object's id as owner, then the step's hits where they happened (`TS_DEBUG_HIT`,
+// `TS_DEBUG_REFUSED_HIT`) with the victim's.
+//
+// # Safety
+// `world` is a live world, `lines` a live buffer.
+ts_status ts_hit_world_debug_lines(const ts_hit_world *world, ts_debug_lines *lines);
+
+// Adds the flow field's next move out of every lattice node that reaches its goal to
+// `lines` (`FlowField::debug_lines`, `TS_DEBUG_FLOW_ARROW`); `nav` is the field's grid.
+//
+// # Safety
+// `field` is a live field, `nav` a live grid, `lines` a live buffer.
+ts_status ts_flow_field_debug_lines(const ts_flow_field *field,
+                                    const ts_nav *nav,
+                                    ts_debug_lines *lines);
 
 // A hit object definition's defaults: at (0, 0), of size 0 (volumes mirror about the
 // position), facing right, team 0, not invulnerable, no swing, no volumes.

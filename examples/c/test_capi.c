@@ -3,6 +3,7 @@
  * status counts the failures. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "tileslide.h"
@@ -329,6 +330,87 @@ static void a_path_goes_round_the_block_and_a_wide_circle_has_none(void) {
     ts_map_free(map);
 }
 
+/* Debug lines: the map's walls, normals and hidden seams, bodies owned by their ids, a
+ * character and its contacts, hit volumes; kinds and a view limit them; a buffer too small
+ * says how many there are. */
+static void debug_lines_show_each_part(void) {
+    ts_map *map = NULL;
+    CHECK(ts_map_from_ascii("######\n#....#\n#.==.#\n######", 1.0f, &map) == TS_OK);
+    ts_debug_lines *lines = NULL;
+    CHECK(ts_debug_lines_create(&lines) == TS_OK);
+    if (!map || !lines) return;
+    CHECK(ts_map_debug_lines(map, lines) == TS_OK);
+    size_t n = ts_debug_lines_count(lines), m = 0;
+    CHECK(n > 20);
+    ts_debug_line few[2];
+    CHECK(ts_debug_lines_read(lines, few, 2, &m) == TS_ERROR_BUFFER_TOO_SMALL && m == n);
+    ts_debug_line *all = malloc(n * sizeof *all);
+    CHECK(all && ts_debug_lines_read(lines, all, n, &m) == TS_OK && m == n);
+    int counts[17] = {0};
+    for (size_t k = 0; all && k < n; k++) {
+        CHECK(all[k].shape == TS_DEBUG_SEGMENT && all[k].owner == 0);
+        if ((unsigned)all[k].kind < 17) counts[all[k].kind]++;
+    }
+    free(all);
+    /* The platform's two cells: one flat top, its seam hidden; every active segment has its
+     * normal. */
+    CHECK(counts[TS_DEBUG_ONE_WAY_SEGMENT] >= 1 && counts[TS_DEBUG_HIDDEN_SEGMENT] > 0);
+    CHECK(counts[TS_DEBUG_NORMAL] == counts[TS_DEBUG_ACTIVE_SEGMENT] +
+                                         counts[TS_DEBUG_ONE_WAY_SEGMENT]);
+
+    /* Only bodies, then: a body is a circle (centre, radius) owned by its id. */
+    CHECK(ts_debug_lines_clear(lines) == TS_OK && ts_debug_lines_count(lines) == 0);
+    CHECK(ts_debug_lines_set_kinds(lines, 1u << TS_DEBUG_BODY | 1u << TS_DEBUG_CHARACTER |
+                                              1u << TS_DEBUG_CONTACT) == TS_OK);
+    ts_bodies *bodies = NULL;
+    CHECK(ts_bodies_create(&bodies) == TS_OK);
+    ts_body_def def = ts_default_body_def();
+    def.x = 2.5f;
+    def.y = 1.5f;
+    def.radius = 0.25f;
+    ts_body_id id;
+    CHECK(ts_bodies_add(bodies, &def, &id) == TS_OK);
+    CHECK(ts_map_debug_lines(map, lines) == TS_OK && ts_debug_lines_count(lines) == 0);
+    CHECK(ts_bodies_debug_lines(bodies, lines) == TS_OK);
+    ts_debug_line line[4];
+    CHECK(ts_debug_lines_read(lines, line, 4, &m) == TS_OK && m == 1);
+    CHECK(line[0].kind == TS_DEBUG_BODY && line[0].shape == TS_DEBUG_CIRCLE);
+    CHECK(line[0].x0 == 2.5f && line[0].y0 == 1.5f && line[0].x1 == 0.25f);
+    CHECK(line[0].owner == ((uint64_t)id.generation << 32 | id.index));
+    /* A character standing on the platform: its box and its ground contact. */
+    ts_character_def cdef = ts_default_character_def();
+    cdef.x = 2.5f;
+    cdef.y = 1.5f;
+    ts_character *hero = NULL;
+    CHECK(ts_character_create(&cdef, &hero) == TS_OK);
+    CHECK(ts_character_move_by(hero, map, 0.0f, 1.0f, false) == TS_OK);
+    CHECK(ts_debug_lines_clear(lines) == TS_OK);
+    CHECK(ts_character_debug_lines(hero, 9, lines) == TS_OK);
+    CHECK(ts_debug_lines_read(lines, line, 4, &m) == TS_OK && m == 2);
+    CHECK(line[0].kind == TS_DEBUG_CONTACT && line[0].shape == TS_DEBUG_SEGMENT);
+    CHECK(line[0].y1 < line[0].y0 && line[0].owner == 9);
+    CHECK(line[1].kind == TS_DEBUG_CHARACTER && line[1].shape == TS_DEBUG_BOX);
+    CHECK(line[1].x0 == 2.25f && line[1].x1 == 2.75f);
+    /* A view outside the map: nothing of it. */
+    float view[4] = {100.0f, 100.0f, 110.0f, 110.0f};
+    CHECK(ts_debug_lines_set_kinds(lines, TS_DEBUG_ALL_KINDS) == TS_OK);
+    CHECK(ts_debug_lines_set_view(lines, view) == TS_OK);
+    CHECK(ts_debug_lines_clear(lines) == TS_OK);
+    CHECK(ts_map_debug_lines(map, lines) == TS_OK && ts_debug_lines_count(lines) == 0);
+    view[0] = NAN;
+    CHECK(ts_debug_lines_set_view(lines, view) == TS_ERROR_INVALID_ARGUMENT);
+    CHECK(contains(ts_last_error_message(), "view[0] is NaN"));
+    CHECK(ts_debug_lines_set_view(lines, NULL) == TS_OK);
+    CHECK(ts_map_debug_lines(map, lines) == TS_OK && ts_debug_lines_count(lines) == n);
+    CHECK(ts_map_debug_lines(NULL, lines) == TS_ERROR_NULL_POINTER);
+    CHECK(ts_debug_lines_read(lines, NULL, 5, &m) == TS_ERROR_NULL_POINTER);
+    ts_character_free(hero);
+    ts_bodies_free(bodies);
+    ts_debug_lines_free(lines);
+    ts_debug_lines_free(NULL);
+    ts_map_free(map);
+}
+
 int main(void) {
     a_ray_hits_the_wall_the_cli_names();
     every_format_loads();
@@ -338,6 +420,7 @@ int main(void) {
     a_character_lands_drops_through_and_meets_the_wall();
     volumes_hit_across_teams_once_per_swing();
     a_path_goes_round_the_block_and_a_wide_circle_has_none();
+    debug_lines_show_each_part();
     if (failures) {
         fprintf(stderr, "%d checks failed\n", failures);
         return 1;

@@ -14,7 +14,7 @@ use tileslide::{
 
 use crate::{
     Failure, TS_SHAPE_CIRCLE, TS_SHAPE_RECT, coordinate, fill, free_boxed, give_boxed, guarded,
-    ts_status,
+    id_parts, owner_of, ts_status,
 };
 
 /// Hit type: damage.
@@ -165,16 +165,9 @@ pub struct ts_hit_world {
     events: Vec<ts_hit_event>,
 }
 
-/// The owner an object registers with: its id, so the events name it.
-fn owner_of(id: ts_hit_object_id) -> Owner {
-    Owner(u64::from(id.generation) << 32 | u64::from(id.index))
-}
-
 fn id_of(owner: Owner) -> ts_hit_object_id {
-    ts_hit_object_id {
-        index: owner.0 as u32,
-        generation: (owner.0 >> 32) as u32,
-    }
+    let (index, generation) = id_parts(owner);
+    ts_hit_object_id { index, generation }
 }
 
 fn event_of(e: &HitEvent) -> ts_hit_event {
@@ -316,12 +309,8 @@ impl ts_hit_world {
             let Some(o) = &slot.object else {
                 continue;
             };
-            let id = ts_hit_object_id {
-                index,
-                generation: slot.generation,
-            };
             let object = HitObject {
-                owner: owner_of(id),
+                owner: owner_of(index, slot.generation),
                 motion: o.core.position - o.last,
                 ..o.core
             };

@@ -1,8 +1,9 @@
 //! tileslide's C API (maps, ray casts, bodies, the character, hit volumes, paths, debug
 //! lines), in the manner of Box2D v3's: opaque handles, ids passed by value, definition
 //! structs with defaults, a status on every fallible call, the reason in
-//! `ts_last_error_message()` (per thread), caller-supplied buffers for batches. No panic crosses the boundary: each call runs under `catch_unwind` and a panic
-//! becomes `TS_ERROR_PANIC`. Null pointers and coordinates that are not finite are refused
+//! `ts_last_error_message()` (per thread), caller-supplied buffers for batches. No panic
+//! crosses the boundary: each call runs under `catch_unwind` and a panic becomes
+//! `TS_ERROR_PANIC`. Null pointers and coordinates that are not finite are refused
 //! with a status, never read.
 //!
 //! The header, `include/tileslide.h`, is generated from this crate by cbindgen
@@ -21,16 +22,18 @@ use std::path::Path;
 
 mod bodies;
 mod character;
+mod debug;
 mod hit_world;
 mod nav;
 
 pub use bodies::*;
 pub use character::*;
+pub use debug::*;
 pub use hit_world::*;
 pub use nav::*;
 use tileslide::io::{LoadErrorKind, ascii};
 use tileslide::limits::MAX_COORD;
-use tileslide::{Faces, QueryFilter, Ray, RayHit, TileMap, Vec2};
+use tileslide::{Faces, Owner, QueryFilter, Ray, RayHit, TileMap, Vec2};
 
 /// What a call did: `TS_OK`, or why it did nothing (`ts_last_error_message()` says more).
 #[repr(C)]
@@ -140,6 +143,17 @@ impl Failure {
     }
 }
 
+/// The owner a body or hit object has in the core: its id, `(generation << 32) | index`,
+/// so that hit events and debug lines name it.
+pub(crate) fn owner_of(index: u32, generation: u32) -> Owner {
+    Owner(u64::from(generation) << 32 | u64::from(index))
+}
+
+/// The id (`index`, `generation`) an owner from [`owner_of`] stands for.
+pub(crate) fn id_parts(owner: Owner) -> (u32, u32) {
+    (owner.0 as u32, (owner.0 >> 32) as u32)
+}
+
 /// `value`, named `what` in errors, when it is finite and within tileslide's coordinate
 /// range (`MAX_COORD`, 2²⁴ map units from the origin).
 pub(crate) fn coordinate(what: &str, value: f32) -> Result<f32, Failure> {
@@ -153,8 +167,9 @@ pub(crate) fn coordinate(what: &str, value: f32) -> Result<f32, Failure> {
 }
 
 /// Writes `items` (`n` of them) into the caller's buffer `out` (room for `capacity`) and
-/// `n` into `*count`, `what` naming them in errors. When they do not fit, only `*count` is written
-/// (`TS_ERROR_BUFFER_TOO_SMALL`), so the caller can make room and ask again.
+/// `n` into `*count`, `what` naming them in errors. When they do not fit, only `*count` is
+/// written (`TS_ERROR_BUFFER_TOO_SMALL`), so the caller can make room and ask again; a null
+/// `out` with room said is refused before anything is written.
 ///
 /// # Safety
 /// `count` is null or writable; `out` is null or has room for `capacity` items.
@@ -169,6 +184,10 @@ pub(crate) unsafe fn fill<T>(
     if count.is_null() {
         return Err(Failure::null("count"));
     }
+    // A buffer with room is a buffer: null there is a mistake, whatever the answer's size.
+    if capacity > 0 && out.is_null() {
+        return Err(Failure::null("out"));
+    }
     // SAFETY: not null, writable as the caller promises.
     unsafe { count.write(n) };
     if n > capacity {
@@ -176,9 +195,6 @@ pub(crate) unsafe fn fill<T>(
             ts_status::TS_ERROR_BUFFER_TOO_SMALL,
             format!("{n} {what} do not fit in a buffer of {capacity}"),
         ));
-    }
-    if n > 0 && out.is_null() {
-        return Err(Failure::null("out"));
     }
     for (k, item) in items.take(n).enumerate() {
         // SAFETY: k < n <= capacity, and `out` has room for `capacity` items.

@@ -8,7 +8,7 @@ mod support;
 
 use std::ptr;
 
-use support::{ascii_map, assert_refused, last_error};
+use support::{ascii_map, assert_refused, core_map, last_error};
 use tileslide::{
     Character, CharacterShape, Contacts, ControllerConfig, MoveOptions, SegmentSource, Vec2,
 };
@@ -116,7 +116,7 @@ fn c_contacts(list: &[ts_character_contact]) -> Vec<(ts_contact_side, [u32; 2], 
 /// and returns which sides it touched along the way.
 fn run_both(def: &ts_character_def, shape: CharacterShape) -> Vec<ts_contact_side> {
     let map = ascii_map(LEVEL);
-    let core_map = tileslide::io::ascii::parse(LEVEL, "<ascii>", 1.0).unwrap();
+    let core_map = core_map(LEVEL);
     let c = new_character(def);
     let mut core = Character::new(
         shape,

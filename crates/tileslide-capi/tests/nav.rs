@@ -9,8 +9,8 @@ mod support;
 
 use std::ptr;
 
-use support::{ascii_map, assert_refused, last_error};
-use tileslide::{FlowField, NavConfig, NavGrid, Vec2};
+use support::{ascii_map, assert_refused, core_map, core_nav, last_error};
+use tileslide::{FlowField, Vec2};
 use tileslide_capi::*;
 use tileslide_scenes::{SplitMix64, crowd_candidates, dungeon256};
 
@@ -57,16 +57,9 @@ fn paths_and_a_flow_field_through_c_equal_the_cores_bit_for_bit() {
     let grid = dungeon256();
     let text = grid.to_ascii();
     let map = ascii_map(&text);
-    let core_map = tileslide::io::ascii::parse(&text, "<ascii>", 1.0).unwrap();
+    let core_map = core_map(&text);
     let nav = new_nav(map, 0.5);
-    let core_nav = NavGrid::new(
-        &core_map,
-        NavConfig {
-            max_radius: 0.5,
-            ..NavConfig::default()
-        },
-    )
-    .unwrap();
+    let core_nav = core_nav(&core_map, 0.5);
     let spots = crowd_candidates(&grid);
     let mut rng = SplitMix64::new(0x9a7b);
     let (mut found, mut none) = (0, 0);

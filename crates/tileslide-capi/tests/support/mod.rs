@@ -29,6 +29,20 @@ pub fn ascii_map(text: &str) -> *mut ts_map {
     map
 }
 
+/// The same map through the core, as `ts_map_from_ascii` parses it.
+pub fn core_map(text: &str) -> tileslide::TileMap {
+    tileslide::io::ascii::parse(text, "<ascii>", 1.0).unwrap()
+}
+
+/// The core's navigation grid of `map` for circles up to `max_radius`.
+pub fn core_nav(map: &tileslide::TileMap, max_radius: f32) -> tileslide::NavGrid {
+    let config = tileslide::NavConfig {
+        max_radius,
+        ..tileslide::NavConfig::default()
+    };
+    tileslide::NavGrid::new(map, config).unwrap()
+}
+
 /// Asserts that `status` is `expected` and the last error mentions `words`.
 #[track_caller]
 pub fn assert_refused(status: ts_status, expected: ts_status, words: &str) {
