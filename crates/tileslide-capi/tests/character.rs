@@ -31,8 +31,8 @@ const GRAVITY: f32 = 30.0;
 /// to drop through platforms.
 fn input(step: usize) -> (f32, bool, bool) {
     let run = match step {
-        0..=39 => 2.0,
-        40..=119 => 0.0,
+        0..=44 => 3.0,
+        45..=119 => 0.0,
         120..=259 => 5.0,
         _ => -3.0,
     };
@@ -113,8 +113,8 @@ fn c_contacts(list: &[ts_character_contact]) -> Vec<(ts_contact_side, [u32; 2], 
 }
 
 /// Runs 300 steps through C and through the core side by side, for a character of `def`,
-/// and returns which sides it touched along the way.
-fn run_both(def: &ts_character_def, shape: CharacterShape) -> Vec<ts_contact_side> {
+/// and returns the sides it touched along the way, with their flags.
+fn run_both(def: &ts_character_def, shape: CharacterShape) -> Vec<(ts_contact_side, u32)> {
     let map = ascii_map(LEVEL);
     let core_map = core_map(LEVEL);
     let c = new_character(def);
@@ -133,7 +133,7 @@ fn run_both(def: &ts_character_def, shape: CharacterShape) -> Vec<ts_contact_sid
         let s = state(c);
         let mut vy = s.vy + GRAVITY * DT;
         if jump && s.grounded {
-            vy = -11.0;
+            vy = -16.0;
         }
         // SAFETY: a live character and map.
         unsafe {
@@ -145,7 +145,7 @@ fn run_both(def: &ts_character_def, shape: CharacterShape) -> Vec<ts_contact_sid
         }
         velocity.y += GRAVITY * DT;
         if jump && core.ground().is_some() {
-            velocity.y = -11.0;
+            velocity.y = -16.0;
         }
         velocity.x = run;
         let k = core
@@ -165,7 +165,7 @@ fn run_both(def: &ts_character_def, shape: CharacterShape) -> Vec<ts_contact_sid
         assert_eq!(s.grounded, k.is_grounded(), "step {step}");
         let list = contacts(c);
         assert_eq!(c_contacts(&list), core_contacts(&k), "step {step}");
-        touched.extend(list.iter().map(|c| c.side));
+        touched.extend(list.iter().map(|c| (c.side, c.flags)));
     }
     // SAFETY: freed once.
     unsafe {
@@ -184,10 +184,15 @@ fn a_box_run_through_c_equals_the_cores_bit_for_bit() {
     };
     let shape = CharacterShape::rect(Vec2::new(def.half_width, def.half_height)).unwrap();
     let touched = run_both(&def, shape);
-    // The run is worth comparing: it lands, meets the right wall and the ramp's wall.
+    // The run is worth comparing: it stands on the one-way platform (jumped up through it),
+    // on the floor (dropped through it), and meets the right wall.
     use ts_contact_side::*;
-    for side in [TS_CONTACT_GROUND, TS_CONTACT_RIGHT] {
-        assert!(touched.contains(&side), "never touched {side:?}");
+    for touch in [
+        (TS_CONTACT_GROUND, TS_SEGMENT_ONE_WAY),
+        (TS_CONTACT_GROUND, TS_SEGMENT_SOLID),
+        (TS_CONTACT_RIGHT, TS_SEGMENT_SOLID),
+    ] {
+        assert!(touched.contains(&touch), "never touched {touch:?}");
     }
 }
 
@@ -201,7 +206,8 @@ fn a_circle_run_through_c_equals_the_cores_bit_for_bit() {
         ..ts_default_character_def()
     };
     let touched = run_both(&def, CharacterShape::circle(0.35).unwrap());
-    assert!(touched.contains(&ts_contact_side::TS_CONTACT_GROUND));
+    let one_way = (ts_contact_side::TS_CONTACT_GROUND, TS_SEGMENT_ONE_WAY);
+    assert!(touched.contains(&one_way), "never stood on the platform");
 }
 
 #[test]
