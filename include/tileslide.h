@@ -13,6 +13,48 @@
 // Ray flag: faces count from both sides (by default only faces the ray meets head-on).
 #define TS_RAY_BOTH_SIDES 1
 
+// Shape: a circle (of a character or a hit volume).
+#define TS_SHAPE_CIRCLE 0
+
+// Shape: an axis-aligned rectangle, by its half width and half height.
+#define TS_SHAPE_RECT 1
+
+// Segment flag: a solid segment.
+#define TS_SEGMENT_SOLID 1
+
+// Segment flag: a one-way platform (blocks only from its front).
+#define TS_SEGMENT_ONE_WAY 2
+
+// The most contacts a character reports after a move: one of each side.
+#define TS_CHARACTER_MAX_CONTACTS 5
+
+// Every debug kind, for `ts_debug_lines_set_kinds`.
+#define TS_DEBUG_ALL_KINDS UINT32_MAX
+
+// Hit type: damage.
+#define TS_HIT_TYPE_HIT 1
+
+// Hit type: kills outright.
+#define TS_HIT_TYPE_DEATH 2
+
+// Hit type: picks up (a coin, a gem).
+#define TS_HIT_TYPE_COLLECT 4
+
+// Hit type: takes control of (a robot).
+#define TS_HIT_TYPE_POSSESS 8
+
+// Hit type: presses (a button).
+#define TS_HIT_TYPE_DEPRESS 16
+
+// Hit type: throws (a spring, a cannon).
+#define TS_HIT_TYPE_LAUNCH 32
+
+// Every hit type: a vulnerability volume of it accepts anything.
+#define TS_HIT_TYPE_ANY UINT32_MAX
+
+// `swing` of an object making no swing.
+#define TS_NO_SWING UINT64_MAX
+
 // What a call did: `TS_OK`, or why it did nothing (`ts_last_error_message()` says more).
 typedef enum {
   // Done.
@@ -31,16 +73,104 @@ typedef enum {
   TS_ERROR_LOAD = 5,
   // tileslide panicked: a bug, reported rather than carried across the boundary.
   TS_ERROR_PANIC = 6,
-  // A body id whose body was removed (or that never named one).
+  // A body or hit object id whose body or object was removed (or that never named one).
   TS_ERROR_STALE_HANDLE = 7,
+  // A caller's buffer has less room than the answer needs: nothing was written to it,
+  // and the call's `count` says how many entries it needs.
+  TS_ERROR_BUFFER_TOO_SMALL = 8,
 } ts_status;
+
+// Which surface of a character a contact is.
+typedef enum {
+  // Walkable ground under it after the move.
+  TS_CONTACT_GROUND = 0,
+  // A ceiling that stopped it.
+  TS_CONTACT_CEILING = 1,
+  // A wall on its left (lower x): the normal points right.
+  TS_CONTACT_LEFT = 2,
+  // A wall on its right: the normal points left.
+  TS_CONTACT_RIGHT = 3,
+  // A moving platform that pressed it into the world.
+  TS_CONTACT_CRUSH = 4,
+} ts_contact_side;
+
+// What a debug line shows (the core's `DebugKind`, by the same numbers): a front end picks
+// its colour and layer by it.
+typedef enum {
+  // An active solid segment of the map, after seam culling (a segment).
+  TS_DEBUG_ACTIVE_SEGMENT = 0,
+  // An active one-way platform segment (a segment).
+  TS_DEBUG_ONE_WAY_SEGMENT = 1,
+  // A segment's outward normal, from its middle (a segment).
+  TS_DEBUG_NORMAL = 2,
+  // A piece of a tile's segment that seam culling hides (a segment).
+  TS_DEBUG_HIDDEN_SEGMENT = 3,
+  // A temporary segment: a moving platform, a door (a segment).
+  TS_DEBUG_TEMPORARY_SEGMENT = 4,
+  // A body's circle (a circle; one per circle of a compound).
+  TS_DEBUG_BODY = 5,
+  // A character's shape (a circle or a box).
+  TS_DEBUG_CHARACTER = 6,
+  // A surface a character touched, from the contact along its normal (a segment).
+  TS_DEBUG_CONTACT = 7,
+  // A ray (a segment).
+  TS_DEBUG_RAY = 8,
+  // Where a ray hit (a point).
+  TS_DEBUG_RAY_HIT = 9,
+  // An attack volume (a circle or a box).
+  TS_DEBUG_ATTACK_VOLUME = 10,
+  // A vulnerability volume (a circle or a box).
+  TS_DEBUG_VULNERABILITY_VOLUME = 11,
+  // An accepted hit, where it happened (a point).
+  TS_DEBUG_HIT = 12,
+  // A refused hit (a point).
+  TS_DEBUG_REFUSED_HIT = 13,
+  // A leg of a navigation path (a segment).
+  TS_DEBUG_PATH = 14,
+  // A flow field's next move out of a lattice node (a segment).
+  TS_DEBUG_FLOW_ARROW = 15,
+  // A box the broadphase files something under (a box).
+  TS_DEBUG_BROADPHASE_BOX = 16,
+} ts_debug_kind;
+
+// Which shape a debug line is, and so what its four numbers say.
+typedef enum {
+  // From (`x0`, `y0`) to (`x1`, `y1`).
+  TS_DEBUG_SEGMENT = 0,
+  // Centred on (`x0`, `y0`), of radius `x1` (`y1` is 0).
+  TS_DEBUG_CIRCLE = 1,
+  // At (`x0`, `y0`) (`x1`, `y1` are the same).
+  TS_DEBUG_POINT = 2,
+  // An axis-aligned box from its lowest corner (`x0`, `y0`) to its highest (`x1`, `y1`).
+  TS_DEBUG_BOX = 3,
+} ts_debug_shape;
 
 // A set of bodies (opaque): made by `ts_bodies_create`, freed by `ts_bodies_free`.
 typedef struct ts_bodies ts_bodies;
 
+// A platformer character (opaque): made by `ts_character_create`, freed by
+// `ts_character_free`.
+typedef struct ts_character ts_character;
+
+// A buffer of debug lines (opaque): made by `ts_debug_lines_create`, freed by
+// `ts_debug_lines_free`. Keep one, clear it each frame and fill it again: once it has
+// grown to a frame's size it allocates no more.
+typedef struct ts_debug_lines ts_debug_lines;
+
+// The way to one goal for circles of one radius from everywhere on a map (opaque): made
+// by `ts_flow_field_create`, freed by `ts_flow_field_free`.
+typedef struct ts_flow_field ts_flow_field;
+
+// Hit objects and the hits between them (opaque): made by `ts_hit_world_create`, freed by
+// `ts_hit_world_free`.
+typedef struct ts_hit_world ts_hit_world;
+
 // A collision map (opaque): made by `ts_map_load_file` or `ts_map_from_ascii`, freed by
 // `ts_map_free`.
 typedef struct ts_map ts_map;
+
+// A map's navigation grid (opaque): made by `ts_nav_create`, freed by `ts_nav_free`.
+typedef struct ts_nav ts_nav;
 
 // A ray's hit: where along the ray (`t` in [0, 1] from start to end), the point, the
 // outward unit normal of the face hit, and the tile's cell and id (`TS_NONE` for each when
@@ -113,6 +243,173 @@ typedef struct {
   size_t cut_short;
 } ts_step_report;
 
+// What a character is and how it moves: start from `ts_default_character_def()` and set
+// what differs. Distances are in map units (the defaults suit cells of size 1).
+typedef struct {
+  // The shape's centre, x.
+  float x;
+  // The shape's centre, y.
+  float y;
+  // `TS_SHAPE_RECT` (by `half_width`, `half_height`) or `TS_SHAPE_CIRCLE` (by `radius`).
+  uint32_t shape;
+  // A rectangle's half width.
+  float half_width;
+  // A rectangle's half height.
+  float half_height;
+  // A circle's radius.
+  float radius;
+  // The up direction, x (any length but zero).
+  float up_x;
+  // The up direction, y: -1 by default, for maps whose row 0 is the top (ASCII, Tiled).
+  float up_y;
+  // The steepest walkable slope, in degrees from level, in [0, 90).
+  float max_slope_degrees;
+  // How far below its feet a grounded character looks for ground to stay on.
+  float snap_distance;
+  // The gap kept between the character and every surface it stops against.
+  float skin;
+  // How many times one move may hit a surface and slide on (at least 1).
+  uint32_t max_slides;
+  // The highest ledge a walk steps up onto (0: none).
+  float step_height;
+  // The segment flags that block it (`TS_SEGMENT_SOLID | TS_SEGMENT_ONE_WAY`).
+  uint32_t mask;
+} ts_character_def;
+
+// Where a character is after its last step, how fast the game's velocity is once the
+// surfaces touched have taken out what they stopped, and whether it stands on ground.
+typedef struct {
+  // The shape's centre, x.
+  float x;
+  // The shape's centre, y.
+  float y;
+  // The velocity, x.
+  float vx;
+  // The velocity, y.
+  float vy;
+  // Stands on walkable ground.
+  bool grounded;
+} ts_character_state;
+
+// One surface a character touched in its last move.
+typedef struct {
+  // Which surface.
+  ts_contact_side side;
+  // The surface's unit normal, pointing towards the character, x.
+  float nx;
+  // The normal, y.
+  float ny;
+  // The segment's flags (`TS_SEGMENT_ONE_WAY` for a platform).
+  uint32_t flags;
+  // The tile's column (`TS_NONE` for a surface that is not a tile's).
+  uint32_t col;
+  // The tile's row (`TS_NONE` likewise).
+  uint32_t row;
+  // The tile's id (`TS_NONE` likewise).
+  uint32_t tile;
+} ts_character_contact;
+
+// One debug shape, in map units.
+typedef struct {
+  // See `shape`.
+  float x0;
+  // See `shape`.
+  float y0;
+  // See `shape`.
+  float x1;
+  // See `shape`.
+  float y1;
+  // What it shows.
+  ts_debug_kind kind;
+  // What the four numbers say.
+  ts_debug_shape shape;
+  // Whose it is: a body's or hit object's id as `(generation << 32) | index`, the owner
+  // given for a character, 0 for the map's own.
+  uint64_t owner;
+} ts_debug_line;
+
+// An attack or vulnerability volume in its object's coordinates: a circle or a rectangle,
+// and the hit types it deals (attack) or accepts (vulnerability).
+typedef struct {
+  // `TS_SHAPE_CIRCLE` (by `radius`) or `TS_SHAPE_RECT` (by `half_width`, `half_height`).
+  uint32_t shape;
+  // The centre's offset from the object's position, x.
+  float x;
+  // The centre's offset, y.
+  float y;
+  // A circle's radius (not negative).
+  float radius;
+  // A rectangle's half width (not negative).
+  float half_width;
+  // A rectangle's half height (not negative).
+  float half_height;
+  // Hit types (`TS_HIT_TYPE_*` bits; bits 6 and up are the game's own).
+  uint32_t hit;
+} ts_volume;
+
+// What a hit object is: start from `ts_default_hit_object_def()` and set what differs.
+typedef struct {
+  // The position (its volumes' origin), x.
+  float x;
+  // The position, y.
+  float y;
+  // Its width: volumes are mirrored about the middle of its size when it is flipped.
+  float width;
+  // Its height.
+  float height;
+  // Mirrors its volumes left to right (facing left, for volumes drawn facing right).
+  bool flip_x;
+  // Mirrors its volumes top to bottom.
+  bool flip_y;
+  // Its team: hits within a team are refused.
+  uint32_t team;
+  // Refuses every hit (a hero blinking after one).
+  bool invulnerable;
+  // The attack it is making, to hit each victim at most once until it ends (the first
+  // step in which no object makes it), or `TS_NO_SWING`.
+  uint64_t swing;
+  // Its attack volumes (`attack_count` of them; null when 0). The first that meets a
+  // vulnerability volume accepting one of its types gives the hit.
+  const ts_volume *attack;
+  // How many `attack` holds.
+  size_t attack_count;
+  // Its vulnerability volumes (`vulnerable_count` of them; null when 0).
+  const ts_volume *vulnerable;
+  // How many `vulnerable` holds.
+  size_t vulnerable_count;
+} ts_hit_object_def;
+
+// A hit object's id, passed by value. Once its object is removed the id is stale for
+// good: calls with it return `TS_ERROR_STALE_HANDLE`, even after its slot is given to
+// another object.
+typedef struct {
+  // The object's slot (objects are tested in slot order).
+  uint32_t index;
+  // How many objects had the slot before this one.
+  uint32_t generation;
+} ts_hit_object_id;
+
+// One hit of the last step: an attack volume of `attacker` met a vulnerability volume of
+// `victim` accepting `hit_type`.
+typedef struct {
+  // Who hit.
+  ts_hit_object_id attacker;
+  // Who was hit.
+  ts_hit_object_id victim;
+  // The types dealt: the attack volume's that the vulnerability volume accepts.
+  uint32_t hit_type;
+  // Whether the victim took it: they are on different teams and the victim is not
+  // invulnerable.
+  bool accepted;
+  // When the volumes first touched, as a fraction of the step's move in [0, 1] (0 when
+  // they overlap where it starts).
+  float t;
+  // Where they touched then, x.
+  float x;
+  // Where they touched then, y.
+  float y;
+} ts_hit_event;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -135,7 +432,7 @@ const char *ts_version(void);
 // to a writable `ts_map*`.
 ts_status ts_map_load_file(const char *path, const char *tileset_path_or_null, ts_map **out);
 
-// Builds a map from ASCII text (`#` solid, `.` empty, `/` `\` ramps, `-` one-way; rows
+// Builds a map from ASCII text (`#` solid, `.` empty, `/` `\` ramps, `=` one-way; rows
 // top to bottom) with square cells of side `cell`. On `TS_OK`, `*out` is the map.
 //
 // # Safety
@@ -205,9 +502,10 @@ ts_status ts_bodies_create(ts_bodies **out);
 // `bodies` is null or a set from this library not yet freed.
 void ts_bodies_free(ts_bodies *bodies);
 
-// Adds a body as `def` says. On `TS_OK`, `*out` is its id. A radius that is not positive,
-// a position or offset that is not finite or beyond the coordinate range, and a compound
-// with `circle_count` circles but a null `circles` are refused.
+// Adds a body as `def` says. On `TS_OK`, `*out` is its id, which is also its owner in the
+// core, `(generation << 32) | index`, as its debug lines name it. A radius that is not
+// positive, a position or offset that is not finite or beyond the coordinate range, and a
+// compound with `circle_count` circles but a null `circles` are refused.
 //
 // # Safety
 // `bodies` is a live set; `def` points to a definition whose `circles` holds
@@ -272,6 +570,343 @@ ts_status ts_bodies_positions(const ts_bodies *bodies,
                               const ts_body_id *ids,
                               size_t n,
                               float *out_xy);
+
+// A character definition's defaults: at (0, 0), a box 0.5 wide and 0.8 tall, up -y, and
+// the core's `ControllerConfig` defaults (slopes to 50°, snap 0.3, skin 0.001, 4 slides,
+// no stepping up, blocked by solid and one-way segments).
+ts_character_def ts_default_character_def(void);
+
+// Makes a character as `def` says, standing still. On `TS_OK`, `*out` is the character,
+// for `ts_character_free`. A position or up that is not finite (or up zero), a size that is
+// not positive, an unknown shape and settings out of range are refused, named.
+//
+// # Safety
+// `def` points to a definition; `out` points to a writable `ts_character*`.
+ts_status ts_character_create(const ts_character_def *def, ts_character **out);
+
+// Frees a character (null is ignored).
+//
+// # Safety
+// `character` is null or a character from this library not yet freed.
+void ts_character_free(ts_character *character);
+
+// Sets what the game asks of the character for the coming steps: its velocity (`vx`,
+// `vy`, map units per second, gravity and jumps included: those are the game's rules) and
+// whether it drops through one-way platforms (hold it until it is clear of one). Each
+// `ts_character_step` moves it by velocity × dt and keeps in the velocity what the
+// surfaces touched leave of it, so a game adds gravity to `ts_character_get_state`'s
+// velocity and sets it back.
+//
+// # Safety
+// `character` is a live character.
+ts_status ts_character_set_input(ts_character *character, float vx, float vy, bool drop_through);
+
+// One step of `dt` seconds (finite, not negative) through `map` and its temporary
+// segments: moves the character by its velocity × dt as far as the world lets it
+// (`Character::move_and_slide`), takes out of the velocity what the surfaces touched
+// stopped (landing zeroes the fall, a ceiling the rise, a wall the speed into it), and
+// keeps what it touched for `ts_character_contacts`. On a failure nothing changes.
+//
+// # Safety
+// `character` is a live character, `map` a live map.
+ts_status ts_character_step(ts_character *character, const ts_map *map, float dt);
+
+// Moves the character by (`dx`, `dy`) through `map` as far as the world lets it
+// (`Character::move_by`), for a game that makes its own displacements; its velocity is
+// left as it was. `drop_through` falls through one-way platforms during this move.
+//
+// # Safety
+// `character` is a live character, `map` a live map.
+ts_status ts_character_move_by(ts_character *character,
+                               const ts_map *map,
+                               float dx,
+                               float dy,
+                               bool drop_through);
+
+// Moves the character to (`x`, `y`) at once (a teleport: no sweep), forgetting its ground
+// and contacts; its velocity is left as it was.
+//
+// # Safety
+// `character` is a live character.
+ts_status ts_character_teleport(ts_character *character, float x, float y);
+
+// The character's position, velocity and whether it stands on ground, into `*out`.
+//
+// # Safety
+// `character` is a live character; `out` points to a writable `ts_character_state`.
+ts_status ts_character_get_state(const ts_character *character, ts_character_state *out);
+
+// The surfaces the character touched in its last step or move, into `out` (room for
+// `capacity`; `TS_CHARACTER_MAX_CONTACTS` always suffices), ground first, then ceiling,
+// left, right and crush, each at most once; `*count` is how many. When they do not fit,
+// `TS_ERROR_BUFFER_TOO_SMALL` with only `*count` written.
+//
+// # Safety
+// `character` is a live character; `out` has room for `capacity` contacts (or is null
+// when `capacity` is 0); `count` is writable.
+ts_status ts_character_contacts(const ts_character *character,
+                                ts_character_contact *out,
+                                size_t capacity,
+                                size_t *count);
+
+// Makes an empty buffer of debug lines that takes every kind, everywhere. On `TS_OK`,
+// `*out` is the buffer, for `ts_debug_lines_free`.
+//
+// # Safety
+// `out` points to a writable `ts_debug_lines*`.
+ts_status ts_debug_lines_create(ts_debug_lines **out);
+
+// Frees a buffer of debug lines (null is ignored).
+//
+// # Safety
+// `lines` is null or a buffer from this library not yet freed.
+void ts_debug_lines_free(ts_debug_lines *lines);
+
+// Empties the buffer, keeping its memory, kinds and view.
+//
+// # Safety
+// `lines` is a live buffer.
+ts_status ts_debug_lines_clear(ts_debug_lines *lines);
+
+// Takes only the kinds in `kinds` from now on: bit `1 << k` for `ts_debug_kind` k
+// (`TS_DEBUG_ALL_KINDS` for every kind). Fillers skip the work for kinds left out (the
+// map works out no hidden pieces unless `TS_DEBUG_HIDDEN_SEGMENT` is in).
+//
+// # Safety
+// `lines` is a live buffer.
+ts_status ts_debug_lines_set_kinds(ts_debug_lines *lines, uint32_t kinds);
+
+// Takes only shapes touching the box `view` from now on (4 floats: lowest x and y, then
+// highest x and y, in map units), or shapes anywhere for null: a map then visits only the
+// cells the view overlaps.
+//
+// # Safety
+// `lines` is a live buffer; `view` is null or points to 4 floats.
+ts_status ts_debug_lines_set_view(ts_debug_lines *lines, const float *view);
+
+// How many shapes the buffer holds (0 for null).
+//
+// # Safety
+// `lines` is null or a live buffer.
+size_t ts_debug_lines_count(const ts_debug_lines *lines);
+
+// The buffer's shapes into `out` (room for `capacity`): segments first, then circles,
+// points and boxes, each in the order they were added; `*count` is how many. When they do
+// not fit, `TS_ERROR_BUFFER_TOO_SMALL` with only `*count` written.
+//
+// # Safety
+// `lines` is a live buffer; `out` has room for `capacity` lines (or is null when
+// `capacity` is 0); `count` is writable.
+ts_status ts_debug_lines_read(ts_debug_lines *lines,
+                              ts_debug_line *out,
+                              size_t capacity,
+                              size_t *count);
+
+// Adds the map to `lines` (`TileMap::debug_lines`): cell by cell, each active segment
+// (`TS_DEBUG_ACTIVE_SEGMENT` or `TS_DEBUG_ONE_WAY_SEGMENT`) followed by its
+// `TS_DEBUG_NORMAL`, and each piece seam culling hides (`TS_DEBUG_HIDDEN_SEGMENT`).
+//
+// # Safety
+// `map` is a live map, `lines` a live buffer.
+ts_status ts_map_debug_lines(const ts_map *map, ts_debug_lines *lines);
+
+// Adds every body to `lines` (`Bodies::debug_lines`): each circle where it is
+// (`TS_DEBUG_BODY`), and after a step the box the broadphase filed it under
+// (`TS_DEBUG_BROADPHASE_BOX`), with the body's id as owner.
+//
+// # Safety
+// `bodies` is a live set, `lines` a live buffer.
+ts_status ts_bodies_debug_lines(const ts_bodies *bodies, ts_debug_lines *lines);
+
+// Adds the character to `lines` with `owner` (`Character::debug_lines`): its shape
+// (`TS_DEBUG_CHARACTER`, a box or a circle) and each surface its last move touched
+// (`TS_DEBUG_CONTACT`, from the shape's edge along the surface's normal).
+//
+// # Safety
+// `character` is a live character, `lines` a live buffer.
+ts_status ts_character_debug_lines(const ts_character *character,
+                                   uint64_t owner,
+                                   ts_debug_lines *lines);
+
+// Adds the hit world's objects as at the last step to `lines` (`HitWorld::debug_lines`):
+// attack and vulnerability volumes (`TS_DEBUG_ATTACK_VOLUME`,
+// `TS_DEBUG_VULNERABILITY_VOLUME`) and the box each swept (`TS_DEBUG_BROADPHASE_BOX`), with
+// the object's id as owner, then the step's hits where they happened (`TS_DEBUG_HIT`,
+// `TS_DEBUG_REFUSED_HIT`) with the victim's.
+//
+// # Safety
+// `world` is a live world, `lines` a live buffer.
+ts_status ts_hit_world_debug_lines(const ts_hit_world *world, ts_debug_lines *lines);
+
+// Adds the flow field's next move out of every lattice node that reaches its goal to
+// `lines` (`FlowField::debug_lines`, `TS_DEBUG_FLOW_ARROW`); `nav` is the field's grid.
+//
+// # Safety
+// `field` is a live field, `nav` a live grid, `lines` a live buffer.
+ts_status ts_flow_field_debug_lines(const ts_flow_field *field,
+                                    const ts_nav *nav,
+                                    ts_debug_lines *lines);
+
+// A hit object definition's defaults: at (0, 0), of size 0 (volumes mirror about the
+// position), facing right, team 0, not invulnerable, no swing, no volumes.
+ts_hit_object_def ts_default_hit_object_def(void);
+
+// Makes an empty hit world (sweep and prune on x, as Replica Island's). On `TS_OK`,
+// `*out` is the world, for `ts_hit_world_free`.
+//
+// # Safety
+// `out` points to a writable `ts_hit_world*`.
+ts_status ts_hit_world_create(ts_hit_world **out);
+
+// Frees a hit world (null is ignored); its ids are meaningless afterwards.
+//
+// # Safety
+// `world` is null or a world from this library not yet freed.
+void ts_hit_world_free(ts_hit_world *world);
+
+// Adds an object as `def` says (its volumes are copied). On `TS_OK`, `*out` is its id.
+// A position or size that is not finite or beyond the coordinate range, a negative radius
+// or half extent, an unknown shape, and a count with a null list are refused, named.
+//
+// # Safety
+// `world` is a live world; `def` points to a definition whose lists hold as many volumes
+// as it says (or are null); `out` points to a writable `ts_hit_object_id`.
+ts_status ts_hit_world_add(ts_hit_world *world,
+                           const ts_hit_object_def *def,
+                           ts_hit_object_id *out);
+
+// Replaces what the object is (volumes, size, facing, team, invulnerability, swing) with
+// what `def` says; its position becomes `def`'s as `ts_hit_world_move` moves it (swept at
+// the next step from where it was at the last).
+//
+// # Safety
+// `world` is a live world; `def` as for `ts_hit_world_add`.
+ts_status ts_hit_world_set(ts_hit_world *world, ts_hit_object_id id, const ts_hit_object_def *def);
+
+// Moves an object to (`x`, `y`): at the next step its volumes are swept from where they
+// were at the last step (or where it was added) to here, so a fast one cannot pass
+// through a target.
+//
+// # Safety
+// `world` is a live world.
+ts_status ts_hit_world_move(ts_hit_world *world, ts_hit_object_id id, float x, float y);
+
+// Removes an object; its id is stale from now on. The last step's events still name it.
+//
+// # Safety
+// `world` is a live world.
+ts_status ts_hit_world_remove(ts_hit_world *world, ts_hit_object_id id);
+
+// The number of objects in the world (0 for null).
+//
+// # Safety
+// `world` is null or a live world.
+size_t ts_hit_world_count(const ts_hit_world *world);
+
+// One step: every object's volumes tested against the others' along their moves since
+// the last step; the hits, in a fixed order (by pair of objects in slot order, then each
+// direction), kept for `ts_hit_world_events` until the next step. A victim takes a hit
+// from another team while it is not invulnerable; an attack with a swing hits each
+// victim once until the swing ends.
+//
+// # Safety
+// `world` is a live world.
+ts_status ts_hit_world_step(ts_hit_world *world);
+
+// The last step's hits, into `out` (room for `capacity`); `*count` is how many. When
+// they do not fit, `TS_ERROR_BUFFER_TOO_SMALL` with only `*count` written: the events stay
+// until the next step, so ask again with more room.
+//
+// # Safety
+// `world` is a live world; `out` has room for `capacity` events (or is null when
+// `capacity` is 0); `count` is writable.
+ts_status ts_hit_world_events(const ts_hit_world *world,
+                              ts_hit_event *out,
+                              size_t capacity,
+                              size_t *count);
+
+// Builds the navigation grid of `map` for circles up to `max_radius` wide (positive, at
+// most 31 of the map's shorter cell side; building costs more the larger it is). Solid
+// segments block; one-way platforms block from their front only. On `TS_OK`, `*out` is
+// the grid, for `ts_nav_free`; use it with this map only.
+//
+// # Safety
+// `map` is a live map; `out` points to a writable `ts_nav*`.
+ts_status ts_nav_create(const ts_map *map, float max_radius, ts_nav **out);
+
+// Frees a navigation grid (null is ignored).
+//
+// # Safety
+// `nav` is null or a grid from this library not yet freed.
+void ts_nav_free(ts_nav *nav);
+
+// The shortest path for a circle of `radius` from (`x0`, `y0`) to (`x1`, `y1`) on `map`
+// (the grid's map), smoothed into straight runs each clear by the map's circle cast
+// (`NavGrid::find_path`): its corners from start to goal into `out_xy`, `out_xy[2k]`,
+// `out_xy[2k + 1]` for corner k, room for `capacity` corners; `*count` is how many. A
+// path has at least two corners; `TS_OK` with `*count` 0 means there is none (the circle
+// does not fit at an end, or cannot get from one to the other), which is not an error.
+// When the corners do not fit, `TS_ERROR_BUFFER_TOO_SMALL` with only `*count` written.
+//
+// # Safety
+// `nav` is a live grid, `map` a live map; `out_xy` has room for `2 capacity` floats (or is
+// null when `capacity` is 0); `count` is writable.
+ts_status ts_nav_find_path(const ts_nav *nav,
+                           const ts_map *map,
+                           float x0,
+                           float y0,
+                           float x1,
+                           float y1,
+                           float radius,
+                           float *out_xy,
+                           size_t capacity,
+                           size_t *count);
+
+// Builds the flow field of the goal (`x`, `y`) for circles of `radius` on `map` (the
+// grid's map): every place's way to the goal, for crowds that share it. If the circle
+// does not fit at the goal, nothing reaches it. On `TS_OK`, `*out` is the field, for
+// `ts_flow_field_free`.
+//
+// # Safety
+// `nav` is a live grid, `map` a live map; `out` points to a writable `ts_flow_field*`.
+ts_status ts_flow_field_create(const ts_nav *nav,
+                               const ts_map *map,
+                               float x,
+                               float y,
+                               float radius,
+                               ts_flow_field **out);
+
+// Frees a flow field (null is ignored).
+//
+// # Safety
+// `field` is null or a field from this library not yet freed.
+void ts_flow_field_free(ts_flow_field *field);
+
+// The unit direction a circle at (`x`, `y`) should move in to reach the field's goal
+// (`FlowField::direction`), into `*dx`, `*dy`: (0, 0) when it cannot reach the goal or
+// is on it. `nav` and `map` are the field's.
+//
+// # Safety
+// `field`, `nav` and `map` are live; `dx` and `dy` are writable.
+ts_status ts_flow_field_direction(const ts_flow_field *field,
+                                  const ts_nav *nav,
+                                  const ts_map *map,
+                                  float x,
+                                  float y,
+                                  float *dx,
+                                  float *dy);
+
+// The length of the way from (`x`, `y`) to the field's goal along the field
+// (`FlowField::distance`), into `*out`: infinity when a circle there cannot reach it.
+//
+// # Safety
+// `field`, `nav` and `map` are live; `out` is writable.
+ts_status ts_flow_field_distance(const ts_flow_field *field,
+                                 const ts_nav *nav,
+                                 const ts_map *map,
+                                 float x,
+                                 float y,
+                                 float *out);
 
 #ifdef __cplusplus
 }  // extern "C"

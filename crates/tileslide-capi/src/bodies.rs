@@ -5,7 +5,7 @@ use std::ptr;
 
 use tileslide::{Bodies, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Circle, Vec2};
 
-use crate::{Failure, guarded, map_ref, ts_map, ts_status};
+use crate::{Failure, free_boxed, give_boxed, guarded, map_ref, owner_of, ts_map, ts_status};
 
 /// A set of bodies (opaque): made by `ts_bodies_create`, freed by `ts_bodies_free`.
 pub struct ts_bodies {
@@ -99,7 +99,7 @@ unsafe fn set_mut<'a>(bodies: *mut ts_bodies) -> Result<&'a mut Bodies, Failure>
 
 /// # Safety
 /// `bodies` is null or a live set.
-unsafe fn set_ref<'a>(bodies: *const ts_bodies) -> Result<&'a Bodies, Failure> {
+pub(crate) unsafe fn set_ref<'a>(bodies: *const ts_bodies) -> Result<&'a Bodies, Failure> {
     // SAFETY: null or a live set, as the caller promises.
     unsafe { bodies.as_ref() }
         .map(|b| &b.bodies)
@@ -133,11 +133,11 @@ pub unsafe extern "C" fn ts_bodies_create(out: *mut *mut ts_bodies) -> ts_status
         if out.is_null() {
             return Err(Failure::null("out"));
         }
-        let boxed = Box::into_raw(Box::new(ts_bodies {
+        let set = ts_bodies {
             bodies: Bodies::new(),
-        }));
+        };
         // SAFETY: not null, writable as the caller promises.
-        unsafe { out.write(boxed) };
+        unsafe { give_boxed(out, set) };
         Ok(())
     })
 }
@@ -148,18 +148,14 @@ pub unsafe extern "C" fn ts_bodies_create(out: *mut *mut ts_bodies) -> ts_status
 /// `bodies` is null or a set from this library not yet freed.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn ts_bodies_free(bodies: *mut ts_bodies) {
-    if bodies.is_null() {
-        return;
-    }
-    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        // SAFETY: a set from `Box::into_raw`, freed once as the caller promises.
-        drop(unsafe { Box::from_raw(bodies) });
-    }));
+    // SAFETY: null or from `ts_bodies_create`, freed once, as the caller promises.
+    unsafe { free_boxed(bodies) };
 }
 
-/// Adds a body as `def` says. On `TS_OK`, `*out` is its id. A radius that is not positive,
-/// a position or offset that is not finite or beyond the coordinate range, and a compound
-/// with `circle_count` circles but a null `circles` are refused.
+/// Adds a body as `def` says. On `TS_OK`, `*out` is its id, which is also its owner in the
+/// core, `(generation << 32) | index`, as its debug lines name it. A radius that is not
+/// positive, a position or offset that is not finite or beyond the coordinate range, and a
+/// compound with `circle_count` circles but a null `circles` are refused.
 ///
 /// # Safety
 /// `bodies` is a live set; `def` points to a definition whose `circles` holds
@@ -201,6 +197,9 @@ pub unsafe extern "C" fn ts_bodies_add(
             ..BodyFilter::default()
         });
         let handle = set.add(desc).map_err(|e| body_failure(&e))?;
+        // Its id as its owner, so that its debug lines name it.
+        set.set_owner(handle, owner_of(handle.index(), handle.generation()))
+            .map_err(|e| body_failure(&e))?;
         // SAFETY: not null, writable as the caller promises.
         unsafe { out.write(id_of(handle)) };
         Ok(())

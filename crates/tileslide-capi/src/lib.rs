@@ -1,8 +1,9 @@
-//! tileslide's C API (maps, ray casts, bodies), in the manner of Box2D v3's: opaque handles,
-//! ids passed by value, definition structs with defaults, a status on every fallible
-//! call, the reason in `ts_last_error_message()` (per thread), caller-supplied buffers for
-//! batches. No panic crosses the boundary: each call runs under `catch_unwind` and a panic
-//! becomes `TS_ERROR_PANIC`. Null pointers and coordinates that are not finite are refused
+//! tileslide's C API (maps, ray casts, bodies, the character, hit volumes, paths, debug
+//! lines), in the manner of Box2D v3's: opaque handles, ids passed by value, definition
+//! structs with defaults, a status on every fallible call, the reason in
+//! `ts_last_error_message()` (per thread), caller-supplied buffers for batches. No panic
+//! crosses the boundary: each call runs under `catch_unwind` and a panic becomes
+//! `TS_ERROR_PANIC`. Null pointers and coordinates that are not finite are refused
 //! with a status, never read.
 //!
 //! The header, `include/tileslide.h`, is generated from this crate by cbindgen
@@ -20,10 +21,19 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
 mod bodies;
+mod character;
+mod debug;
+mod hit_world;
+mod nav;
 
 pub use bodies::*;
+pub use character::*;
+pub use debug::*;
+pub use hit_world::*;
+pub use nav::*;
 use tileslide::io::{LoadErrorKind, ascii};
-use tileslide::{Faces, QueryFilter, Ray, RayHit, TileMap, Vec2};
+use tileslide::limits::MAX_COORD;
+use tileslide::{Faces, Owner, QueryFilter, Ray, RayHit, TileMap, Vec2};
 
 /// What a call did: `TS_OK`, or why it did nothing (`ts_last_error_message()` says more).
 #[repr(C)]
@@ -45,8 +55,11 @@ pub enum ts_status {
     TS_ERROR_LOAD = 5,
     /// tileslide panicked: a bug, reported rather than carried across the boundary.
     TS_ERROR_PANIC = 6,
-    /// A body id whose body was removed (or that never named one).
+    /// A body or hit object id whose body or object was removed (or that never named one).
     TS_ERROR_STALE_HANDLE = 7,
+    /// A caller's buffer has less room than the answer needs: nothing was written to it,
+    /// and the call's `count` says how many entries it needs.
+    TS_ERROR_BUFFER_TOO_SMALL = 8,
 }
 
 /// A collision map (opaque): made by `ts_map_load_file` or `ts_map_from_ascii`, freed by
@@ -100,6 +113,12 @@ thread_local! {
     static LAST_ERROR: RefCell<CString> = RefCell::new(CString::default());
 }
 
+/// Shape: a circle (of a character or a hit volume).
+pub const TS_SHAPE_CIRCLE: u32 = 0;
+
+/// Shape: an axis-aligned rectangle, by its half width and half height.
+pub const TS_SHAPE_RECT: u32 = 1;
+
 /// Keeps `message` as this thread's last error.
 fn set_error(message: &str) {
     // A message with a NUL in it (from a file name) is cut there rather than lost.
@@ -122,6 +141,91 @@ impl Failure {
     pub(crate) fn invalid(why: String) -> Self {
         Failure(ts_status::TS_ERROR_INVALID_ARGUMENT, why)
     }
+}
+
+/// The owner a body or hit object has in the core: its id, `(generation << 32) | index`,
+/// so that hit events and debug lines name it.
+pub(crate) fn owner_of(index: u32, generation: u32) -> Owner {
+    Owner(u64::from(generation) << 32 | u64::from(index))
+}
+
+/// The id (`index`, `generation`) an owner from [`owner_of`] stands for.
+pub(crate) fn id_parts(owner: Owner) -> (u32, u32) {
+    (owner.0 as u32, (owner.0 >> 32) as u32)
+}
+
+/// `value`, named `what` in errors, when it is finite and within tileslide's coordinate
+/// range (`MAX_COORD`, 2²⁴ map units from the origin).
+pub(crate) fn coordinate(what: &str, value: f32) -> Result<f32, Failure> {
+    if value.is_finite() && value.abs() <= MAX_COORD {
+        Ok(value)
+    } else {
+        Err(Failure::invalid(format!(
+            "{what} is {value}: it must be finite and at most {MAX_COORD} in magnitude"
+        )))
+    }
+}
+
+/// Writes `items` (`n` of them) into the caller's buffer `out` (room for `capacity`) and
+/// `n` into `*count`, `what` naming them in errors. When they do not fit, only `*count` is
+/// written (`TS_ERROR_BUFFER_TOO_SMALL`), so the caller can make room and ask again; a null
+/// `out` with room said is refused before anything is written.
+///
+/// # Safety
+/// `count` is null or writable; `out` is null or has room for `capacity` items.
+pub(crate) unsafe fn fill<T>(
+    items: impl Iterator<Item = T>,
+    n: usize,
+    out: *mut T,
+    capacity: usize,
+    count: *mut usize,
+    what: &str,
+) -> Result<(), Failure> {
+    if count.is_null() {
+        return Err(Failure::null("count"));
+    }
+    // A buffer with room is a buffer: null there is a mistake, whatever the answer's size.
+    if capacity > 0 && out.is_null() {
+        return Err(Failure::null("out"));
+    }
+    // SAFETY: not null, writable as the caller promises.
+    unsafe { count.write(n) };
+    if n > capacity {
+        return Err(Failure(
+            ts_status::TS_ERROR_BUFFER_TOO_SMALL,
+            format!("{n} {what} do not fit in a buffer of {capacity}"),
+        ));
+    }
+    for (k, item) in items.take(n).enumerate() {
+        // SAFETY: k < n <= capacity, and `out` has room for `capacity` items.
+        unsafe { out.add(k).write(item) };
+    }
+    Ok(())
+}
+
+/// Puts `value` in a box behind `out`, for the C caller to own until it frees it with
+/// [`free_boxed`].
+///
+/// # Safety
+/// `out` is not null and points to writable memory for a pointer.
+pub(crate) unsafe fn give_boxed<T>(out: *mut *mut T, value: T) {
+    // SAFETY: checked not null by the caller; writable as the C caller promises.
+    unsafe { out.write(Box::into_raw(Box::new(value))) };
+}
+
+/// Frees what [`give_boxed`] gave (null is ignored). Dropping does not panic; catching one
+/// anyway keeps it on this side.
+///
+/// # Safety
+/// `ptr` is null or came from `give_boxed` and is not yet freed.
+pub(crate) unsafe fn free_boxed<T>(ptr: *mut T) {
+    if ptr.is_null() {
+        return;
+    }
+    let _ = catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: from `Box::into_raw` in `give_boxed`, freed once as the caller promises.
+        drop(unsafe { Box::from_raw(ptr) });
+    }));
 }
 
 /// Runs `body` with panics caught: its status, with the message kept on failure.
@@ -164,16 +268,6 @@ pub(crate) unsafe fn map_ref<'a>(map: *const ts_map) -> Result<&'a TileMap, Fail
     unsafe { map.as_ref() }
         .map(|m| &m.map)
         .ok_or_else(|| Failure::null("map"))
-}
-
-/// Puts `map` behind `out`.
-///
-/// # Safety
-/// `out` is not null and points to writable memory for a pointer.
-unsafe fn give(out: *mut *mut ts_map, map: TileMap) {
-    let boxed = Box::into_raw(Box::new(ts_map { map }));
-    // SAFETY: checked not null by the caller; writable as the C caller promises.
-    unsafe { out.write(boxed) };
 }
 
 fn load_failure(e: &tileslide::io::LoadError) -> Failure {
@@ -232,12 +326,12 @@ pub unsafe extern "C" fn ts_map_load_file(
         };
         let map = tileslide::io::load_file(path, tileset).map_err(|e| load_failure(&e))?;
         // SAFETY: `out` is not null and writable.
-        unsafe { give(out, map) };
+        unsafe { give_boxed(out, ts_map { map }) };
         Ok(())
     })
 }
 
-/// Builds a map from ASCII text (`#` solid, `.` empty, `/` `\` ramps, `-` one-way; rows
+/// Builds a map from ASCII text (`#` solid, `.` empty, `/` `\` ramps, `=` one-way; rows
 /// top to bottom) with square cells of side `cell`. On `TS_OK`, `*out` is the map.
 ///
 /// # Safety
@@ -261,7 +355,7 @@ pub unsafe extern "C" fn ts_map_from_ascii(
         }
         let map = ascii::parse(source, "<ascii>", cell).map_err(|e| load_failure(&e))?;
         // SAFETY: `out` is not null and writable.
-        unsafe { give(out, map) };
+        unsafe { give_boxed(out, ts_map { map }) };
         Ok(())
     })
 }
@@ -272,14 +366,8 @@ pub unsafe extern "C" fn ts_map_from_ascii(
 /// `map` is null or a map from this library not yet freed.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn ts_map_free(map: *mut ts_map) {
-    if map.is_null() {
-        return;
-    }
-    // Dropping a map does not panic; catching one anyway keeps it on this side.
-    let _ = catch_unwind(AssertUnwindSafe(|| {
-        // SAFETY: a map from `Box::into_raw` in `give`, freed once as the caller promises.
-        drop(unsafe { Box::from_raw(map) });
-    }));
+    // SAFETY: null or a map from this library, freed once, as the caller promises.
+    unsafe { free_boxed(map) };
 }
 
 /// The map's size in cells (`width`, `height`, either pointer may be null) and its cells'

@@ -4,9 +4,11 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, unsafe_code)]
 
-use std::ffi::{CStr, CString};
+mod support;
+
 use std::ptr;
 
+use support::{ascii_map, last_error};
 use tileslide::Vec2;
 use tileslide_capi::*;
 use tileslide_scenes::{CROWD_RADIUS, dungeon256, positions_hash, scene_crowd};
@@ -14,25 +16,6 @@ use tileslide_scenes::{CROWD_RADIUS, dungeon256, positions_hash, scene_crowd};
 /// The core's golden hash of the crowd (crates/tileslide/tests/resolver_golden.rs): 2,000
 /// bodies, 40 steps, positions hashed with FNV-1a 64.
 const GOLDEN: u64 = 0x8584_2b31_c9d3_e773;
-
-fn last_error() -> String {
-    // SAFETY: the library's own NUL-terminated message.
-    unsafe { CStr::from_ptr(ts_last_error_message()) }
-        .to_str()
-        .unwrap()
-        .to_owned()
-}
-
-fn ascii_map(text: &str) -> *mut ts_map {
-    let text = CString::new(text).unwrap();
-    let mut map = ptr::null_mut();
-    // SAFETY: a valid string and out pointer.
-    assert_eq!(
-        unsafe { ts_map_from_ascii(text.as_ptr(), 1.0, &mut map) },
-        ts_status::TS_OK
-    );
-    map
-}
 
 fn new_bodies() -> *mut ts_bodies {
     let mut bodies = ptr::null_mut();

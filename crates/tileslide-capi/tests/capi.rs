@@ -5,10 +5,13 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, unsafe_code)]
 
-use std::ffi::{CStr, CString};
+mod support;
+
+use std::ffi::CString;
 use std::path::{Path, PathBuf};
 use std::ptr;
 
+use support::last_error;
 use tileslide::{QueryFilter, Ray};
 use tileslide_capi::*;
 use tileslide_scenes::{dungeon256, scene_rays};
@@ -19,14 +22,6 @@ fn maps() -> PathBuf {
 
 fn c(s: &str) -> CString {
     CString::new(s).unwrap()
-}
-
-fn last_error() -> String {
-    // SAFETY: the library's own NUL-terminated message.
-    unsafe { CStr::from_ptr(ts_last_error_message()) }
-        .to_str()
-        .unwrap()
-        .to_owned()
 }
 
 /// Loads `path` through the C API, or the status and message.
