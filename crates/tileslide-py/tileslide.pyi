@@ -2,7 +2,9 @@
 
 Maps load from ASCII text, Tiled (.tmx, .tmj), LDtk (.ldtk), baked (.tsm) and Replica
 Island (.bin) files; rays are cast one at a time or as a NumPy batch; bodies (circles and
-compounds of circles) slide round each other and along walls without overlap or tunnelling.
+compounds of circles) slide round each other and along walls without overlap or tunnelling;
+a platformer character walks slopes, stands on one-way and moving platforms (temporary
+segments).
 Coordinates are map units, y down; every number is a 32-bit float, as in the Rust core, so
 answers are bit-identical to it.
 """
@@ -94,6 +96,32 @@ class TileMap:
         (N, 5), rows `t, x, y, nx, ny` of each ray's first hit, all NaN for a miss. Raises
         ValueError for a wrong shape or a coordinate that is not finite (naming the row),
         TypeError for an array that is not float32 and 2-dimensional."""
+    def add_temporary(
+        self,
+        x0: float,
+        y0: float,
+        x1: float,
+        y1: float,
+        nx: float,
+        ny: float,
+        *,
+        flags: int = 1,
+        owner: int = 0,
+        vx: float = 0.0,
+        vy: float = 0.0,
+    ) -> None:
+        """Adds a temporary segment from (x0, y0) to (x1, y1) facing (nx, ny) (normalised):
+        a door or a moving platform, which every query, body and character meets until it
+        is cleared. `flags` 1 solid, 2 one-way; `owner` who submitted it; (vx, vy) how fast
+        it moves (a character standing on it rides it). Submit moving platforms anew each
+        frame, before the characters move. Raises ValueError for a coordinate that is not
+        finite (naming it), a segment of zero length, a zero normal, an owner or flags out
+        of range."""
+    def clear_temporaries(self, owner: Optional[int] = None) -> None:
+        """Removes the temporary segments of `owner`, or every one when None."""
+    @property
+    def temporary_count(self) -> int:
+        """How many temporary segments the map holds."""
 
 class BodyId:
     """A body's id. Once its body is removed the id is stale for good: using it raises
@@ -164,3 +192,143 @@ class Bodies:
         """A body's position."""
     def positions(self, ids: Optional[Sequence[BodyId]] = None) -> npt.NDArray[np.float32]:
         """The positions of `ids` (every body's, in slot order, when None), shape (N, 2)."""
+
+class Contact:
+    """One surface a character touched: a tile's (`cell` and `tile`) or a temporary
+    segment's (`owner`, and its velocity)."""
+
+    @property
+    def nx(self) -> float:
+        """The surface's unit normal at the contact, pointing towards the character, x."""
+    @property
+    def ny(self) -> float:
+        """The normal, y."""
+    @property
+    def flags(self) -> int:
+        """The segment's flags (1 solid, 2 one-way)."""
+    @property
+    def cell(self) -> Optional[Tuple[int, int]]:
+        """The tile's cell `(col, row)`, or None for a temporary segment."""
+    @property
+    def tile(self) -> Optional[int]:
+        """The tile's id, or None for a temporary segment."""
+    @property
+    def owner(self) -> Optional[int]:
+        """The temporary segment's owner, or None for a tile."""
+    @property
+    def vx(self) -> float:
+        """How fast the surface moves, x (a moving platform's velocity; 0 for a tile)."""
+    @property
+    def vy(self) -> float:
+        """How fast the surface moves, y."""
+
+class MoveResult:
+    """What a move did: where the character is and the surfaces it touched, by kind."""
+
+    @property
+    def x(self) -> float:
+        """The character's position after the move, x."""
+    @property
+    def y(self) -> float:
+        """The character's position after the move, y."""
+    @property
+    def grounded(self) -> bool:
+        """Whether it stands on walkable ground."""
+    @property
+    def ground(self) -> Optional[Contact]:
+        """The walkable ground under it at the end of the move, or None in the air."""
+    @property
+    def ceiling(self) -> Optional[Contact]:
+        """The last ceiling that stopped it, or None."""
+    @property
+    def left(self) -> Optional[Contact]:
+        """The last wall met on its left (lower x), or None."""
+    @property
+    def right(self) -> Optional[Contact]:
+        """The last wall met on its right (higher x), or None."""
+    @property
+    def crush(self) -> Optional[Contact]:
+        """A moving platform that pressed it into the world (crushed), or None."""
+    @property
+    def vx(self) -> Optional[float]:
+        """`move_and_slide`: the velocity the surfaces leave, to keep, x; None for
+        `move_by`."""
+    @property
+    def vy(self) -> Optional[float]:
+        """`move_and_slide`: the velocity to keep, y; None for `move_by`."""
+
+class Character:
+    """A platformer character: a box or a circle with an up direction, moved by the
+    displacement the game wants each step (velocity × dt, gravity included). It walks
+    slopes up to the slope limit, snaps to the ground, jumps up through one-way platforms
+    and drops through them on request, rides moving platforms; gravity, jumps and coyote
+    time are the game's rules. Every move is an exact sweep: no speed passes a wall."""
+
+    def __init__(
+        self,
+        x: float,
+        y: float,
+        *,
+        radius: Optional[float] = None,
+        half_width: Optional[float] = None,
+        half_height: Optional[float] = None,
+        up: Tuple[float, float] = (0.0, -1.0),
+        max_slope_degrees: float = 50.0,
+        snap_distance: float = 0.3,
+        skin: float = 0.001,
+        max_slides: int = 4,
+        step_height: float = 0.0,
+        mask: int = 3,
+    ) -> None:
+        """A character centred at (x, y): a circle of `radius`, or a box of half extents
+        `half_width` × `half_height`. `up` is normalised (default (0, -1): y-down maps, as
+        ASCII and Tiled maps are). The controller: the steepest walkable slope in degrees
+        [0, 90); how far below its feet a grounded character looks for ground to stay on;
+        the gap kept from surfaces; how many times a move may slide on; the highest ledge a
+        walk steps up onto; the segment flags that block it. Distances in map units, the
+        defaults for cells of size 1. Raises ValueError naming the argument out of range,
+        TypeError for a wrong type."""
+    @property
+    def x(self) -> float:
+        """The x of the shape's centre."""
+    @property
+    def y(self) -> float:
+        """The y of the shape's centre."""
+    @property
+    def up(self) -> Tuple[float, float]:
+        """The unit up direction."""
+    @property
+    def radius(self) -> Optional[float]:
+        """The circle's radius, or None for a box."""
+    @property
+    def half_extents(self) -> Optional[Tuple[float, float]]:
+        """The box's half extents `(half_width, half_height)`, or None for a circle."""
+    @property
+    def ground(self) -> Optional[Contact]:
+        """The ground under the character after its last move, or None in the air."""
+    def teleport(self, x: float, y: float) -> None:
+        """Moves the character to (x, y) at once (no sweep), forgetting its ground."""
+    def move_by(
+        self, map: TileMap, dx: float, dy: float, *, drop_through: bool = False
+    ) -> MoveResult:
+        """Moves the character by (dx, dy) through `map` and its temporary segments as far
+        as they let it. `drop_through` falls through one-way platforms during this move
+        (hold it until the platform is cleared). Raises ValueError for a displacement that
+        is not finite or ends out of range (the character does not move)."""
+    def move_and_slide(
+        self,
+        map: TileMap,
+        vx: float,
+        vy: float,
+        dt: float,
+        *,
+        drop_through: bool = False,
+    ) -> MoveResult:
+        """Moves the character by velocity (vx, vy) × dt, as `move_by`, then takes out of
+        the velocity what the surfaces it touched stopped (landing zeroes the fall, a
+        ceiling the rise, a wall the speed into it): the result's `vx`, `vy`, to keep for
+        the next step. Raises ValueError for a velocity that is not finite or a negative
+        or infinite `dt`."""
+    def clip_velocity(self, vx: float, vy: float) -> Tuple[float, float]:
+        """The velocity (vx, vy) without what the surfaces the last move touched stop, as
+        `move_and_slide` clips it: for a displacement made with `move_by`."""

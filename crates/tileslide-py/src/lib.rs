@@ -7,6 +7,7 @@
 use pyo3::prelude::*;
 
 mod bodies;
+mod character;
 mod errors;
 mod map;
 
@@ -21,5 +22,8 @@ fn tileslide_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<bodies::Bodies>()?;
     m.add_class::<bodies::BodyId>()?;
     m.add_class::<bodies::StepReport>()?;
+    m.add_class::<character::Character>()?;
+    m.add_class::<character::Contact>()?;
+    m.add_class::<character::MoveResult>()?;
     Ok(())
 }
