@@ -10,7 +10,7 @@ answers are bit-identical to it.
 """
 
 from os import PathLike
-from typing import Optional, Sequence, Tuple, Union
+from typing import Callable, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -332,3 +332,150 @@ class Character:
     def clip_velocity(self, vx: float, vy: float) -> Tuple[float, float]:
         """The velocity (vx, vy) without what the surfaces the last move touched stop, as
         `move_and_slide` clips it: for a displacement made with `move_by`."""
+
+class HitType:
+    """Hit types: the bits a volume deals (attack) or accepts (vulnerability); combine them
+    with `|`. Bits 6 and up are the game's own."""
+
+    NONE: int
+    """No type: a volume with it never hits and is never hit."""
+    ANY: int
+    """Every type (0xFFFFFFFF): matches everything."""
+    HIT: int
+    """Damage (1)."""
+    DEATH: int
+    """Kills outright (2)."""
+    COLLECT: int
+    """Picks up a coin or a gem (4)."""
+    POSSESS: int
+    """Takes control of a robot (8)."""
+    DEPRESS: int
+    """Presses a button (16)."""
+    LAUNCH: int
+    """Throws the victim: a spring, a cannon (32)."""
+
+class Volume:
+    """An attack or vulnerability volume in object-local coordinates, with the hit types it
+    deals or accepts (bits of HitType, default HIT). Raises ValueError naming a value that
+    is not finite, a negative size, a coordinate out of range or hit bits out of range."""
+
+    @staticmethod
+    def circle(x: float, y: float, radius: float, hit: int = 1) -> Volume:
+        """A disc centred at (x, y) of `radius` (>= 0)."""
+    @staticmethod
+    def rect(x: float, y: float, half_width: float, half_height: float, hit: int = 1) -> Volume:
+        """The rectangle centred at (x, y) with half extents `half_width` × `half_height`
+        (>= 0)."""
+    @staticmethod
+    def capsule(
+        x0: float, y0: float, x1: float, y1: float, radius: float, hit: int = 1
+    ) -> Volume:
+        """The points within `radius` (>= 0) of the segment from (x0, y0) to (x1, y1): a
+        blade, a beam."""
+    @property
+    def hit(self) -> int:
+        """The hit types it deals or accepts."""
+
+class ObjectId:
+    """An object's id for one frame: its place in the frame's registrations. Once the next
+    frame begins it is stale: using it raises KeyError."""
+
+    @property
+    def index(self) -> int:
+        """0, 1, 2, … in registration order."""
+    @property
+    def frame(self) -> int:
+        """The frame it was registered in (how many frames had begun before)."""
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+
+class HitEvent:
+    """One hit: an attack volume of `attacker` met a vulnerability volume of `victim` that
+    accepts its type."""
+
+    @property
+    def attacker(self) -> ObjectId:
+        """Who hit, as registered in the frame `detect` ran in."""
+    @property
+    def victim(self) -> ObjectId:
+        """Who was hit."""
+    @property
+    def attacker_owner(self) -> int:
+        """The attacker's owner: the game's key for it, stable across frames."""
+    @property
+    def victim_owner(self) -> int:
+        """The victim's owner."""
+    @property
+    def hit_type(self) -> int:
+        """The types dealt: the attack's types that the vulnerability accepts."""
+    @property
+    def accepted(self) -> bool:
+        """Whether the victim (the rule) took the hit."""
+    @property
+    def t(self) -> float:
+        """When the volumes first touched, as a fraction of the frame's move in [0, 1]:
+        0 when they overlap where the frame starts."""
+    @property
+    def x(self) -> float:
+        """Where they touched then, x."""
+    @property
+    def y(self) -> float:
+        """Where they touched then, y."""
+
+class HitWorld:
+    """Attack and vulnerability volumes of the objects of one frame, and the hits between
+    them. Each frame: `begin_frame()`, `register` every object with the volumes of its
+    current animation frame, then `detect()`. Hits are exact, swept along each object's
+    move (a fast projectile cannot pass through a target), in a fixed order."""
+
+    def __init__(self, broadphase: str = "sweep_and_prune") -> None:
+        """An empty world; `broadphase` is "sweep_and_prune" or "uniform_grid" (the
+        results are the same either way)."""
+    @property
+    def frame(self) -> int:
+        """Frames begun so far: the ids registered now carry it."""
+    def begin_frame(self) -> None:
+        """Starts a frame: forgets the last frame's objects (their ids go stale) and ends
+        the swings nobody registered in it."""
+    def register(
+        self,
+        owner: int,
+        x: float,
+        y: float,
+        width: float,
+        height: float,
+        *,
+        attack: Sequence[Volume] = (),
+        vulnerable: Sequence[Volume] = (),
+        motion: Tuple[float, float] = (0.0, 0.0),
+        flip_x: bool = False,
+        flip_y: bool = False,
+        aim: Optional[Tuple[float, float]] = None,
+        team: int = 0,
+        invulnerable: bool = False,
+        swing: Optional[int] = None,
+    ) -> ObjectId:
+        """Registers an object of `owner` for this frame: its volumes' local origin at
+        (x, y) at the end of the frame, its size (volumes are mirrored about its middle),
+        its attack and vulnerability volumes. `motion` is how far it moved this frame (its
+        volumes are swept along it); `flip_x`, `flip_y` mirror it; `aim` turns its attack
+        volumes to point along a direction; `team` and `invulnerable` feed the default
+        rule; `swing` names the attack it makes (each victim is hit at most once per swing,
+        until a frame registers no object with it). Returns its id for this frame. Raises
+        ValueError naming a bad value (nothing is registered), TypeError for a volume that
+        is not a Volume."""
+    def detect(
+        self, rule: Optional[Callable[[ObjectId, ObjectId, int], bool]] = None
+    ) -> list[HitEvent]:
+        """Finds this frame's hits. Without `rule`, a victim takes hits from other teams
+        while it is not invulnerable; with it, `rule(attacker, victim, hit_type)` decides,
+        and an exception it raises is raised again after the detection."""
+    def events(self) -> list[HitEvent]:
+        """The last `detect`'s events, kept until the next `detect`."""
+    def owner(self, id: ObjectId) -> int:
+        """The owner of the object `id` of this frame. Raises KeyError for a stale id."""
+    def bounding_circle(self, id: ObjectId) -> Optional[Tuple[float, float, float]]:
+        """`(x, y, radius)`: a circle holding every volume of `id` at the end of the frame,
+        or None for an object without volumes. Raises KeyError for a stale id."""
+    def __contains__(self, id: ObjectId) -> bool: ...
+    def __len__(self) -> int: ...

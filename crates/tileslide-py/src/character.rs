@@ -9,7 +9,7 @@ use tileslide::{
     SegmentSource, Vec2,
 };
 
-use crate::errors::{finite, whole_or};
+use crate::errors::{finite, finite_point, whole_or};
 use crate::map::TileMap;
 
 /// One surface a character touched.
@@ -150,10 +150,9 @@ fn shape_of(
 ) -> PyResult<CharacterShape> {
     let shape = match (radius, half_width, half_height) {
         (Some(r), None, None) => CharacterShape::circle(finite("radius", r)?),
-        (None, Some(w), Some(h)) => CharacterShape::rect(Vec2::new(
-            finite("half_width", w)?,
-            finite("half_height", h)?,
-        )),
+        (None, Some(w), Some(h)) => {
+            CharacterShape::rect(finite_point(["half_width", "half_height"], w, h)?)
+        }
         _ => {
             return Err(PyValueError::new_err(
                 "a character is a circle (radius=) or a box (half_width= and half_height=), \
@@ -194,9 +193,9 @@ impl Character {
         step_height: f32,
         mask: Option<Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
-        let position = Vec2::new(finite("x", x)?, finite("y", y)?);
+        let position = finite_point(["x", "y"], x, y)?;
         let shape = shape_of(radius, half_width, half_height)?;
-        let up = Vec2::new(finite("up[0]", up.0)?, finite("up[1]", up.1)?);
+        let up = finite_point(["up[0]", "up[1]"], up.0, up.1)?;
         if up == Vec2::ZERO {
             return Err(PyValueError::new_err(
                 "up is (0, 0): it must be a direction",
@@ -268,7 +267,7 @@ impl Character {
 
     /// Moves the character to (`x`, `y`) at once (no sweep), forgetting its ground.
     fn teleport(&mut self, x: f32, y: f32) -> PyResult<()> {
-        let position = Vec2::new(finite("x", x)?, finite("y", y)?);
+        let position = finite_point(["x", "y"], x, y)?;
         self.character
             .teleport(position)
             .map_err(|e| controller_error(&e))?;
@@ -287,7 +286,7 @@ impl Character {
         dy: f32,
         drop_through: bool,
     ) -> PyResult<MoveResult> {
-        let displacement = Vec2::new(finite("dx", dx)?, finite("dy", dy)?);
+        let displacement = finite_point(["dx", "dy"], dx, dy)?;
         let contacts = self
             .character
             .move_by(&map.map, displacement, options(drop_through))
@@ -309,7 +308,7 @@ impl Character {
         dt: f32,
         drop_through: bool,
     ) -> PyResult<MoveResult> {
-        let mut velocity = Vec2::new(finite("vx", vx)?, finite("vy", vy)?);
+        let mut velocity = finite_point(["vx", "vy"], vx, vy)?;
         let dt = finite("dt", dt)?;
         if dt < 0.0 {
             return Err(PyValueError::new_err(format!(
@@ -327,7 +326,7 @@ impl Character {
     /// The velocity (`vx`, `vy`) without what the surfaces the last move touched stop, as
     /// `move_and_slide` clips it: for a displacement made with `move_by`.
     fn clip_velocity(&self, vx: f32, vy: f32) -> PyResult<(f32, f32)> {
-        let velocity = Vec2::new(finite("vx", vx)?, finite("vy", vy)?);
+        let velocity = finite_point(["vx", "vy"], vx, vy)?;
         let v = self.character.clip_velocity(velocity, &self.last);
         Ok((v.x, v.y))
     }

@@ -58,6 +58,15 @@ pub(crate) fn finite(name: &str, value: f32) -> PyResult<f32> {
     }
 }
 
+/// The point (`x`, `y`), named `names`, or a `ValueError` naming the coordinate that is
+/// not finite.
+pub(crate) fn finite_point(names: [&str; 2], x: f32, y: f32) -> PyResult<tileslide::Vec2> {
+    Ok(tileslide::Vec2::new(
+        finite(names[0], x)?,
+        finite(names[1], y)?,
+    ))
+}
+
 /// A Python int (or anything with `__index__`) from 0 to `max`, or an error naming `name`:
 /// `TypeError` for what is not an int, `ValueError` for an int out of that range (where
 /// pyo3 alone would raise an `OverflowError` that does not say which argument).

@@ -10,6 +10,7 @@ mod bodies;
 mod character;
 mod errors;
 mod map;
+mod volumes;
 
 /// The module: its classes, its exception and its version.
 #[pymodule]
@@ -25,5 +26,10 @@ fn tileslide_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<character::Character>()?;
     m.add_class::<character::Contact>()?;
     m.add_class::<character::MoveResult>()?;
+    m.add_class::<volumes::HitWorld>()?;
+    m.add_class::<volumes::HitType>()?;
+    m.add_class::<volumes::Volume>()?;
+    m.add_class::<volumes::ObjectId>()?;
+    m.add_class::<volumes::HitEvent>()?;
     Ok(())
 }

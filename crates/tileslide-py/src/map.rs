@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use tileslide::io::ascii;
 use tileslide::{Faces, Owner, QueryFilter, Ray, Segment, SegmentFlags, TemporarySegment, Vec2};
 
-use crate::errors::{finite, load_error, whole_or};
+use crate::errors::{finite, finite_point, load_error, whole_or};
 
 /// Rays cast a chunk at a time, so the batch's own buffers stay small whatever its size.
 const CHUNK: usize = 4096;
@@ -237,13 +237,10 @@ impl TileMap {
         vx: f32,
         vy: f32,
     ) -> PyResult<()> {
-        let finite_pair = |a: (&str, f32), b: (&str, f32)| -> PyResult<Vec2> {
-            Ok(Vec2::new(finite(a.0, a.1)?, finite(b.0, b.1)?))
-        };
-        let a = finite_pair(("x0", x0), ("y0", y0))?;
-        let b = finite_pair(("x1", x1), ("y1", y1))?;
-        let normal = finite_pair(("nx", nx), ("ny", ny))?;
-        let velocity = finite_pair(("vx", vx), ("vy", vy))?;
+        let a = finite_point(["x0", "y0"], x0, y0)?;
+        let b = finite_point(["x1", "y1"], x1, y1)?;
+        let normal = finite_point(["nx", "ny"], nx, ny)?;
+        let velocity = finite_point(["vx", "vy"], vx, vy)?;
         let flags = whole_or("flags", flags.as_ref(), u32::MAX.into(), 1)? as u32;
         let owner = whole_or("owner", owner.as_ref(), u64::MAX, 0)?;
         self.map
