@@ -479,3 +479,73 @@ class HitWorld:
         or None for an object without volumes. Raises KeyError for a stale id."""
     def __contains__(self, id: ObjectId) -> bool: ...
     def __len__(self) -> int: ...
+
+class NavPath:
+    """A path found for a circle: its points from the start to the goal, each run between
+    them clear of walls for the circle."""
+
+    @property
+    def points(self) -> npt.NDArray[np.float32]:
+        """The points, start to goal, shape (N, 2)."""
+    @property
+    def length(self) -> float:
+        """The path's length (map units)."""
+    @property
+    def radius(self) -> float:
+        """The radius of the circle it is for."""
+    def __len__(self) -> int: ...
+
+class NavGrid:
+    """Navigation data for one map: move clearances on a half-cell lattice, for circles of
+    a radius up to `max_radius`."""
+
+    def __init__(self, map: TileMap, *, max_radius: float = 1.0, mask: int = 3) -> None:
+        """The navigation grid of `map` for circles up to `max_radius` (map units, at most
+        31 cells); segments with one of the `mask` flags block (default solid and
+        one-way: a one-way platform is crossed only from behind). Raises ValueError naming
+        `max_radius` or `mask`, or for a map too large."""
+    @property
+    def max_radius(self) -> float:
+        """The widest circle the grid serves."""
+    @property
+    def map(self) -> TileMap:
+        """The map the grid was built for."""
+    def find_path(
+        self, x0: float, y0: float, x1: float, y1: float, radius: float
+    ) -> Optional[NavPath]:
+        """The shortest path for a circle of `radius` from (x0, y0) to (x1, y1), smoothed
+        into straight runs each clear of walls (by the map's own circle cast); None when
+        the circle does not fit at an end or cannot get from one to the other. Raises
+        ValueError naming a coordinate that is not finite or out of range, or a radius
+        that is not positive or above `max_radius`."""
+    def fits(self, x: float, y: float, radius: float) -> bool:
+        """Whether a circle of `radius` fits at (x, y), clear of walls."""
+
+class FlowField:
+    """Distances to one goal for circles of one radius over the whole map: every agent
+    asks it which way to go."""
+
+    def __init__(self, nav: NavGrid, x: float, y: float, radius: float) -> None:
+        """The field of the goal (x, y) for circles of `radius` on `nav`'s map."""
+    @property
+    def goal(self) -> Tuple[float, float]:
+        """The goal."""
+    @property
+    def radius(self) -> float:
+        """The radius of the circles it leads."""
+    def direction(self, x: float, y: float) -> Optional[Tuple[float, float]]:
+        """The unit direction a circle at (x, y) should move in to reach the goal, or None
+        when it cannot reach it or is on it."""
+    def directions(self, points: npt.NDArray[np.float32]) -> npt.NDArray[np.float32]:
+        """`direction` at each row of `points` (shape (N, 2)): shape (N, 2), NaN where it
+        is None. Raises ValueError naming the row that is not finite, TypeError for an
+        array that is not float32 and 2-dimensional."""
+    def lattice_direction(self, x: float, y: float) -> Optional[Tuple[float, float]]:
+        """A cheap direction along the field's lattice moves, with no straight-line checks:
+        for crowds of thousands that ask every step (a resolver such as Bodies slides them
+        round corners). None when no node around the point reaches the goal, or on it."""
+    def lattice_directions(self, points: npt.NDArray[np.float32]) -> npt.NDArray[np.float32]:
+        """`lattice_direction` at each row of `points`, as `directions`."""
+    def distance(self, x: float, y: float) -> Optional[float]:
+        """The length of the way from (x, y) to the goal along the field (map units), or
+        None if a circle there cannot reach it."""

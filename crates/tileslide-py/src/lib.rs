@@ -10,6 +10,7 @@ mod bodies;
 mod character;
 mod errors;
 mod map;
+mod nav;
 mod volumes;
 
 /// The module: its classes, its exception and its version.
@@ -31,5 +32,8 @@ fn tileslide_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<volumes::Volume>()?;
     m.add_class::<volumes::ObjectId>()?;
     m.add_class::<volumes::HitEvent>()?;
+    m.add_class::<nav::NavGrid>()?;
+    m.add_class::<nav::NavPath>()?;
+    m.add_class::<nav::FlowField>()?;
     Ok(())
 }
