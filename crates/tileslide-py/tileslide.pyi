@@ -9,6 +9,7 @@ Coordinates are map units, y down; every number is a 32-bit float, as in the Rus
 answers are bit-identical to it.
 """
 
+from enum import IntEnum
 from os import PathLike
 from typing import Callable, Optional, Sequence, Tuple, Union
 
@@ -549,3 +550,93 @@ class FlowField:
     def distance(self, x: float, y: float) -> Optional[float]:
         """The length of the way from (x, y) to the goal along the field (map units), or
         None if a circle there cannot reach it."""
+
+class DebugKind(IntEnum):
+    """What a debug shape shows (the numbers of the Rust core's DebugKind): a front end
+    picks its colour and layer by it."""
+
+    ACTIVE_SEGMENT = 0
+    """An active solid segment of the map (a segment)."""
+    ONE_WAY_SEGMENT = 1
+    """An active one-way platform segment (a segment)."""
+    NORMAL = 2
+    """A segment's outward normal, from its middle (a segment)."""
+    HIDDEN_SEGMENT = 3
+    """A piece of a tile segment hidden by seam culling (a segment)."""
+    TEMPORARY_SEGMENT = 4
+    """A temporary segment: a moving platform, a door (a segment)."""
+    BODY = 5
+    """A body's circle (a circle)."""
+    CHARACTER = 6
+    """A character's shape (a circle or a box)."""
+    CONTACT = 7
+    """A surface a character touched, along its normal (a segment)."""
+    RAY = 8
+    """A ray (a segment)."""
+    RAY_HIT = 9
+    """Where a ray hit (a point)."""
+    ATTACK_VOLUME = 10
+    """An attack volume (a circle or a box)."""
+    VULNERABILITY_VOLUME = 11
+    """A vulnerability volume (a circle or a box)."""
+    HIT = 12
+    """An accepted hit event (a point)."""
+    REFUSED_HIT = 13
+    """A refused hit event (a point)."""
+    PATH = 14
+    """A leg of a navigation path (a segment)."""
+    FLOW_ARROW = 15
+    """A flow field's next move out of a node (a segment)."""
+    BROADPHASE_BOX = 16
+    """A box the broadphase files something under (a box)."""
+
+class DebugLines:
+    """A buffer of debug shapes (segments, circles, points, boxes), each with a kind: keep
+    one, `clear()` it each frame, `add` what is to be drawn, and draw the arrays (a kind
+    array beside each, `DebugKind(k)` naming its entries)."""
+
+    def __init__(
+        self,
+        kinds: Optional[Sequence[int]] = None,
+        view: Optional[Tuple[float, float, float, float]] = None,
+    ) -> None:
+        """An empty buffer taking the `kinds` given (DebugKinds or their numbers; every
+        kind when None), only shapes touching `view` `(min_x, min_y, max_x, max_y)` when
+        given. Raises ValueError naming a number no kind has or a bad view."""
+    def add(
+        self,
+        what: Union[TileMap, Bodies, Character, HitWorld, NavPath, FlowField],
+        owner: int = 0,
+    ) -> None:
+        """Adds what `what` looks like: a TileMap (active and hidden segments, normals,
+        temporary segments), Bodies (their circles), a Character (its shape and what its
+        last move touched, with `owner`), a HitWorld (this frame's volumes and the last
+        `detect`'s hits), a NavPath (its legs, with `owner`) or a FlowField (its arrows).
+        Raises TypeError for anything else."""
+    def clear(self) -> None:
+        """Empties the buffer (its kinds and view stay)."""
+    @property
+    def segments(self) -> npt.NDArray[np.float32]:
+        """The segments, shape (N, 4), rows `x0, y0, x1, y1`."""
+    @property
+    def segment_kinds(self) -> npt.NDArray[np.uint8]:
+        """Each segment's kind, shape (N,)."""
+    @property
+    def circles(self) -> npt.NDArray[np.float32]:
+        """The circles, shape (N, 3), rows `x, y, radius`."""
+    @property
+    def circle_kinds(self) -> npt.NDArray[np.uint8]:
+        """Each circle's kind."""
+    @property
+    def points(self) -> npt.NDArray[np.float32]:
+        """The points, shape (N, 2), rows `x, y`."""
+    @property
+    def point_kinds(self) -> npt.NDArray[np.uint8]:
+        """Each point's kind."""
+    @property
+    def boxes(self) -> npt.NDArray[np.float32]:
+        """The boxes, shape (N, 4), rows `min_x, min_y, max_x, max_y`."""
+    @property
+    def box_kinds(self) -> npt.NDArray[np.uint8]:
+        """Each box's kind."""
+    def __len__(self) -> int: ...

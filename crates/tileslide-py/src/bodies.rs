@@ -71,7 +71,7 @@ impl StepReport {
 /// goes without overlapping the map's walls or another body, sliding along what it meets.
 #[pyclass(module = "tileslide")]
 pub struct Bodies {
-    bodies: tileslide::Bodies,
+    pub(crate) bodies: tileslide::Bodies,
 }
 
 fn body_error(e: &BodyError) -> PyErr {

@@ -8,6 +8,7 @@ use pyo3::prelude::*;
 
 mod bodies;
 mod character;
+mod debug;
 mod errors;
 mod map;
 mod nav;
@@ -35,5 +36,7 @@ fn tileslide_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<nav::NavGrid>()?;
     m.add_class::<nav::NavPath>()?;
     m.add_class::<nav::FlowField>()?;
+    m.add_class::<debug::DebugLines>()?;
+    m.add("DebugKind", debug::kind_enum(m.py())?)?;
     Ok(())
 }

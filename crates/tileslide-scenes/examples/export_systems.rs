@@ -26,6 +26,8 @@
 //!   capsule `x0, y0, x1, y1, r`), registered in row order, frame by frame;
 //! - `hits_events.f32`: each frame's `detect` (the team rule), rows `frame, attacker,
 //!   victim, attacker_owner, victim_owner, hit_type, accepted, t, x, y`;
+//! - `debug_map_segments.f32`: the character map's debug segments, rows `x0, y0, x1, y1,
+//!   kind`;
 //! - `systems.json`: the runs' settings.
 
 use std::path::{Path, PathBuf};
@@ -33,9 +35,9 @@ use std::process::ExitCode;
 
 use tileslide::io::ascii;
 use tileslide::{
-    Character, CharacterShape, ControllerConfig, FlowField, HitObject, HitTypes, HitWorld,
-    MoveOptions, NavConfig, NavGrid, Owner, Segment, SegmentFlags, SegmentSource, TeamRule,
-    TemporarySegment, TileMap, Vec2, Volume,
+    Character, CharacterShape, ControllerConfig, DebugLines, FlowField, HitObject, HitTypes,
+    HitWorld, MoveOptions, NavConfig, NavGrid, Owner, Segment, SegmentFlags, SegmentSource,
+    TeamRule, TemporarySegment, TileMap, Vec2, Volume,
 };
 use tileslide_scenes::{SplitMix64, crowd_candidates, dungeon256};
 
@@ -147,6 +149,17 @@ fn character_run(shape: CharacterShape, config: ControllerConfig) -> Result<[Vec
 
 fn export_characters(dir: &Path) -> Result<(), String> {
     write(dir, "character_map.txt", CHARACTER_MAP.as_bytes())?;
+    let map = ascii::parse(CHARACTER_MAP, "character_map.txt", 1.0).map_err(|e| e.to_string())?;
+    let mut lines = DebugLines::new();
+    map.debug_lines(&mut lines);
+    write(
+        dir,
+        "debug_map_segments.f32",
+        &floats_bytes(lines.segments().iter().flat_map(|s| {
+            let (a, b) = (s.segment.a, s.segment.b);
+            [a.x, a.y, b.x, b.y, f32::from(s.kind as u8)]
+        })),
+    )?;
     let boxed = CharacterShape::rect(BOX_HALF).map_err(|e| e.to_string())?;
     let box_config = ControllerConfig {
         step_height: BOX_STEP_HEIGHT,
