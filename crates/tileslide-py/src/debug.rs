@@ -115,14 +115,14 @@ impl DebugLines {
         });
         let out = &mut self.lines;
         if let Ok(map) = what.cast::<TileMap>() {
-            map.borrow().map.debug_lines(out);
+            map.try_borrow()?.map.debug_lines(out);
         } else if let Ok(bodies) = what.cast::<Bodies>() {
-            bodies.borrow().bodies.debug_lines(out);
+            bodies.try_borrow()?.bodies.debug_lines(out);
         } else if let Ok(character) = what.cast::<Character>() {
-            let c = character.borrow();
+            let c = character.try_borrow()?;
             c.character.debug_lines(Some(&c.last), owner, out);
         } else if let Ok(world) = what.cast::<HitWorld>() {
-            world.borrow().world.debug_lines(out);
+            world.try_borrow()?.world.debug_lines(out);
         } else if let Ok(path) = what.cast::<NavPath>() {
             path.get().path.debug_lines(owner, out);
         } else if let Ok(field) = what.cast::<FlowField>() {

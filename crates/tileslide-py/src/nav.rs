@@ -47,7 +47,8 @@ impl NavGrid {
                 whole_or("mask", mask.as_ref(), u32::MAX.into(), d.mask.0.into())? as u32,
             ),
         };
-        let nav = tileslide::NavGrid::new(&map.borrow().map, config).map_err(|e| nav_error(&e))?;
+        let nav =
+            tileslide::NavGrid::new(&map.try_borrow()?.map, config).map_err(|e| nav_error(&e))?;
         Ok(NavGrid {
             nav,
             map: map.unbind(),
@@ -81,7 +82,7 @@ impl NavGrid {
         let from = finite_point(["x0", "y0"], x0, y0)?;
         let to = finite_point(["x1", "y1"], x1, y1)?;
         let radius = finite("radius", radius)?;
-        let map = self.map.borrow(py);
+        let map = self.map.try_borrow(py)?;
         let path = self
             .nav
             .find_path(&map.map, from, to, radius)
@@ -94,7 +95,7 @@ impl NavGrid {
         let p = finite_point(["x", "y"], x, y)?;
         let radius = finite("radius", radius)?;
         self.nav
-            .fits(&self.map.borrow(py).map, p, radius)
+            .fits(&self.map.try_borrow(py)?.map, p, radius)
             .map_err(|e| nav_error(&e))
     }
 
@@ -174,7 +175,7 @@ impl FlowField {
     ) -> PyResult<Option<(f32, f32)>> {
         let p = finite_point(["x", "y"], x, y)?;
         let nav = self.nav.get();
-        let d = direction(&nav.nav, &nav.map.borrow(py).map, p).map_err(|e| nav_error(&e))?;
+        let d = direction(&nav.nav, &nav.map.try_borrow(py)?.map, p).map_err(|e| nav_error(&e))?;
         Ok(d.map(|d| (d.x, d.y)))
     }
 
@@ -192,7 +193,7 @@ impl FlowField {
     ) -> PyResult<Bound<'py, PyArray2<f32>>> {
         let points = pairs(points, "points")?;
         let nav = self.nav.get();
-        let map = nav.map.borrow(py);
+        let map = nav.map.try_borrow(py)?;
         let mut out = Vec::with_capacity(points.len() * 2);
         for (k, p) in points.iter().enumerate() {
             if !p.is_finite() {
@@ -218,8 +219,9 @@ impl FlowField {
         let goal = finite_point(["x", "y"], x, y)?;
         let radius = finite("radius", radius)?;
         let grid = nav.get();
-        let field = tileslide::FlowField::new(&grid.nav, &grid.map.borrow(py).map, goal, radius)
-            .map_err(|e| nav_error(&e))?;
+        let field =
+            tileslide::FlowField::new(&grid.nav, &grid.map.try_borrow(py)?.map, goal, radius)
+                .map_err(|e| nav_error(&e))?;
         Ok(FlowField {
             field,
             nav: nav.unbind(),
@@ -281,7 +283,7 @@ impl FlowField {
         let p = finite_point(["x", "y"], x, y)?;
         let nav = self.nav.get();
         self.field
-            .distance(&nav.nav, &nav.map.borrow(py).map, p)
+            .distance(&nav.nav, &nav.map.try_borrow(py)?.map, p)
             .map_err(|e| nav_error(&e))
     }
 

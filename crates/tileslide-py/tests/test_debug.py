@@ -97,3 +97,16 @@ def test_bad_input_raises_naming_the_argument():
     ]:
         with pytest.raises(error, match=match):
             call()
+
+
+def test_drawing_a_world_from_inside_its_own_rule_raises_instead_of_panicking():
+    world = tileslide.HitWorld()
+    world.register(1, 0.0, 0.0, 1.0, 1.0, attack=[tileslide.Volume.circle(0.5, 0.5, 1.0)])
+    world.register(2, 0.5, 0.0, 1.0, 1.0, team=1, vulnerable=[tileslide.Volume.circle(0.5, 0.5, 1.0)])
+
+    def rule(attacker, victim, hit_type):
+        DebugLines().add(world)
+        return True
+
+    with pytest.raises(RuntimeError, match="borrowed"):
+        world.detect(rule)
