@@ -90,7 +90,7 @@ fn at_entry(k: usize, e: &BodyError) -> PyErr {
 }
 
 /// The rows of an `(N, 2)` array, as pairs: read in place when C-contiguous.
-fn pairs(array: &PyReadonlyArray2<'_, f32>, name: &str) -> PyResult<Vec<Vec2>> {
+pub(crate) fn pairs(array: &PyReadonlyArray2<'_, f32>, name: &str) -> PyResult<Vec<Vec2>> {
     let shape = array.shape();
     if shape[1] != 2 {
         return Err(PyValueError::new_err(format!(

@@ -4,7 +4,9 @@
 
 use pyo3::IntoPyObjectExt;
 use pyo3::create_exception;
-use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyValueError};
+use pyo3::exceptions::{
+    PyFileNotFoundError, PyOSError, PyOverflowError, PyTypeError, PyValueError,
+};
 use pyo3::prelude::*;
 use tileslide::io::{LoadError as CoreLoadError, LoadErrorKind, Location};
 
@@ -54,4 +56,49 @@ pub(crate) fn finite(name: &str, value: f32) -> PyResult<f32> {
             "{name} is {value}: it must be a finite number"
         )))
     }
+}
+
+/// The point (`x`, `y`), named `names`, or a `ValueError` naming the coordinate that is
+/// not finite.
+pub(crate) fn finite_point(names: [&str; 2], x: f32, y: f32) -> PyResult<tileslide::Vec2> {
+    Ok(tileslide::Vec2::new(
+        finite(names[0], x)?,
+        finite(names[1], y)?,
+    ))
+}
+
+/// A Python int (or anything with `__index__`) from 0 to `max`, or an error naming `name`:
+/// `TypeError` for what is not an int, `ValueError` for an int out of that range (where
+/// pyo3 alone would raise an `OverflowError` that does not say which argument).
+pub(crate) fn whole(name: &str, value: &Bound<'_, PyAny>, max: u64) -> PyResult<u64> {
+    match value.extract::<u64>() {
+        Ok(v) if v <= max => Ok(v),
+        Ok(_) => Err(out_of_range(name, value, max)),
+        Err(e) if e.is_instance_of::<PyOverflowError>(value.py()) => {
+            Err(out_of_range(name, value, max))
+        }
+        Err(_) => Err(PyTypeError::new_err(format!(
+            "{name} is {}: it must be an int",
+            value
+                .get_type()
+                .name()
+                .map_or_else(|_| "not an int".to_owned(), |n| format!("a {n}"))
+        ))),
+    }
+}
+
+fn out_of_range(name: &str, value: &Bound<'_, PyAny>, max: u64) -> PyErr {
+    PyValueError::new_err(format!(
+        "{name} is {value}: it must be a whole number from 0 to {max}"
+    ))
+}
+
+/// `whole` for an argument that may be left out (`None`: `default`).
+pub(crate) fn whole_or(
+    name: &str,
+    value: Option<&Bound<'_, PyAny>>,
+    max: u64,
+    default: u64,
+) -> PyResult<u64> {
+    value.map_or(Ok(default), |v| whole(name, v, max))
 }

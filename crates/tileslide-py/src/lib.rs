@@ -7,10 +7,14 @@
 use pyo3::prelude::*;
 
 mod bodies;
+mod character;
+mod debug;
 mod errors;
 mod map;
+mod nav;
 mod render;
 mod trace;
+mod volumes;
 
 /// The module: its classes, its exception and its version.
 #[pymodule]
@@ -26,5 +30,18 @@ fn tileslide_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<trace::TileSet>()?;
     m.add_function(wrap_pyfunction!(render::render, m)?)?;
     m.add_function(wrap_pyfunction!(trace::trace, m)?)?;
+    m.add_class::<character::Character>()?;
+    m.add_class::<character::Contact>()?;
+    m.add_class::<character::MoveResult>()?;
+    m.add_class::<volumes::HitWorld>()?;
+    m.add_class::<volumes::HitType>()?;
+    m.add_class::<volumes::Volume>()?;
+    m.add_class::<volumes::ObjectId>()?;
+    m.add_class::<volumes::HitEvent>()?;
+    m.add_class::<nav::NavGrid>()?;
+    m.add_class::<nav::NavPath>()?;
+    m.add_class::<nav::FlowField>()?;
+    m.add_class::<debug::DebugLines>()?;
+    m.add("DebugKind", debug::kind_enum(m.py())?)?;
     Ok(())
 }

@@ -8,15 +8,18 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArray
 use pyo3::exceptions::{PyIndexError, PyValueError};
 use pyo3::prelude::*;
 use tileslide::io::ascii;
-use tileslide::{Cell, Faces, QueryFilter, Ray, TileId, Vec2};
+use tileslide::{
+    Cell, Faces, Owner, QueryFilter, Ray, Segment, SegmentFlags, TemporarySegment, TileId, Vec2,
+};
 
-use crate::errors::{finite, load_error};
+use crate::errors::{finite, finite_point, load_error, whole_or};
 use crate::trace::{TileSet, map_from_tiles};
 
 /// Rays cast a chunk at a time, so the batch's own buffers stay small whatever its size.
 const CHUNK: usize = 4096;
 
-/// A collision map: tiles on a grid, each a set of solid segments with seams culled.
+/// A collision map: tiles on a grid, each a set of solid segments with seams culled, and
+/// the temporary segments (moving platforms, doors) submitted until cleared.
 #[pyclass(module = "tileslide")]
 pub struct TileMap {
     pub(crate) map: tileslide::TileMap,
@@ -103,7 +106,7 @@ impl TileMap {
         Ok(TileMap { map })
     }
 
-    /// Builds a map from ASCII text (`#` solid, `.` empty, `/` `\` ramps, `-` one-way; rows
+    /// Builds a map from ASCII text (`#` solid, `.` empty, `/` `\` ramps, `=` one-way; rows
     /// top to bottom) with square cells of side `cell`.
     #[staticmethod]
     #[pyo3(signature = (text, cell = 1.0))]
@@ -268,6 +271,62 @@ impl TileMap {
             }
         }
         PyArray1::from_vec(py, out).reshape([n, 5])
+    }
+
+    /// Adds a temporary segment from (`x0`, `y0`) to (`x1`, `y1`) facing (`nx`, `ny`)
+    /// (normalised): a door or a moving platform, which every query, body and character
+    /// meets until it is cleared. `flags` 1 solid, 2 one-way; `owner` who submitted it
+    /// (`clear_temporaries(owner)` clears its segments); (`vx`, `vy`) how fast it moves (a
+    /// character standing on it rides it).
+    #[pyo3(signature = (x0, y0, x1, y1, nx, ny, *, flags = None, owner = None, vx = 0.0, vy = 0.0))]
+    #[allow(clippy::too_many_arguments)]
+    fn add_temporary(
+        &mut self,
+        x0: f32,
+        y0: f32,
+        x1: f32,
+        y1: f32,
+        nx: f32,
+        ny: f32,
+        flags: Option<Bound<'_, PyAny>>,
+        owner: Option<Bound<'_, PyAny>>,
+        vx: f32,
+        vy: f32,
+    ) -> PyResult<()> {
+        let a = finite_point(["x0", "y0"], x0, y0)?;
+        let b = finite_point(["x1", "y1"], x1, y1)?;
+        let normal = finite_point(["nx", "ny"], nx, ny)?;
+        let velocity = finite_point(["vx", "vy"], vx, vy)?;
+        let flags = whole_or("flags", flags.as_ref(), u32::MAX.into(), 1)? as u32;
+        let owner = whole_or("owner", owner.as_ref(), u64::MAX, 0)?;
+        self.map
+            .add_temporary(TemporarySegment {
+                segment: Segment::new(a, b),
+                normal,
+                flags: SegmentFlags(flags),
+                owner: Owner(owner),
+                velocity,
+            })
+            .map_err(|e| PyValueError::new_err(e.to_string()))
+    }
+
+    /// Removes the temporary segments of `owner`, or every one when None.
+    #[pyo3(signature = (owner = None))]
+    fn clear_temporaries(&mut self, owner: Option<Bound<'_, PyAny>>) -> PyResult<()> {
+        match owner {
+            None => self.map.clear_temporaries(),
+            Some(o) => {
+                self.map
+                    .clear_temporaries_of(Owner(whole_or("owner", Some(&o), u64::MAX, 0)?))
+            }
+        }
+        Ok(())
+    }
+
+    /// How many temporary segments the map holds.
+    #[getter]
+    fn temporary_count(&self) -> usize {
+        self.map.temporaries().len()
     }
 
     fn __repr__(&self) -> String {

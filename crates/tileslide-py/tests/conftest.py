@@ -2,7 +2,8 @@
 
 The scenes are written by `cargo run -p tileslide-scenes --example export` (once per
 test session, into the cargo target directory, always anew), so every agreement test
-compares with the core's own answers from the same checkout.
+compares with the core's own answers from the same checkout; the character runs, path
+queries and hit volumes scene likewise by `--example export_systems`.
 """
 
 import json
@@ -64,6 +65,38 @@ def run_crowd(scenes: Scenes, m):
         bodies.propose_many(ids, moves)
         bodies.step(m)
     return bodies, ids
+
+class Systems:
+    """The exported runs of the character, paths and hit volumes (see export_systems.rs)."""
+
+    def __init__(self, folder: Path):
+        self.folder = folder
+        self.settings = json.loads((folder / "systems.json").read_text())
+        self.flow = json.loads((folder / "flow.json").read_text())
+        self.character_map = (folder / "character_map.txt").read_text()
+
+    def floats(self, name: str, columns: int = 0) -> np.ndarray:
+        values = np.fromfile(self.folder / f"{name}.f32", dtype="<f4")
+        return values.reshape(-1, columns) if columns else values
+
+
+@pytest.fixture(scope="session")
+def systems() -> Systems:
+    folder = target_dir() / "scenes" / "systems"
+    subprocess.run(
+        ["cargo", "run", "--quiet", "-p", "tileslide-scenes", "--example", "export_systems"]
+        + ["--", str(folder)],
+        cwd=ROOT,
+        check=True,
+    )
+    return Systems(folder)
+
+
+def same_bits(a, b) -> bool:
+    """Whether two float32 arrays hold the same bits (NaNs included)."""
+    a = np.ascontiguousarray(a, dtype=np.float32)
+    b = np.ascontiguousarray(b, dtype=np.float32)
+    return a.shape == b.shape and np.array_equal(a.view(np.uint32), b.view(np.uint32))
 
 
 def fnv1a64(data: bytes) -> int:

@@ -20,6 +20,13 @@ def stub_names():
                 (n.name if isinstance(n, ast.FunctionDef) else n.target.id)
                 for n in node.body
                 if isinstance(n, (ast.FunctionDef, ast.AnnAssign))
+            } | {
+                # Enum members: `NAME = value`.
+                t.id
+                for n in node.body
+                if isinstance(n, ast.Assign)
+                for t in n.targets
+                if isinstance(t, ast.Name)
             }
         elif isinstance(node, ast.FunctionDef):
             top.add(node.name)
