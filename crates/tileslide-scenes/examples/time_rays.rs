@@ -4,7 +4,8 @@
 //! `cargo run --release -p tileslide-scenes --example time_rays -- [RAYS] [PASSES]` casts
 //! the first RAYS (default 1,000,000) rays of the rays scene on dungeon256 as one batch
 //! (`TileMap::cast_rays_into`), PASSES times (default 11) after one warm-up, and prints one
-//! JSON object: `{"rays", "passes", "hits", "median_ms", "min_ms", "max_ms"}`.
+//! JSON object: `{"rays", "passes", "hits", "median_ms", "min_ms", "max_ms", "times_ms"}`
+//! (every pass's time, in the order run).
 
 use std::process::ExitCode;
 use std::time::Instant;
@@ -46,13 +47,15 @@ fn run() -> Result<(), String> {
         map.cast_rays_into(&batch, &filter, &mut hits);
         times.push(start.elapsed().as_secs_f64() * 1e3);
     }
+    let in_order: Vec<String> = times.iter().map(|t| format!("{t:.3}")).collect();
     times.sort_by(f64::total_cmp);
     println!(
-        "{{\"rays\": {rays}, \"passes\": {passes}, \"hits\": {}, \"median_ms\": {:.3}, \"min_ms\": {:.3}, \"max_ms\": {:.3}}}",
+        "{{\"rays\": {rays}, \"passes\": {passes}, \"hits\": {}, \"median_ms\": {:.3}, \"min_ms\": {:.3}, \"max_ms\": {:.3}, \"times_ms\": [{}]}}",
         hits.iter().flatten().count(),
         times[passes / 2],
         times[0],
-        times[passes - 1]
+        times[passes - 1],
+        in_order.join(", ")
     );
     Ok(())
 }
