@@ -9,6 +9,7 @@ queries and hit volumes scene likewise by `--example export_systems`.
 import json
 import os
 import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -97,6 +98,13 @@ def same_bits(a, b) -> bool:
     a = np.ascontiguousarray(a, dtype=np.float32)
     b = np.ascontiguousarray(b, dtype=np.float32)
     return a.shape == b.shape and np.array_equal(a.view(np.uint32), b.view(np.uint32))
+
+
+def named(argument: str):
+    """The pattern a TypeError of pyo3's own argument conversion matches: pyo3 names the
+    argument in the exception's note (PEP 678), which Python 3.11 and newer have (pytest
+    matches notes too); on 3.9 and 3.10 the message alone says what was wrong."""
+    return argument if sys.version_info >= (3, 11) else None
 
 
 def fnv1a64(data: bytes) -> int:

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import tileslide
-from conftest import same_bits
+from conftest import named, same_bits
 
 ROOM = "########\n#......#\n#......#\n#......#\n########\n"
 
@@ -146,7 +146,7 @@ def test_wrong_types_raise_type_error_naming_the_argument():
         tileslide.Character(1.0, 1.0, radius=0.3, max_slides="four")
     with pytest.raises(TypeError, match="mask"):
         tileslide.Character(1.0, 1.0, radius=0.3, mask=1.5)
-    with pytest.raises(TypeError, match="x"):
+    with pytest.raises(TypeError, match=named("x")):
         tileslide.Character("1", 1.0, radius=0.3)
     with pytest.raises(TypeError):
         tileslide.Character(1.0, 1.0, radius=0.3).move_by(None, 1.0, 0.0)

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import tileslide
-from conftest import same_bits
+from conftest import named, same_bits
 
 # Two rooms joined by a gap one cell wide (column 5).
 ROOM = "##########\n#........#\n#........#\n#####.####\n#........#\n#........#\n##########\n"
@@ -101,7 +101,7 @@ def test_bad_input_raises_naming_the_argument():
         (lambda: tileslide.NavGrid(m, max_radius=0.0), ValueError, "max_radius"),
         (lambda: tileslide.NavGrid(m, max_radius=100.0), ValueError, "max_radius"),
         (lambda: tileslide.NavGrid(m, mask=-1), ValueError, "mask is -1"),
-        (lambda: tileslide.NavGrid("map"), TypeError, "map"),
+        (lambda: tileslide.NavGrid("map"), TypeError, named("map")),
         (lambda: nav.find_path(math.nan, 1.0, 2.0, 2.0, 0.3), ValueError, "x0 is NaN"),
         (lambda: nav.find_path(1.0, 1.0, 2.0, math.inf, 0.3), ValueError, "y1 is inf"),
         (lambda: nav.find_path(1.0, 1.0, 2.0, 2.0, math.nan), ValueError, "radius is NaN"),
@@ -114,8 +114,8 @@ def test_bad_input_raises_naming_the_argument():
         (lambda: field.lattice_direction(1.0, math.nan), ValueError, "y is NaN"),
         (lambda: field.distance(math.nan, 1.0), ValueError, "x is NaN"),
         (lambda: field.directions(np.zeros((3, 3), np.float32)), ValueError, r"\(N, 2\)"),
-        (lambda: field.directions(np.zeros((3, 2), np.float64)), TypeError, "points"),
-        (lambda: field.directions(np.zeros(4, np.float32)), TypeError, "points"),
+        (lambda: field.directions(np.zeros((3, 2), np.float64)), TypeError, named("points")),
+        (lambda: field.directions(np.zeros(4, np.float32)), TypeError, named("points")),
         (
             lambda: field.lattice_directions(np.array([[1, 1], [np.nan, 1]], np.float32)),
             ValueError,

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import tileslide
-from conftest import same_bits
+from conftest import named, same_bits
 from tileslide import HitType, HitWorld, Volume
 
 
@@ -144,7 +144,7 @@ def test_hit_types_are_the_cores_bits():
         (lambda: Volume.capsule(0.0, 0.0, 1.0, math.nan, 0.1), ValueError, "y1 is NaN"),
         (lambda: Volume.circle(0.0, 0.0, 1.0, -1), ValueError, "hit is -1"),
         (lambda: Volume.circle(0.0, 0.0, 1.0, 2**32), ValueError, "hit is"),
-        (lambda: Volume.circle(0.0, 0.0, 1.0, "HIT"), TypeError, "hit"),
+        (lambda: Volume.circle(0.0, 0.0, 1.0, "HIT"), TypeError, named("hit")),
         (lambda: HitWorld("octree"), ValueError, "broadphase"),
     ],
 )
@@ -159,7 +159,7 @@ def test_bad_objects_are_refused_naming_the_argument():
     v = [Volume.circle(0.0, 0.0, 1.0)]
     for kwargs, error, match in [
         ({"owner": -1}, ValueError, "owner is -1"),
-        ({"owner": 1.5}, TypeError, "owner"),
+        ({"owner": 1.5}, TypeError, named("owner")),
         ({"x": math.nan}, ValueError, "x is NaN"),
         ({"height": math.inf}, ValueError, "height is inf"),
         ({"width": -1.0}, ValueError, "size"),
@@ -169,8 +169,8 @@ def test_bad_objects_are_refused_naming_the_argument():
         ({"aim": (math.inf, 0.0)}, ValueError, r"aim\[0\] is inf"),
         ({"team": -2}, ValueError, "team is -2"),
         ({"swing": -1}, ValueError, "swing is -1"),
-        ({"attack": [1]}, TypeError, "attack"),
-        ({"vulnerable": "abc"}, TypeError, "vulnerable"),
+        ({"attack": [1]}, TypeError, named("attack")),
+        ({"vulnerable": "abc"}, TypeError, named("vulnerable")),
     ]:
         args = {"owner": 1, "x": 0.0, "y": 0.0, "width": 1.0, "height": 1.0, "attack": v}
         args.update(kwargs)
