@@ -473,7 +473,8 @@ bool ts_map_cast_ray(const ts_map *map,
 
 // Casts `n` rays, `rays[4k..4k+4]` = x0, y0, x1, y1 of ray k, with the batch's SIMD walk:
 // `out[k]` is ray k's first hit, or a miss (`t` NaN, `col`, `row` and `tile` `TS_NONE`).
-// Every ray is checked before any is cast: a coordinate that is not finite fails the call
+// Every ray is checked before any is cast: a coordinate that is not finite, or ends so far
+// apart that the ray's length overflows a float, fails the call
 // (`TS_ERROR_INVALID_ARGUMENT`, naming the ray) and leaves `out` as it was.
 //
 // # Safety

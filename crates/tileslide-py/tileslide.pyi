@@ -112,7 +112,8 @@ class TileMap:
     ) -> npt.NDArray[np.float32]:
         """Casts a batch: `rays` has shape (N, 4), rows `x0, y0, x1, y1`. Returns shape
         (N, 5), rows `t, x, y, nx, ny` of each ray's first hit, all NaN for a miss. Raises
-        ValueError for a wrong shape or a coordinate that is not finite (naming the row),
+        ValueError for a wrong shape, a coordinate that is not finite or a ray too long to
+        cast (naming the row),
         TypeError for an array that is not float32 and 2-dimensional."""
     def add_temporary(
         self,
@@ -198,9 +199,9 @@ class Bodies:
     def propose(self, id: BodyId, dx: float, dy: float) -> None:
         """Proposes the move (dx, dy) for the next step, replacing one proposed before."""
     def propose_many(self, ids: Sequence[BodyId], moves: npt.NDArray[np.float32]) -> None:
-        """Proposes `moves[k]` (shape (N, 2)) for `ids[k]`. Every entry is checked first:
-        a stale id (KeyError) or a move that is not finite (ValueError) names its entry and
-        proposes nothing."""
+        """Proposes `moves[k]` (shape (N, 2)) for `ids[k]`. A stale id (KeyError), or a
+        move that is not finite or would end out of range (ValueError), names its entry and
+        leaves every proposal as it was."""
     def set_position(self, id: BodyId, x: float, y: float) -> None:
         """Moves a body to (x, y) at once (no sweep), dropping its proposed move."""
     def step(self, map: TileMap) -> StepReport:

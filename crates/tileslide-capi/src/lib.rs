@@ -485,7 +485,8 @@ const CHUNK: usize = 4096;
 
 /// Casts `n` rays, `rays[4k..4k+4]` = x0, y0, x1, y1 of ray k, with the batch's SIMD walk:
 /// `out[k]` is ray k's first hit, or a miss (`t` NaN, `col`, `row` and `tile` `TS_NONE`).
-/// Every ray is checked before any is cast: a coordinate that is not finite fails the call
+/// Every ray is checked before any is cast: a coordinate that is not finite, or ends so far
+/// apart that the ray's length overflows a float, fails the call
 /// (`TS_ERROR_INVALID_ARGUMENT`, naming the ray) and leaves `out` as it was.
 ///
 /// # Safety
@@ -523,11 +524,20 @@ pub unsafe extern "C" fn ts_map_cast_rays(
                 std::slice::from_raw_parts_mut(out, n),
             )
         };
-        if let Some(k) = input.iter().position(|v| !v.is_finite()) {
-            let ray = k / 4;
+        // Coordinates that are not finite, or ends so far apart that the ray's length
+        // overflows (which would cast as a silent miss).
+        let bad = input
+            .chunks_exact(4)
+            .position(|r| !Ray::between(Vec2::new(r[0], r[1]), Vec2::new(r[2], r[3])).is_finite());
+        if let Some(ray) = bad {
             let r = &input[ray * 4..ray * 4 + 4];
+            let why = if r.iter().all(|v| v.is_finite()) {
+                "is too long to cast"
+            } else {
+                "is not finite"
+            };
             return Err(Failure::invalid(format!(
-                "ray {ray}, ({}, {}) to ({}, {}), is not finite",
+                "ray {ray}, ({}, {}) to ({}, {}), {why}",
                 r[0], r[1], r[2], r[3]
             )));
         }

@@ -208,6 +208,19 @@ fn null_pointers_bad_numbers_and_bad_flags_are_refused_with_a_status() {
             last_error()
         );
         assert_eq!(hits, before, "nothing written");
+        // Finite ends whose difference overflows: refused, not cast as a silent miss.
+        let too_long = [1.5, 1.5, 2.5, 1.5, -3e38, 0.0, 3e38, 0.0];
+        assert_eq!(
+            ts_map_cast_rays(map, too_long.as_ptr(), 2, 0, hits.as_mut_ptr()),
+            ts_status::TS_ERROR_INVALID_ARGUMENT
+        );
+        assert!(
+            last_error().starts_with("ts_map_cast_rays: ray 1, ")
+                && last_error().ends_with("is too long to cast"),
+            "{}",
+            last_error()
+        );
+        assert_eq!(hits, before, "nothing written");
         assert_eq!(
             ts_map_cast_rays(map, ptr::null(), 2, 0, hits.as_mut_ptr()),
             ts_status::TS_ERROR_NULL_POINTER

@@ -180,9 +180,9 @@ impl Bodies {
             .map_err(|e| body_error(&e))
     }
 
-    /// Proposes `moves[k]` (a `float32` array of shape `(N, 2)`) for `ids[k]`. Every entry is
-    /// checked first: a stale id or a move that is not finite raises, naming the entry, and
-    /// proposes nothing.
+    /// Proposes `moves[k]` (a `float32` array of shape `(N, 2)`) for `ids[k]`. A stale id,
+    /// or a move that is not finite or would end out of range, raises, naming the entry,
+    /// and leaves every proposal as it was.
     fn propose_many(&mut self, ids: Vec<BodyId>, moves: PyReadonlyArray2<'_, f32>) -> PyResult<()> {
         let moves = pairs(&moves, "moves")?;
         if moves.len() != ids.len() {
@@ -192,21 +192,25 @@ impl Bodies {
                 moves.len()
             )));
         }
-        for (k, (id, m)) in ids.iter().zip(&moves).enumerate() {
-            if let Err(e) = self.bodies.get(id.handle()) {
+        // Proposed one by one with the core's own checks; on a refusal the entries already
+        // proposed get their moves from before back (in reverse, for an id given twice),
+        // so a bad entry leaves every proposal as it was.
+        let mut before = Vec::with_capacity(ids.len());
+        for (k, (id, m)) in ids.iter().zip(moves).enumerate() {
+            let refused = match self.bodies.get(id.handle()) {
+                Ok(body) => {
+                    before.push((id.handle(), body.proposed_move()));
+                    self.bodies.propose(id.handle(), m).err()
+                }
+                Err(e) => Some(e),
+            };
+            if let Some(e) = refused {
+                for (handle, previous) in before.into_iter().rev() {
+                    // Moves the set accepted from these positions before: accepted again.
+                    let _ = self.bodies.propose(handle, previous);
+                }
                 return Err(at_entry(k, &e));
             }
-            if !m.is_finite() {
-                return Err(PyValueError::new_err(format!(
-                    "entry {k}: the move ({}, {}) is not finite",
-                    m.x, m.y
-                )));
-            }
-        }
-        for (k, (id, m)) in ids.iter().zip(moves).enumerate() {
-            self.bodies
-                .propose(id.handle(), m)
-                .map_err(|e| at_entry(k, &e))?;
         }
         Ok(())
     }

@@ -241,15 +241,21 @@ impl TileMap {
             copied = rays.as_array().iter().copied().collect::<Vec<f32>>();
             &copied
         };
-        if let Some(k) = input.iter().position(|v| !v.is_finite()) {
-            let r = &input[k / 4 * 4..k / 4 * 4 + 4];
+        // Every ray checked before any is cast: coordinates that are not finite, or ends so
+        // far apart that the ray's length overflows (which would cast as a silent miss).
+        let bad = input
+            .chunks_exact(4)
+            .position(|r| !Ray::between(Vec2::new(r[0], r[1]), Vec2::new(r[2], r[3])).is_finite());
+        if let Some(k) = bad {
+            let r = &input[k * 4..k * 4 + 4];
+            let why = if r.iter().all(|v| v.is_finite()) {
+                "is too long to cast"
+            } else {
+                "is not finite"
+            };
             return Err(PyValueError::new_err(format!(
-                "rays[{}] = ({}, {}, {}, {}) is not finite",
-                k / 4,
-                r[0],
-                r[1],
-                r[2],
-                r[3]
+                "rays[{k}] = ({}, {}, {}, {}) {why}",
+                r[0], r[1], r[2], r[3]
             )));
         }
         let filter = filter(both_sides);

@@ -107,6 +107,21 @@ def test_propose_many_checks_every_entry_before_proposing_any():
         bodies.positions([gone])
 
 
+def test_a_move_ending_out_of_range_leaves_every_proposal_as_it_was():
+    m = tileslide.TileMap.from_ascii(ROOM)
+    bodies = tileslide.Bodies()
+    a = bodies.add(2.0, 2.5, 0.3)
+    b = bodies.add(5.0, 2.5, 0.3)
+    bodies.propose(a, 0.5, 0.0)
+    # Entry 0 (a's new move) is valid, entry 2 ends beyond the coordinate range.
+    moves = np.array([[-0.5, 0.0], [0.25, 0.0], [1e30, 0.0]], dtype=np.float32)
+    with pytest.raises(ValueError, match="entry 2: .*out of range"):
+        bodies.propose_many([a, b, a], moves)
+    report = bodies.step(m)
+    assert report.moving == 1, "only a's earlier move is proposed"
+    assert bodies.position(a) == (2.5, 2.5) and bodies.position(b) == (5.0, 2.5)
+
+
 @pytest.mark.parametrize("radius", [0.0, -1.0, math.nan, math.inf])
 def test_a_radius_that_is_not_positive_and_finite_is_refused(radius):
     with pytest.raises(ValueError, match="radius"):

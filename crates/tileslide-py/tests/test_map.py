@@ -142,10 +142,14 @@ def test_coordinates_that_are_not_finite_are_refused(bad):
         m.cast_rays(rays)
 
 
-def test_a_ray_too_long_to_cast_is_refused():
+def test_a_ray_too_long_to_cast_is_refused_alone_and_in_a_batch():
     m = tileslide.TileMap.from_ascii(ROOM)
     with pytest.raises(ValueError, match="too long"):
         m.cast_ray(-3e38, 0.0, 3e38, 0.0)
+    # Finite ends whose difference overflows: refused, not cast as a silent miss.
+    rays = np.array([[1.5, 1.5, 2.5, 1.5], [-3e38, 0.0, 3e38, 0.0]], dtype=np.float32)
+    with pytest.raises(ValueError, match=r"rays\[1\] = .* is too long to cast"):
+        m.cast_rays(rays)
 
 
 def test_a_batch_of_the_wrong_shape_or_type_is_refused():
