@@ -131,11 +131,22 @@ impl Scene {
     /// The steps to run: `asked` (`--steps`), or the scene's, or those of the character's
     /// script, or 100.
     pub fn steps(&self, asked: Option<u64>, path: &Path) -> Result<u64> {
-        let script = self
-            .character
-            .as_ref()
-            .map(|c| c.script.iter().map(|e| e.steps).sum::<u64>())
-            .filter(|&n| n > 0);
+        // The script's total, added without overflow: past u64 it is past `MAX_STEPS` too.
+        let script = match &self.character {
+            Some(c) => match c
+                .script
+                .iter()
+                .try_fold(0u64, |n, e| n.checked_add(e.steps))
+            {
+                Some(total) => Some(total),
+                None => bail!(
+                    "{}: character.script: its steps add up to more than the {MAX_STEPS} allowed",
+                    path.display()
+                ),
+            },
+            None => None,
+        }
+        .filter(|&n| n > 0);
         let steps = asked.or(self.steps).or(script).unwrap_or(100);
         if steps > MAX_STEPS {
             bail!(

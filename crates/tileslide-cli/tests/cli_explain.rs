@@ -174,6 +174,25 @@ fn simulate_runs_the_scene_character_to_the_end_of_its_script() {
 }
 
 #[test]
+fn a_script_whose_steps_overflow_is_refused_not_wrapped() {
+    // Two entries of 2^63 steps each: their total does not fit in 64 bits.
+    let scene = scratch_in(
+        "simulate-script-overflow",
+        "scene.json",
+        "{\"ascii\": \"####\\n#..#\\n####\", \"character\": {\"x\": 1.5, \"y\": 1.5, \
+         \"half_width\": 0.3, \"half_height\": 0.3, \"script\": [{\"steps\": 9223372036854775808}, \
+         {\"steps\": 9223372036854775808}]}}",
+    );
+    let o = tileslide(&["simulate", scene.to_str().unwrap(), "--json"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("character.script: its steps add up to more than"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
 fn a_character_without_a_shape_is_refused_by_name() {
     let scene = scratch_in(
         "explain-bad-character",

@@ -9,6 +9,7 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArray
 use pyo3::exceptions::{PyKeyError, PyValueError};
 use pyo3::prelude::*;
 use tileslide::io::bitmap::{BitmapOptions, load_tile_set};
+use tileslide::limits::MAX_CELLS;
 use tileslide::{TileId, TileShape, Vec2};
 
 use crate::errors::load_error;
@@ -140,6 +141,12 @@ pub(crate) fn map_from_tiles(
             shape[0], shape[1]
         )));
     };
+    // Refused before the cells are copied, as the core refuses such a map.
+    if u64::from(width) * u64::from(height) > MAX_CELLS {
+        return Err(PyValueError::new_err(format!(
+            "tiles has shape ({height}, {width}): a map has at most {MAX_CELLS} cells"
+        )));
+    }
     let view = tiles.as_array();
     let mut cells = Vec::with_capacity(view.len());
     for ((row, col), &id) in view.indexed_iter() {

@@ -109,6 +109,11 @@ def test_a_png_tile_sheet_becomes_a_traced_tile_set_and_a_map():
     # A ray down the middle column meets the bottom row's tiles.
     hit = m.cast_ray(32.0 + 24.0, 17.0, 32.0 + 24.0, 47.0)
     assert hit is not None and hit.cell == (1, 2)
+    # Past the map's cell limit (2^26): refused before the cells are read. (A broadcast
+    # view: the array itself takes no memory.)
+    huge = np.broadcast_to(np.int64(-1), (1 << 14, 1 << 13))
+    with pytest.raises(ValueError, match=r"tiles has shape \(16384, 8192\): .* at most 67108864"):
+        tileslide.TileMap.from_tiles(huge, tiles)
     with pytest.raises(ValueError, match=r"tiles\[0, 1\] is 42"):
         tileslide.TileMap.from_tiles(np.array([[0, 42]]), tiles)
     with pytest.raises(tileslide.LoadError) as caught:
