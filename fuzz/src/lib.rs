@@ -1,0 +1,3 @@
+//! The checks the fuzz targets run (`checks`), shared with the stable regression test.
+
+pub mod checks;
