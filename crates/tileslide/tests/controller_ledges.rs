@@ -169,6 +169,27 @@ fn a_box_falling_past_a_ledge_corner_slides_down_its_face_at_30_hz_too() {
     }
 }
 
+#[test]
+fn a_box_falling_onto_a_ledge_edge_beside_it_slides_onto_the_top_at_30_60_120_and_240_hz() {
+    // The box's path passes 3e-4 above the block's corner: its fall meets the top's end
+    // when its side is still 7e-4 short of being over it. It once took that for a landing,
+    // found no ground under the walk's start, flew the step again into the same end, and
+    // hung there in the air for the rest of the run at every rate (240 Hz 1.2e-3 nearer the
+    // block than 30 Hz). It slides onto the top and walks on along it.
+    let m = ascii::parse(BLOCK, "block.txt", 1.0).unwrap();
+    let hero = CharacterShape::rect(v(0.1, 0.1)).unwrap();
+    let (start, velocity) = (v(9.6506815, 2.8328457), v(11.934995, 3.190716));
+    let ends = RATES.map(|rate| fly(&m, hero, start, velocity, rate));
+    // Flown 0.25 to the corner, then walked along the top for the rest of the 0.2 s.
+    let top = v(start.x + 0.2 * velocity.x, 3.0 - 0.1 - SKIN);
+    for (rate, end) in RATES.iter().zip(ends) {
+        assert!(
+            (end - top).abs().max_element() <= TOLERANCE,
+            "{rate} Hz ends at {end:?}, not on the top at {top:?}"
+        );
+    }
+}
+
 /// Moves `shape` (half extents `half`) from `gap` left of the block's face and `above` its
 /// top (its right side and its bottom) at `velocity` for 0.2 s at each of [`RATES`]; an
 /// error unless every end is within [`TOLERANCE`] of the 30 Hz one.
@@ -478,5 +499,29 @@ proptest! {
         let tolerance = TOLERANCE + wedged + DRIFT * (1.0 + vy / vx);
         let what = format!("{shape:?} across a gap {width} wide in a ledge {height} high at {:?} for {time} s", v(-vx, vy));
         walks_alike(ends, tolerance, &what)?;
+    }
+}
+
+#[test]
+fn a_circle_stepping_down_a_low_ledge_lands_where_the_floor_is_at_30_60_120_and_240_hz() {
+    // A circle of radius 0.373 walking left off a ledge 0.136 high (lower than the snap
+    // distance) rolls over its corner until the normal there is steeper than the slope
+    // limit, then, too far above the floor to stand on it, rolls on round the corner down
+    // onto it. A longer step walking the corner's tangent once passed over where the
+    // circle stands on neither (between there and where the floor comes within two skins
+    // below the corner) and stepped straight down to the floor: 30 Hz ended 0.0018 right of
+    // 240 Hz, whose step ended in that stretch.
+    let (radius, height, gap) = (0.373388, 0.13605924, 0.5346017);
+    let (vx, vy, time) = (3.925913, 19.360802, 10.0 / 30.0);
+    let m = ledge(height);
+    let ball = CharacterShape::circle(radius).unwrap();
+    let x = 10.0 + radius + gap;
+    let ends = RATES.map(|rate| walk(&m, ball, x, 5.0 - height, v(-vx, vy), time, rate));
+    for (rate, end) in RATES.iter().zip(ends) {
+        assert!(
+            (end - ends[0]).abs().max_element() <= TOLERANCE,
+            "{rate} Hz ends at {end:?}, 30 Hz at {:?}",
+            ends[0]
+        );
     }
 }

@@ -514,8 +514,21 @@ impl Character {
                 Surface::Left => contacts.left = Some(contact),
                 Surface::Right => contacts.right = Some(contact),
             }
-            let landing =
+            let mut landing =
                 surface == Surface::Ground && (phase == Phase::Walk || rest.dot(self.up) <= 0.0);
+            // A fall that meets the ground's end beside it (a box's bottom corner on a
+            // ledge's edge, stopped before its side is over the ledge) is not standing on it:
+            // a walk from there would leave the ground where it starts and fly the step
+            // again, stuck on the edge. It slides on along the ground through the air, and
+            // stands on it once over it.
+            if landing
+                && phase == Phase::Air
+                && self
+                    .ground_hit(map, 2.0 * self.config.skin, options)
+                    .is_none()
+            {
+                landing = false;
+            }
             if phase == Phase::Air && !landing && self.at_rounded_corner(&hit, &wall) {
                 let corner = nearest_end(&wall.capsule.segment, self.position);
                 (remaining, first) = self.roll(map, corner, rest, options, log);

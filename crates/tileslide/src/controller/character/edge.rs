@@ -149,15 +149,25 @@ impl Character {
                 for offset in offsets.into_iter().flatten() {
                     self.events.push((at + offset) / across);
                 }
-                // Where a walkable line takes over from the corner below a circle.
+                // Where a walkable line takes over from the corner below a circle, and
+                // where it comes within two skins below the corner, from where a circle
+                // over a corner too steep to stand on stands on the line instead (see
+                // `ground_hit`).
                 if let CharacterShape::Circle { radius } = self.shape {
                     for line in &self.walls {
-                        for offset in
-                            takeovers(corner, radius, line, self.up, self.side, self.walkable)
-                                .into_iter()
-                                .flatten()
-                        {
-                            self.events.push((at + offset) / across);
+                        for lift in [0.0, 2.0 * self.config.skin] {
+                            let found = takeovers(
+                                corner,
+                                radius,
+                                line,
+                                lift,
+                                self.up,
+                                self.side,
+                                self.walkable,
+                            );
+                            for offset in found.into_iter().flatten() {
+                                self.events.push((at + offset) / across);
+                            }
                         }
                     }
                 }
@@ -212,15 +222,16 @@ impl Character {
 }
 
 /// The sideways offsets from `corner` at which a circle of `radius` lowered onto both
-/// touches `corner` and the line of `wall` (when that is walkable for `up` and `walkable`)
-/// at the same height: where one takes over from the other below it. The circle's centre
-/// over `corner + offset·side` touches the corner at height `√(r² − offset²)` above it and
-/// the line at `α + β·offset`, which are equal at the roots of
-/// `(1 + β²)·offset² + 2αβ·offset + α² − r² = 0`.
+/// touches `corner` `lift` higher than it touches the line of `wall` (when that is walkable
+/// for `up` and `walkable`): with no lift, where one takes over from the other below it.
+/// The circle's centre over `corner + offset·side` touches the corner at height
+/// `√(r² − offset²)` above it and the line at `α + β·offset`, `α` including the lift, which
+/// are equal at the roots of `(1 + β²)·offset² + 2αβ·offset + α² − r² = 0`.
 fn takeovers(
     corner: Vec2,
     radius: f32,
     wall: &Wall,
+    lift: f32,
     up: Vec2,
     side: Vec2,
     walkable: f32,
@@ -230,7 +241,7 @@ fn takeovers(
     if rise < walkable {
         return [None; 2];
     }
-    let alpha = (radius - (corner - wall.capsule.segment.a).dot(normal)) / rise;
+    let alpha = (radius - (corner - wall.capsule.segment.a).dot(normal)) / rise + lift;
     let beta = -normal.dot(side) / rise;
     let (a, b, c) = (
         1.0 + beta * beta,
