@@ -190,6 +190,44 @@ fn a_box_falling_onto_a_ledge_edge_beside_it_slides_onto_the_top_at_30_60_120_an
     }
 }
 
+#[test]
+fn a_circle_pressed_round_a_corner_onto_the_face_below_it_slides_down_the_face() {
+    // Circles about 0.5 in radius, their centres up to 0.15 above the block's corner
+    // (10, 3), moving fast into the block and slowly down: each rolls down round the corner
+    // until level with it, then slides down the face a skin from it at every rate.
+    // - The first once rolled on round the corner's cap below the corner, where the face is
+    //   the surface: the sideways push rolled it further down, by a different amount at
+    //   each rate (30 Hz 0.003 lower).
+    // - The second, at 30 Hz, met the face's cap a hair below the corner (rounding), a
+    //   normal already past the face's, and rolled round it too: 0.005 lower than 60 Hz.
+    let m = ascii::parse(BLOCK, "block.txt", 1.0).unwrap();
+    for (radius, gap, above, velocity) in [
+        (0.539_826_6, 0.01, 0.393_769_8, v(10.161_679, 1.0)),
+        (
+            0.503_309_7,
+            0.329_611_33,
+            0.354_422_36,
+            v(10.793_678, 1.455_210_1),
+        ),
+    ] {
+        let ball = CharacterShape::circle(radius).unwrap();
+        let start = v(10.0 - gap - radius, 3.0 + above - radius);
+        let ends = RATES.map(|rate| fly(&m, ball, start, velocity, rate));
+        for (rate, end) in RATES.iter().zip(ends) {
+            assert!(end.y > 3.0, "radius {radius}, {rate} Hz: {end:?}");
+            assert!(
+                (end.x - (10.0 - radius - SKIN)).abs() < 1e-4,
+                "radius {radius}, {rate} Hz: {end:?}, not a skin from the face"
+            );
+            assert!(
+                (end - ends[0]).abs().max_element() <= TOLERANCE,
+                "radius {radius}, {rate} Hz: {end:?} vs {:?}",
+                ends[0]
+            );
+        }
+    }
+}
+
 /// Moves `shape` (half extents `half`) from `gap` left of the block's face and `above` its
 /// top (its right side and its bottom) at `velocity` for 0.2 s at each of [`RATES`]; an
 /// error unless every end is within [`TOLERANCE`] of the 30 Hz one.

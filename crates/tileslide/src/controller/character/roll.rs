@@ -1,14 +1,14 @@
 //! A circle rolling around a rounded corner, exactly, whatever the frame rate.
 
-use std::f32::consts::{PI, TAU};
+use std::f32::consts::{FRAC_PI_2, PI, TAU};
 
 use glam::Vec2;
 
 use super::{Character, MIN_MOVE, Met, MoveOptions, nearest_end};
 use crate::controller::CharacterShape;
 use crate::controller::trace::{Log, SweepPurpose};
-use crate::geometry::SweepHit;
-use crate::query::Wall;
+use crate::geometry::{Aabb, SweepHit};
+use crate::query::{QueryFilter, Wall};
 use crate::tiles::TileMap;
 
 /// A circle whose contact normal with a corner rises more than this (its sine) is above
@@ -44,7 +44,10 @@ impl Character {
     /// whole move presses again). The arc is travelled a skin from the corner by swept legs
     /// along its tangents (at most [`ROLL_STEP`] of turn each), so nothing on the way is
     /// passed through; a leg stopped by another surface puts the circle where the arc meets
-    /// that surface (see [`arc_meets`](Self::arc_meets)).
+    /// that surface (see [`arc_meets`](Self::arc_meets)). The corner is rounded only
+    /// between the faces that meet there: a roll that would turn the normal past one of
+    /// them ends where the normal is that face's, the rest of the move meeting the face flat
+    /// (see [`face_reached`](Self::face_reached)).
     pub(super) fn roll(
         &mut self,
         map: &TileMap,
@@ -81,9 +84,21 @@ impl Character {
         let k = (0.5 * start).tan();
         // The fraction of the move at which the normal turns square to the motion.
         let leave = radius / length * k.abs().ln();
-        let done = leave.clamp(0.0, 1.0);
-        let end = 2.0 * (k * (-length * done / radius).exp()).atan();
+        let mut done = leave.clamp(0.0, 1.0);
+        let mut end = 2.0 * (k * (-length * done / radius).exp()).atan();
         let dir = driver / length;
+        let mut flat = None;
+        if let Some((angle, face)) = self.face_reached(map, corner, dir, (start, end)) {
+            // The part of the move that turns the normal to the face's.
+            let rolled = radius / length * (k / (0.5 * angle).tan()).ln();
+            done = if rolled.is_nan() {
+                0.0
+            } else {
+                rolled.clamp(0.0, done)
+            };
+            end = angle;
+            flat = Some(face);
+        }
         let pieces = ((end - start).abs() / ROLL_STEP).ceil().max(1.0);
         let mut from = start;
         for i in 1..=pieces as u32 {
@@ -116,7 +131,82 @@ impl Character {
             }
             from = to;
         }
-        (rest * (1.0 - done), None)
+        (rest * (1.0 - done), flat)
+    }
+
+    /// Where a roll around `corner` whose contact normal turns from angle `span.0` to
+    /// `span.1` (from `dir`) first turns it out of the rounded cap of a face that ends at
+    /// the corner (the face met, or one that goes on from it there): the angle, at which the
+    /// normal is that face's, and the face as met there, flat. A cap rounds its segment's
+    /// end only on the far side of the end (where the normal leans out along the segment);
+    /// past that, the face's flat side is the surface.
+    fn face_reached(
+        &mut self,
+        map: &TileMap,
+        corner: Vec2,
+        dir: Vec2,
+        (start, end): (f32, f32),
+    ) -> Option<(f32, Met)> {
+        let turn = end - start;
+        if turn == 0.0 {
+            return None;
+        }
+        // Ends this close are the corner (the map's own tolerance for joined ends).
+        let near = 1e-4 * map.cell_size().max_element();
+        let region = Aabb::from_center(corner, Vec2::splat(near));
+        // (The sweeps' buffer, which holds nothing the move still needs.)
+        let mut walls = std::mem::take(&mut self.walls);
+        walls.clear();
+        map.walls_in(
+            &region,
+            &QueryFilter::default().with_mask(self.config.mask),
+            &mut walls,
+        );
+        let mut best: Option<(f32, f32, Wall)> = None;
+        for &wall in &walls {
+            let segment = &wall.capsule.segment;
+            // Its direction out of the corner (only its sign along `perp(n)` counts).
+            let out = if segment.a.distance_squared(corner) <= near * near {
+                segment.a - segment.b
+            } else if segment.b.distance_squared(corner) <= near * near {
+                segment.b - segment.a
+            } else {
+                continue;
+            };
+            // The cap is where the normal `u` leans along `out` (`u·out ≥ 0`); the roll
+            // crosses its edge where `u` is the face's normal `n`, and leaves the cap there
+            // if `u·out` falls as it turns (`du` is `turn · perp(u)`).
+            let normal = wall.capsule.normal;
+            if turn * normal.perp().dot(out) >= 0.0 {
+                continue;
+            }
+            let angle = dir.angle_to(normal);
+            // The turn from `start` to `angle`, in (−π, π].
+            let mut to = angle - start;
+            if to > PI {
+                to -= TAU;
+            } else if to <= -PI {
+                to += TAU;
+            }
+            let mut progress = to / turn;
+            // A normal already just past the face's at the start (a sweep that met the cap
+            // where the face begins, a hair below the corner by rounding): the face at once.
+            if progress < 0.0 && to.abs() < FRAC_PI_2 {
+                progress = 0.0;
+            }
+            if (0.0..=1.0).contains(&progress) && best.as_ref().is_none_or(|(p, ..)| progress < *p)
+            {
+                best = Some((progress, start + turn * progress, wall));
+            }
+        }
+        self.walls = walls;
+        best.map(|(_, angle, wall)| {
+            let hit = SweepHit {
+                t: 0.0,
+                normal: wall.capsule.normal,
+            };
+            (angle, (hit, wall))
+        })
     }
 
     /// The angle (from `dir`, between the ends of `span`) at which the centre of a circle
