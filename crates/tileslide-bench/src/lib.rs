@@ -1,4 +1,5 @@
 //! Whole-scene benchmarks of tileslide against its peers, measured in the same run.
+#![forbid(unsafe_code)]
 
 pub mod broad;
 pub mod crowd;

@@ -46,7 +46,7 @@
 //! With a power-of-two scale the plugin gives the core's results bit for bit: bodies are
 //! added to the core in entity order, positions are kept in the core and only written to
 //! `Transform`s, and a `Transform` moved by the game is a teleport.
-
+#![forbid(unsafe_code)]
 // Bevy systems take what they use as parameters, queries as tuples: that is how Bevy code
 // reads, not a design to factor.
 #![allow(clippy::too_many_arguments, clippy::type_complexity)]

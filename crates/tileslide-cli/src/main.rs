@@ -1,6 +1,7 @@
 //! The `tileslide` command-line tool: inspect maps, cast rays, find paths, simulate crowds,
 //! draw and bake maps, run the demo games; with the `peers` feature, run the standard
 //! benchmarks against tileslide's peers.
+#![forbid(unsafe_code)]
 
 use std::path::PathBuf;
 use std::process::ExitCode;

@@ -45,6 +45,7 @@
 //! assert_eq!(game.summary().audit.overlapping_pairs, 0);
 //! # Ok::<(), tileslide_dungeon::GameError>(())
 //! ```
+#![forbid(unsafe_code)]
 
 // The modules import each other in one direction only. At the bottom, plain types:
 // `step` (the fixed step), `error`, `components`, `events`, `config`, `audit`, `explore`,

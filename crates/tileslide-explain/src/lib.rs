@@ -21,6 +21,7 @@
 //! assert!(words.contains("cell (4, 1) tile"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+#![forbid(unsafe_code)]
 
 pub mod body;
 pub mod cell;

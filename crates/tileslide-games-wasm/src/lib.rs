@@ -67,6 +67,7 @@
 //! panics (numbers that must be whole are checked, never wrapped). Objects hold wasm
 //! memory until `.free()`, or until the garbage collector runs a `FinalizationRegistry`
 //! callback (the build enables it).
+#![forbid(unsafe_code)]
 
 pub mod args;
 pub mod draw;

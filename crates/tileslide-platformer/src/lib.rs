@@ -29,6 +29,7 @@
 //! assert!(summary.reached_goal && summary.audit.is_clean());
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+#![forbid(unsafe_code)]
 
 // The modules import each other in one direction only. At the bottom: `input`, `error`,
 // `fall`, `coin`, `hits`, `audit`, `replica_objects`, `level`, `summary`. Above them

@@ -3,6 +3,7 @@
 //! Python loop), bodies (positions and proposed moves as NumPy arrays), with errors as
 //! Python's own exceptions and `tileslide.LoadError` for a map that does not load. The
 //! stubs editors read are `tileslide.pyi`; the tests are `tests/` (pytest).
+#![forbid(unsafe_code)]
 
 use pyo3::prelude::*;
 

@@ -30,6 +30,7 @@
 //!   ([`Picture::skipped`]); nothing panics.
 //!
 //! See [`Picture`] for an example, and `docs/render.md` in the repository.
+#![forbid(unsafe_code)]
 
 mod animation;
 mod camera;

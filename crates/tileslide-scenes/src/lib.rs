@@ -31,6 +31,7 @@
 //!     .count();
 //! assert!(hits > 900);
 //! ```
+#![forbid(unsafe_code)]
 
 mod audit;
 mod broad;

@@ -12,6 +12,7 @@
 //! What JavaScript calls is a thin layer (`map`, `bodies`, `character`, `hits`, `nav`) over
 //! plain Rust (`rays`, `body_set`, `handles`, `args`), so the answers are tested natively
 //! and in Node against the same checksums: wasm and native give the same bits.
+#![forbid(unsafe_code)]
 
 pub mod args;
 pub mod bodies;

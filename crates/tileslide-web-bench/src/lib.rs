@@ -15,6 +15,7 @@
 //! - `rays.f32`: the rays scene, 4 floats a ray (`x0, y0, x1, y1`), [`RAYS`] rays;
 //! - `crowd.f32`: the crowd scene, 4 floats a circle (`x, y, vx, vy`), [`CROWD`] circles
 //!   (the first 2,000 are the golden run's crowd).
+#![forbid(unsafe_code)]
 
 use std::fmt;
 use std::path::Path;

@@ -2,6 +2,7 @@
 //! `tileslide-web-bench time DIR [RUNS]` times them natively and prints one line of JSON:
 //! the median seconds for the 1,000,000 rays and for one step of the 10,000-circle crowd
 //! (100 steps a run), with the answers' checksums. `web/bench/run.mjs` runs both.
+#![forbid(unsafe_code)]
 
 use std::path::PathBuf;
 use std::process::ExitCode;
