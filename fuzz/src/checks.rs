@@ -19,14 +19,22 @@ pub type Check = fn(&[u8]);
 
 /// The targets by name, for the regression test: each file of `corpus/NAME/` and
 /// `regressions/NAME/` goes through `check`.
-pub const TARGETS: [(&str, Check); 7] = [
+pub const TARGETS: [(&str, Check); 15] = [
     ("ascii", ascii),
     ("tmx", tmx),
     ("tmj", tmj),
     ("ldtk", ldtk),
     ("baked", baked),
+    ("tsx", tsx),
+    ("tsj", tsj),
     ("replica_tileset", replica_tileset),
+    ("replica_level", replica_level),
     ("bitmap", bitmap),
+    ("bodies", super::api::bodies),
+    ("character", super::api::character),
+    ("casts", super::api::casts),
+    ("paths", super::api::paths),
+    ("volumes", super::api::volumes),
 ];
 
 /// Casts rays across a loaded map and checks what they hit.
@@ -115,6 +123,51 @@ pub fn tmj(data: &[u8]) {
     }
 }
 
+/// A map (4 by 3 cells of 16 pixels, one layer) whose tile set is the given bytes, as the
+/// external file its `source` names: what a Tiled tile set file makes of a map.
+const TSX_MAP: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
+<map version="1.10" orientation="orthogonal" renderorder="right-down" width="4" height="3" tilewidth="16" tileheight="16" infinite="0">
+ <tileset firstgid="1" source="fuzz.tsx"/>
+ <layer id="1" name="collision" width="4" height="3">
+  <data encoding="csv">
+1,2,3,4,
+5,0,6,7,
+8,9,10,11
+</data>
+ </layer>
+</map>"#;
+
+/// [`TSX_MAP`] as JSON, its tile set in `fuzz.tsj`.
+const TSJ_MAP: &str = r#"{"type": "map", "version": "1.10", "orientation": "orthogonal",
+ "renderorder": "right-down", "width": 4, "height": 3, "tilewidth": 16, "tileheight": 16,
+ "infinite": false,
+ "tilesets": [{"firstgid": 1, "source": "fuzz.tsj"}],
+ "layers": [{"id": 1, "name": "collision", "type": "tilelayer", "width": 4, "height": 3,
+   "x": 0, "y": 0, "opacity": 1, "visible": true,
+   "data": [1, 2, 3, 4, 5, 0, 6, 7, 8, 9, 10, 11]}]}"#;
+
+/// Tiled options whose only external file is `name`, holding `data`.
+fn tile_set_file(name: &str, data: &[u8]) -> TiledOptions {
+    TiledOptions {
+        files: [(name.to_owned(), data.to_vec())].into(),
+        ..TiledOptions::default()
+    }
+}
+
+/// A Tiled tile set as XML (`.tsx`), loaded as a map's external tile set.
+pub fn tsx(data: &[u8]) {
+    if let Ok(tiled) = parse_tmx(TSX_MAP, "fuzz.tmx", &tile_set_file("fuzz.tsx", data)) {
+        poke(&tiled.map);
+    }
+}
+
+/// A Tiled tile set as JSON (`.tsj`), loaded as a map's external tile set.
+pub fn tsj(data: &[u8]) {
+    if let Ok(tiled) = parse_tmj(TSJ_MAP, "fuzz.tmj", &tile_set_file("fuzz.tsj", data)) {
+        poke(&tiled.map);
+    }
+}
+
 /// An LDtk project with its levels inline (a level in a separate file is not found: the
 /// project's folder does not exist).
 pub fn ldtk(data: &[u8]) {
@@ -144,6 +197,17 @@ pub fn baked(data: &[u8]) {
 /// A Replica Island tile set (`collision.bin`).
 pub fn replica_tileset(data: &[u8]) {
     let _ = replica::parse_tile_set(data, "fuzz.bin");
+}
+
+/// A Replica Island level (`level.bin`), over the tile set of an ASCII map (its ids 0 to 7,
+/// some solid, some ramps, some one-way).
+pub fn replica_level(data: &[u8]) {
+    let Ok(tiles) = ascii::parse("#/\\=.#/=\n", "tiles.txt", 1.0) else {
+        panic!("the tile set's map does not load")
+    };
+    if let Ok(map) = replica::parse_level(data, "fuzz.bin", tiles.tile_set().clone()) {
+        poke(&map);
+    }
 }
 
 /// A PNG tile sheet, traced: the first two bytes pick the tile size.

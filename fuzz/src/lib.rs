@@ -1,3 +1,5 @@
-//! The checks the fuzz targets run (`checks`), shared with the stable regression test.
+//! The checks the fuzz targets run (`checks` for the loaders, `api` for the API surface),
+//! shared with the stable regression test.
 
+pub mod api;
 pub mod checks;

@@ -6,6 +6,8 @@
 
 use std::path::{Path, PathBuf};
 
+#[path = "../../../fuzz/src/api.rs"]
+mod api;
 #[path = "../../../fuzz/src/checks.rs"]
 mod checks;
 
