@@ -3,9 +3,12 @@
 
 use std::ptr;
 
+use tileslide::limits::MAX_COMPOUND_CIRCLES;
 use tileslide::{Bodies, BodyDesc, BodyError, BodyFilter, BodyHandle, BodyShape, Circle, Vec2};
 
-use crate::{Failure, free_boxed, give_boxed, guarded, map_ref, owner_of, ts_map, ts_status};
+use crate::{
+    Failure, free_boxed, give_boxed, guarded, map_ref, owner_of, slice_fits, ts_map, ts_status,
+};
 
 /// A set of bodies (opaque): made by `ts_bodies_create`, freed by `ts_bodies_free`.
 pub struct ts_bodies {
@@ -179,6 +182,13 @@ pub unsafe extern "C" fn ts_bodies_add(
         let shape = if def.circle_count == 0 {
             BodyShape::circle(def.radius)
         } else {
+            // (Before the slice is made: see `slice_fits`.)
+            if def.circle_count > MAX_COMPOUND_CIRCLES {
+                return Err(Failure::invalid(format!(
+                    "def.circle_count is {}, at most {MAX_COMPOUND_CIRCLES}",
+                    def.circle_count
+                )));
+            }
             if def.circles.is_null() {
                 return Err(Failure::null("def.circles"));
             }
@@ -274,7 +284,10 @@ pub unsafe extern "C" fn ts_bodies_propose_many(
         if moves.is_null() {
             return Err(Failure::null("moves"));
         }
-        let Some(floats) = n.checked_mul(2) else {
+        let Some(floats) = n
+            .checked_mul(2)
+            .filter(|&f| slice_fits::<f32>(f) && slice_fits::<ts_body_id>(n))
+        else {
             return Err(Failure::invalid(format!("n = {n} moves is too many")));
         };
         // SAFETY: `ids` holds n ids and `moves` 2 n floats, as the caller promises.
@@ -398,7 +411,10 @@ pub unsafe extern "C" fn ts_bodies_positions(
         if out_xy.is_null() {
             return Err(Failure::null("out_xy"));
         }
-        let Some(floats) = n.checked_mul(2) else {
+        let Some(floats) = n
+            .checked_mul(2)
+            .filter(|&f| slice_fits::<f32>(f) && slice_fits::<ts_body_id>(n))
+        else {
             return Err(Failure::invalid(format!("n = {n} ids is too many")));
         };
         // SAFETY: `ids` holds n ids, as the caller promises.

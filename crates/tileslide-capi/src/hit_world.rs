@@ -8,6 +8,7 @@
 //! every live object in slot order, with the move from where it was at the last step (so
 //! its volumes are swept along it), and its id as its owner.
 
+use tileslide::limits::{MAX_HIT_OBJECTS, MAX_OBJECT_VOLUMES};
 use tileslide::{
     Facing, HitEvent, HitObject, HitTypes, HitWorld, Owner, TeamRule, Vec2, Volume, VolumeError,
 };
@@ -210,6 +211,12 @@ unsafe fn volumes_of(
     if count == 0 {
         return Ok(Vec::new());
     }
+    // (Before the slice is made: a count past `isize::MAX` bytes would make it undefined.)
+    if count > MAX_OBJECT_VOLUMES {
+        return Err(Failure::invalid(format!(
+            "{what}: {count} volumes, at most {MAX_OBJECT_VOLUMES}"
+        )));
+    }
     if list.is_null() {
         return Err(Failure::null(what));
     }
@@ -269,6 +276,12 @@ impl ts_hit_world {
     }
 
     fn add(&mut self, object: Object) -> Result<ts_hit_object_id, Failure> {
+        // Each step registers every object with the core's world, which takes this many.
+        if self.live >= MAX_HIT_OBJECTS {
+            return Err(Failure::invalid(format!(
+                "the hit world holds {MAX_HIT_OBJECTS} objects already, the most it takes"
+            )));
+        }
         let index = match self.free.pop() {
             Some(index) => index,
             None => {

@@ -156,6 +156,14 @@ pub(crate) fn id_parts(owner: Owner) -> (u32, u32) {
 
 /// `value`, named `what` in errors, when it is finite and within tileslide's coordinate
 /// range (`MAX_COORD`, 2²⁴ map units from the origin).
+/// Whether `n` values of `T` fit in memory: a slice of them may be made (its size in bytes
+/// at most `isize::MAX`). A count past that cannot describe the caller's memory, and making
+/// the slice would be undefined behaviour: such a count is refused first.
+pub(crate) fn slice_fits<T>(n: usize) -> bool {
+    n.checked_mul(std::mem::size_of::<T>())
+        .is_some_and(|bytes| isize::try_from(bytes).is_ok())
+}
+
 pub(crate) fn coordinate(what: &str, value: f32) -> Result<f32, Failure> {
     if value.is_finite() && value.abs() <= MAX_COORD {
         Ok(value)
@@ -513,7 +521,10 @@ pub unsafe extern "C" fn ts_map_cast_rays(
         if out.is_null() {
             return Err(Failure::null("out"));
         }
-        let Some(floats) = n.checked_mul(4) else {
+        let Some(floats) = n
+            .checked_mul(4)
+            .filter(|&f| slice_fits::<f32>(f) && slice_fits::<ts_ray_hit>(n))
+        else {
             return Err(Failure::invalid(format!("n = {n} rays is too many")));
         };
         // SAFETY: `rays` holds 4 n floats and `out` n hits, as the caller promises; C

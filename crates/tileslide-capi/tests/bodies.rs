@@ -220,6 +220,42 @@ fn bad_definitions_moves_and_pointers_are_refused() {
             ts_status::TS_ERROR_INVALID_ARGUMENT
         );
         assert!(last_error().contains("entry 1"), "{}", last_error());
+        // Counts no memory could hold are refused before anything is read: a slice of
+        // them would be undefined behaviour however valid the pointer.
+        let mut xy = [0.0f32; 4];
+        for n in [
+            usize::MAX / 2,
+            usize::MAX / 8,
+            (isize::MAX as usize) / 8 + 1,
+        ] {
+            assert_eq!(
+                ts_bodies_propose_many(bodies, ids.as_ptr(), moves.as_ptr(), n),
+                ts_status::TS_ERROR_INVALID_ARGUMENT
+            );
+            assert!(last_error().contains("too many"), "{}", last_error());
+            assert_eq!(
+                ts_bodies_positions(bodies, ids.as_ptr(), n, xy.as_mut_ptr()),
+                ts_status::TS_ERROR_INVALID_ARGUMENT
+            );
+            assert!(last_error().contains("too many"), "{}", last_error());
+        }
+        let many = vec![pair[0]; tileslide::limits::MAX_COMPOUND_CIRCLES + 1];
+        for (circles, circle_count) in [(many.as_ptr(), many.len()), (pair.as_ptr(), usize::MAX)] {
+            let def = ts_body_def {
+                circles,
+                circle_count,
+                ..compound
+            };
+            assert_eq!(
+                ts_bodies_add(bodies, &def, &mut id),
+                ts_status::TS_ERROR_INVALID_ARGUMENT
+            );
+            assert!(
+                last_error().contains(&format!("def.circle_count is {circle_count}, at most 1024")),
+                "{}",
+                last_error()
+            );
+        }
         assert_eq!(
             ts_bodies_step(bodies, ptr::null(), ptr::null_mut()),
             ts_status::TS_ERROR_NULL_POINTER

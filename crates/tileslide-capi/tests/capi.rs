@@ -221,6 +221,14 @@ fn null_pointers_bad_numbers_and_bad_flags_are_refused_with_a_status() {
             last_error()
         );
         assert_eq!(hits, before, "nothing written");
+        // Counts no memory could hold: refused before a slice of them is made.
+        for n in [usize::MAX / 4 + 1, (isize::MAX as usize) / 16 + 1] {
+            assert_eq!(
+                ts_map_cast_rays(map, too_long.as_ptr(), n, 0, hits.as_mut_ptr()),
+                ts_status::TS_ERROR_INVALID_ARGUMENT
+            );
+            assert!(last_error().contains("too many"), "{}", last_error());
+        }
         assert_eq!(
             ts_map_cast_rays(map, ptr::null(), 2, 0, hits.as_mut_ptr()),
             ts_status::TS_ERROR_NULL_POINTER

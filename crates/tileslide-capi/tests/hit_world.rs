@@ -434,8 +434,28 @@ fn bad_definitions_moves_and_pointers_are_refused_by_name() {
         ..good[0]
     }];
     let bad_rect = [rect(0.0, 0.0, 0.5, f32::NAN, TS_HIT_TYPE_HIT)];
+    let many = vec![good[0]; tileslide::limits::MAX_OBJECT_VOLUMES + 1];
     let base = ts_default_hit_object_def();
     let cases = [
+        (
+            ts_hit_object_def {
+                attack: many.as_ptr(),
+                attack_count: many.len(),
+                ..base
+            },
+            INVALID,
+            "def.attack: 1025 volumes, at most 1024",
+        ),
+        // A count no memory could hold is refused before anything is read.
+        (
+            ts_hit_object_def {
+                vulnerable: good.as_ptr(),
+                vulnerable_count: usize::MAX,
+                ..base
+            },
+            INVALID,
+            "def.vulnerable: 18446744073709551615 volumes, at most 1024",
+        ),
         (
             ts_hit_object_def {
                 x: f32::NAN,

@@ -351,3 +351,25 @@ fn a_slide_that_would_end_past_max_coord_stops_at_the_contact() {
     assert!(slid.x >= MAX_COORD - 60.0, "{slid}");
     assert!(slid.y <= -3.0 && slid.y > -3.5, "{slid}");
 }
+
+#[test]
+fn a_compound_of_more_circles_than_the_limit_is_refused_before_they_are_all_collected() {
+    use tileslide::limits::MAX_COMPOUND_CIRCLES;
+    let circle = Circle::new(Vec2::ZERO, 0.25);
+    let at_limit = BodyShape::compound(std::iter::repeat_n(circle, MAX_COMPOUND_CIRCLES));
+    assert_eq!(at_limit.unwrap().circles().len(), MAX_COMPOUND_CIRCLES);
+    let over = BodyShape::compound(std::iter::repeat_n(circle, MAX_COMPOUND_CIRCLES + 1));
+    assert_eq!(
+        over,
+        Err(BodyError::TooManyCircles {
+            max: MAX_COMPOUND_CIRCLES
+        })
+    );
+    assert_eq!(
+        over.unwrap_err().to_string(),
+        "a body shape has more than 1024 circles"
+    );
+    // An endless list: refused after MAX_COMPOUND_CIRCLES + 1 are read, not collected
+    // until memory runs out.
+    assert!(BodyShape::compound(std::iter::repeat(circle)).is_err());
+}

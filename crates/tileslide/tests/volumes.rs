@@ -1399,3 +1399,62 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn an_object_with_more_volumes_than_the_limit_is_refused_and_nothing_is_registered() {
+    use tileslide::limits::MAX_OBJECT_VOLUMES;
+    let mut world = HitWorld::new();
+    let many = vec![circle(0.0, 0.0, 0.5, HitTypes::HIT); MAX_OBJECT_VOLUMES + 1];
+    for (attack, vulnerable, what) in [
+        (&many[..], &[][..], "attack volumes"),
+        (&[][..], &many[..], "vulnerable volumes"),
+    ] {
+        let refused = world.register(object(1, 0.0, 0.0), attack, vulnerable);
+        assert_eq!(
+            refused,
+            Err(VolumeError::TooMany {
+                what,
+                count: MAX_OBJECT_VOLUMES + 1,
+                max: MAX_OBJECT_VOLUMES
+            })
+        );
+        assert!(
+            refused
+                .unwrap_err()
+                .to_string()
+                .contains(&format!("too many {what}: 1025, at most 1024"))
+        );
+    }
+    // The limit itself is taken, and the refusals left nothing behind: the attacker and its
+    // victim are the first two objects, and one hit comes of them.
+    let attacker = world
+        .register(object(1, 0.0, 0.0), &many[..MAX_OBJECT_VOLUMES], &[])
+        .unwrap();
+    let victim = world
+        .register(object(2, 0.2, 0.0), &[], &body(HitTypes::HIT))
+        .unwrap();
+    assert_eq!((attacker, victim), (ObjectId(0), ObjectId(1)));
+    assert_eq!(hits(&mut world), vec![(0, 1, HitTypes::HIT, true)]);
+}
+
+#[test]
+fn a_frame_takes_at_most_the_limit_of_hit_objects_and_the_next_frame_starts_afresh() {
+    use tileslide::limits::MAX_HIT_OBJECTS;
+    let mut world = HitWorld::new();
+    for _ in 0..MAX_HIT_OBJECTS {
+        world.register(object(1, 0.0, 0.0), &[], &[]).unwrap();
+    }
+    assert_eq!(
+        world.register(object(1, 0.0, 0.0), &[], &[]),
+        Err(VolumeError::TooMany {
+            what: "hit objects this frame",
+            count: MAX_HIT_OBJECTS + 1,
+            max: MAX_HIT_OBJECTS
+        })
+    );
+    world.begin_frame();
+    assert_eq!(
+        world.register(object(1, 0.0, 0.0), &[], &[]),
+        Ok(ObjectId(0))
+    );
+}

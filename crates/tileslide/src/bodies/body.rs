@@ -8,6 +8,9 @@ use crate::geometry::{Circle, MAX_COORD, in_range};
 use crate::owner::Owner;
 use crate::tiles::SegmentFlags;
 
+/// The most circles a compound [`BodyShape`] may have.
+pub const MAX_COMPOUND_CIRCLES: usize = 1024;
+
 /// A body's shape: circles at fixed offsets from the body's position (a compound body, for
 /// an object a single circle fits badly). Bodies do not rotate.
 ///
@@ -65,11 +68,18 @@ impl BodyShape {
     /// Circles whose centres are offsets from the body's position.
     ///
     /// # Errors
-    /// [`BodyError::EmptyShape`] without circles, [`BodyError::InvalidRadius`] for a radius
-    /// that is not positive and at most [`MAX_COORD`], [`BodyError::InvalidOffset`] for an
-    /// offset with a coordinate beyond it or not finite (each naming the circle's index).
+    /// [`BodyError::EmptyShape`] without circles, [`BodyError::TooManyCircles`] past
+    /// [`MAX_COMPOUND_CIRCLES`] (found before the rest is collected),
+    /// [`BodyError::InvalidRadius`] for a radius that is not positive and at most
+    /// [`MAX_COORD`], [`BodyError::InvalidOffset`] for an offset with a coordinate beyond it
+    /// or not finite (each naming the circle's index).
     pub fn compound(circles: impl IntoIterator<Item = Circle>) -> Result<Self, BodyError> {
-        let circles: Vec<Circle> = circles.into_iter().collect();
+        let circles: Vec<Circle> = circles.into_iter().take(MAX_COMPOUND_CIRCLES + 1).collect();
+        if circles.len() > MAX_COMPOUND_CIRCLES {
+            return Err(BodyError::TooManyCircles {
+                max: MAX_COMPOUND_CIRCLES,
+            });
+        }
         if circles.is_empty() {
             return Err(BodyError::EmptyShape);
         }

@@ -65,6 +65,13 @@ pub enum BodyError {
         /// The value given.
         value: f32,
     },
+    /// A compound shape with more than [`MAX_COMPOUND_CIRCLES`](crate::limits::MAX_COMPOUND_CIRCLES)
+    /// circles.
+    #[error("a body shape has more than {max} circles")]
+    TooManyCircles {
+        /// The limit.
+        max: usize,
+    },
     /// All `u32::MAX` slots are in use.
     #[error("too many bodies (at most {max})")]
     TooMany {

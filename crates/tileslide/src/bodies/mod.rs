@@ -27,7 +27,7 @@ pub(crate) mod set;
 mod settled;
 mod trace;
 
-pub use body::{Body, BodyDesc, BodyFilter, BodyShape};
+pub use body::{Body, BodyDesc, BodyFilter, BodyShape, MAX_COMPOUND_CIRCLES};
 pub use config::{ResolveConfig, ResolveReport, SlideMode};
 pub use error::BodyError;
 pub use handle::BodyHandle;

@@ -46,4 +46,4 @@ pub use hit_types::HitTypes;
 pub use object::{HitObject, ObjectId};
 pub use trace::{DetectTrace, PairOutcome, PairTrace, Refusal, VolumeTest};
 pub use volume::{Facing, Volume, VolumeError, VolumeShape};
-pub use world::HitWorld;
+pub use world::{HitWorld, MAX_FRAME_VOLUMES, MAX_HIT_OBJECTS, MAX_OBJECT_VOLUMES};

@@ -110,6 +110,19 @@ pub enum VolumeError {
     /// its `aim` feature, which turns attack volumes.
     #[error("hit object has an aim, and tileslide was built without its `aim` feature")]
     AimUnsupported,
+    /// More of something than a [`HitWorld`](super::HitWorld) takes (see
+    /// [`limits`](crate::limits)).
+    #[error("too many {what}: {count}, at most {max}")]
+    TooMany {
+        /// What: `"attack volumes"` or `"vulnerable volumes"` of one object, `"hit objects
+        /// this frame"`, or `"attack volumes this frame"` or `"vulnerable volumes this
+        /// frame"`.
+        what: &'static str,
+        /// How many there would be.
+        count: usize,
+        /// The most allowed.
+        max: usize,
+    },
 }
 
 /// `v`, named `what`: finite and within [`MAX_COORD`].

@@ -16,6 +16,16 @@ use crate::broadphase::{PairFinder, PairMethod};
 use crate::geometry::{Aabb, Circle};
 use crate::owner::Owner;
 
+/// The most attack volumes, and the most vulnerable volumes, one hit object may have.
+pub const MAX_OBJECT_VOLUMES: usize = 1024;
+
+/// The most hit objects a [`HitWorld`] takes in one frame.
+pub const MAX_HIT_OBJECTS: usize = 1 << 20;
+
+/// The most attack volumes, and the most vulnerable volumes, a [`HitWorld`] takes in one
+/// frame, all objects together.
+pub const MAX_FRAME_VOLUMES: usize = 1 << 24;
+
 /// A registered object and where its volumes are.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Entry {
@@ -192,12 +202,51 @@ impl HitWorld {
     /// corner, or an aim of zero); the world is unchanged. So every pair test computes
     /// within a few times [`MAX_COORD`](crate::limits::MAX_COORD), where nothing overflows
     /// (a box at 3·10³⁸ once missed a box it lay in, its centre overflowing to infinity).
+    /// [`VolumeError::TooMany`] past [`MAX_OBJECT_VOLUMES`] volumes in a list,
+    /// [`MAX_HIT_OBJECTS`] objects or [`MAX_FRAME_VOLUMES`] volumes of a kind this frame,
+    /// checked before anything is copied.
     pub fn register(
         &mut self,
         object: HitObject,
         attack: &[Volume],
         vulnerable: &[Volume],
     ) -> Result<ObjectId, VolumeError> {
+        if self.entries.len() >= MAX_HIT_OBJECTS {
+            return Err(VolumeError::TooMany {
+                what: "hit objects this frame",
+                count: self.entries.len() + 1,
+                max: MAX_HIT_OBJECTS,
+            });
+        }
+        for (what, frame, list, before) in [
+            (
+                "attack volumes",
+                "attack volumes this frame",
+                attack,
+                self.attack.len(),
+            ),
+            (
+                "vulnerable volumes",
+                "vulnerable volumes this frame",
+                vulnerable,
+                self.vulnerable.len(),
+            ),
+        ] {
+            if list.len() > MAX_OBJECT_VOLUMES {
+                return Err(VolumeError::TooMany {
+                    what,
+                    count: list.len(),
+                    max: MAX_OBJECT_VOLUMES,
+                });
+            }
+            if before + list.len() > MAX_FRAME_VOLUMES {
+                return Err(VolumeError::TooMany {
+                    what: frame,
+                    count: before + list.len(),
+                    max: MAX_FRAME_VOLUMES,
+                });
+            }
+        }
         #[cfg_attr(not(feature = "aim"), allow(unused_variables))]
         let turn = object.checked_turn()?;
         for v in attack.iter().chain(vulnerable) {
