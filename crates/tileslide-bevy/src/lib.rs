@@ -87,7 +87,7 @@ pub use platform::{Platform, PlatformLink, PlatformSegment};
 pub use plugin::{StepCount, TileslidePlugin, TileslideSet};
 pub use position::{Interpolated, StepPosition};
 pub use tilemap::TilemapCollision;
-pub use units::MapUnits;
+pub use units::{InvalidScale, MapUnits};
 
 /// The crate's README, its quick start compiled and run as a doctest.
 #[cfg(doctest)]

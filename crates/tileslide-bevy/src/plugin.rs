@@ -16,7 +16,7 @@ use crate::messages::{BodyContact, Crushed, Hit, NavArrived, SurfaceContact, Til
 use crate::nav::{self, Navigation};
 use crate::platform;
 use crate::position;
-use crate::units::MapUnits;
+use crate::units::{InvalidScale, MapUnits};
 
 /// tileslide in a Bevy app: the map asset and its loader, and each step (in
 /// [`FixedUpdate`] by default) the moving platforms, navigation, characters, bodies and hit
@@ -47,7 +47,7 @@ use crate::units::MapUnits;
 #[derive(Clone, Debug)]
 pub struct TileslidePlugin {
     schedule: Interned<dyn ScheduleLabel>,
-    units: MapUnits,
+    units: Result<MapUnits, InvalidScale>,
     resolve: ResolveConfig,
     nav: Option<NavConfig>,
 }
@@ -56,7 +56,7 @@ impl Default for TileslidePlugin {
     fn default() -> Self {
         Self {
             schedule: FixedUpdate.intern(),
-            units: MapUnits::default(),
+            units: Ok(MapUnits::default()),
             resolve: ResolveConfig::default(),
             nav: None,
         }
@@ -74,7 +74,8 @@ impl TileslidePlugin {
         }
     }
 
-    /// The plugin with `scale` world units per map unit (see [`MapUnits`]).
+    /// The plugin with `scale` world units per map unit (see [`MapUnits`]). A scale
+    /// [`MapUnits::new`] refuses leaves 1 in place and is reported when the app is built.
     #[must_use]
     pub fn with_scale(self, scale: f32) -> Self {
         Self {
@@ -132,7 +133,8 @@ impl Plugin for TileslidePlugin {
     fn build(&self, app: &mut App) {
         let mut bodies = TileslideBodies::default();
         let refused = bodies.set_config(self.resolve).err();
-        app.insert_resource(self.units)
+        let units = self.units.unwrap_or_default();
+        app.insert_resource(units)
             .insert_resource(bodies)
             .insert_resource(self.nav.map_or_else(Navigation::default, Navigation::new))
             .init_resource::<TileslideHits>()
@@ -190,6 +192,12 @@ impl Plugin for TileslidePlugin {
             app.world_mut().write_message(TileslideError {
                 entity: Entity::PLACEHOLDER,
                 message: format!("TileslidePlugin: {e}; the default resolve settings are used"),
+            });
+        }
+        if let Err(e) = self.units {
+            app.world_mut().write_message(TileslideError {
+                entity: Entity::PLACEHOLDER,
+                message: format!("TileslidePlugin: {e}; a scale of 1 is used"),
             });
         }
     }

@@ -21,10 +21,12 @@ use bevy::prelude::*;
 /// ```
 /// # use bevy::prelude::*;
 /// # use tileslide_bevy::MapUnits;
-/// let units = MapUnits::new(16.0);
+/// let units = MapUnits::new(16.0)?;
 /// let world = Vec2::new(40.0, -24.0);
 /// assert_eq!(units.to_map(world), tileslide::Vec2::new(2.5, 1.5));
 /// assert_eq!(units.to_world(units.to_map(world)), world);
+/// assert!(MapUnits::new(0.0).is_err());
+/// # Ok::<(), tileslide_bevy::InvalidScale>(())
 /// ```
 #[derive(Resource, Clone, Copy, Debug, PartialEq)]
 pub struct MapUnits {
@@ -37,18 +39,35 @@ impl Default for MapUnits {
     }
 }
 
+/// A scale [`MapUnits::new`] refuses: not between [`MapUnits::MIN_SCALE`] and
+/// [`MapUnits::MAX_SCALE`] (NaN and infinities included).
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "the scale {0} is not a number of world units per map unit from {min} to {max}",
+    min = MapUnits::MIN_SCALE,
+    max = MapUnits::MAX_SCALE
+)]
+pub struct InvalidScale(pub f32);
+
 impl MapUnits {
+    /// The smallest scale: 2⁻²⁰ world units per map unit.
+    pub const MIN_SCALE: f32 = 1.0 / 1_048_576.0;
+    /// The largest scale: 2²⁰ world units per map unit.
+    pub const MAX_SCALE: f32 = 1_048_576.0;
+
     /// World units per map unit (for a Tiled map in pixels drawn at one world unit a pixel,
-    /// 1; for an ASCII map of unit cells drawn 32 units a cell, 32). A scale that is not
-    /// finite and positive is taken as 1.
-    #[must_use]
-    pub fn new(scale: f32) -> Self {
-        let scale = if scale.is_finite() && scale > 0.0 {
-            scale
+    /// 1; for an ASCII map of unit cells drawn 32 units a cell, 32).
+    ///
+    /// # Errors
+    /// [`InvalidScale`] for a scale outside [`MIN_SCALE`](Self::MIN_SCALE) to
+    /// [`MAX_SCALE`](Self::MAX_SCALE): past them a world position converts to a map
+    /// position the core refuses, or to one that rounds away what the game meant.
+    pub fn new(scale: f32) -> Result<Self, InvalidScale> {
+        if (Self::MIN_SCALE..=Self::MAX_SCALE).contains(&scale) {
+            Ok(Self { scale })
         } else {
-            1.0
-        };
-        Self { scale }
+            Err(InvalidScale(scale))
+        }
     }
 
     /// World units per map unit.
@@ -95,12 +114,13 @@ impl MapUnits {
 }
 
 #[cfg(test)]
+#[allow(clippy::unwrap_used)]
 mod tests {
     use super::*;
 
     #[test]
     fn a_power_of_two_scale_converts_exactly_both_ways() {
-        let units = MapUnits::new(32.0);
+        let units = MapUnits::new(32.0).unwrap();
         for p in [
             Vec2::new(0.1, -7.3),
             Vec2::new(-1e6, 3.25),
@@ -115,9 +135,30 @@ mod tests {
     }
 
     #[test]
-    fn a_scale_that_is_not_positive_and_finite_is_one() {
-        for bad in [0.0, -2.0, f32::NAN, f32::INFINITY] {
-            assert_eq!(MapUnits::new(bad).scale(), 1.0);
+    fn a_scale_outside_its_range_is_refused_by_value() {
+        for bad in [0.0, -2.0, f32::NAN, f32::INFINITY, 1e-40, 1e-7, 2e6] {
+            let refused = MapUnits::new(bad);
+            // (Compared by bits: NaN is not equal to itself.)
+            assert_eq!(
+                refused.map_err(|e| e.0.to_bits()),
+                Err(bad.to_bits()),
+                "{bad}"
+            );
+            assert!(
+                refused
+                    .unwrap_err()
+                    .to_string()
+                    .starts_with(&format!("the scale {bad} is not"))
+            );
+        }
+        for good in [
+            MapUnits::MIN_SCALE,
+            1.0 / 16.0,
+            1.0,
+            32.0,
+            MapUnits::MAX_SCALE,
+        ] {
+            assert_eq!(MapUnits::new(good).map(|u| u.scale()), Ok(good));
         }
     }
 }

@@ -383,3 +383,22 @@ fn a_body_reporting_contacts_names_the_tile_and_the_body_it_met() {
             .all(|c| c.entity == runner || c.entity == climber)
     );
 }
+
+#[test]
+fn a_scale_the_plugin_cannot_use_is_reported_and_one_is_used() {
+    for bad in [0.0, -16.0, f32::NAN, f32::INFINITY, 1e-30] {
+        let mut app = support::headless(TileslidePlugin::default().with_scale(bad));
+        support::collect::<TileslideError>(&mut app);
+        app.update();
+        let errors = support::collected::<TileslideError>(&app);
+        assert_eq!(errors.len(), 1, "{bad}: {errors:?}");
+        assert!(
+            errors[0].message.starts_with(&format!(
+                "TileslidePlugin: the scale {bad} is not a number of world units per map unit"
+            )) && errors[0].message.ends_with("a scale of 1 is used"),
+            "{}",
+            errors[0].message
+        );
+        assert_eq!(app.world().resource::<tileslide_bevy::MapUnits>().scale(), 1.0);
+    }
+}
