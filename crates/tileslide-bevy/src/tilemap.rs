@@ -8,6 +8,7 @@ use std::sync::Arc;
 
 use bevy::prelude::*;
 use tileslide::io::ldtk::Collision;
+use tileslide::limits::MAX_CELLS;
 use tileslide::{Cell, TileId, TileMap, TileSet, TileShape};
 
 use crate::map::CollisionMap;
@@ -260,13 +261,22 @@ pub(crate) fn apply_layer(
     tiles: &[Option<LayerTile>],
     units: &MapUnits,
 ) -> Result<Applied, String> {
-    let cells = grid.width as usize * grid.height as usize;
+    let cells = u64::from(grid.width) * u64::from(grid.height);
     if grid.width == 0 || grid.height == 0 {
         return Err(format!(
             "the layer is {} × {} tiles: it needs at least one",
             grid.width, grid.height
         ));
     }
+    // Before the cells are gathered: the core would refuse the map only after.
+    if cells > MAX_CELLS {
+        return Err(format!(
+            "the layer is {} × {} tiles, {cells} cells: a map holds at most {MAX_CELLS}",
+            grid.width, grid.height
+        ));
+    }
+    // (At most MAX_CELLS now, which fits a usize wherever the core builds.)
+    let cells = cells as usize;
     if tiles.len() != cells {
         return Err(format!(
             "the layer's tile storage holds {} cells for a {} × {} map",
@@ -535,7 +545,12 @@ mod tests {
             height: 1 << 20,
             ..grid()
         };
-        assert!(apply_layer(&mut map, &rules, false, &huge, &[], &units).is_err());
+        let err = apply_layer(&mut map, &rules, false, &huge, &[], &units).unwrap_err();
+        // Refused for its size, before its cells are gathered (the storage check after).
+        assert!(
+            err.contains("1099511627776 cells: a map holds at most 67108864"),
+            "{err}"
+        );
         assert!(map.map().is_none(), "nothing was put in place");
     }
 }

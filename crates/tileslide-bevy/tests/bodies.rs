@@ -399,6 +399,9 @@ fn a_scale_the_plugin_cannot_use_is_reported_and_one_is_used() {
             "{}",
             errors[0].message
         );
-        assert_eq!(app.world().resource::<tileslide_bevy::MapUnits>().scale(), 1.0);
+        assert_eq!(
+            app.world().resource::<tileslide_bevy::MapUnits>().scale(),
+            1.0
+        );
     }
 }
