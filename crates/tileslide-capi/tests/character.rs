@@ -444,7 +444,7 @@ fn bad_definitions_inputs_and_pointers_are_refused_by_name() {
         assert_refused(
             ts_character_step(c, map, 1e3),
             TS_ERROR_INVALID_ARGUMENT,
-            "displacement",
+            "velocity × dt",
         );
         assert_refused(
             ts_character_step(c, ptr::null(), DT),

@@ -77,6 +77,30 @@ fn positions_and_moves_beyond_max_coord_are_refused_naming_the_value() {
 }
 
 #[test]
+fn a_velocity_and_time_step_whose_product_overflows_are_named_as_given() {
+    let m = ascii::parse(ROOM, "room.txt", 1.0).unwrap();
+    let mut ch = new(
+        hero(),
+        v(2.0, 2.0),
+        Vec2::NEG_Y,
+        ControllerConfig::default(),
+    )
+    .unwrap();
+    for (velocity, dt) in [
+        (v(3e38, 0.0), 10.0),
+        (v(0.0, -1e30), 1e10),
+        (v(MAX_COORD, 0.0), 2.0),
+    ] {
+        let mut given = velocity;
+        let err = ch
+            .move_and_slide(&m, &mut given, dt, MoveOptions::default())
+            .unwrap_err();
+        names(err, "velocity × dt");
+        assert_eq!((ch.position, given), (v(2.0, 2.0), velocity), "unchanged");
+    }
+}
+
+#[test]
 fn shapes_and_distances_beyond_max_coord_are_refused_naming_the_value() {
     for far in FAR {
         names(CharacterShape::circle(far).unwrap_err(), "radius");

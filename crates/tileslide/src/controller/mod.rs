@@ -31,7 +31,8 @@ pub enum ControllerError {
     #[error("character {what} must be finite (and `up` non-zero), got {value}")]
     NonFinite {
         /// Which value: `"position"`, `"up"`, `"displacement"`, `"displacement length"`
-        /// (finite components whose length overflows) or `"velocity"`.
+        /// (finite components whose length overflows), `"velocity"` or `"velocity × dt"`
+        /// (a finite velocity and time step whose product overflows).
         what: &'static str,
         /// The value given.
         value: Vec2,
@@ -42,8 +43,8 @@ pub enum ControllerError {
         crate::geometry::MAX_COORD
     )]
     OutOfRange {
-        /// Which value: `"position"` or `"displacement"` (the move's end point is out of
-        /// range).
+        /// Which value: `"position"`, or `"displacement"` or `"velocity × dt"` (the move's
+        /// end point is out of range).
         what: &'static str,
         /// The value given.
         value: Vec2,

@@ -103,7 +103,9 @@ impl Character {
     /// # Errors
     /// [`ControllerError::NonFinite`] naming the `"velocity"` when it is not finite,
     /// [`ControllerError::BadTimeStep`] when `dt` is negative or not finite, and what
-    /// [`move_by`](Self::move_by) refuses; the character and `velocity` are then unchanged.
+    /// [`move_by`](Self::move_by) refuses, a displacement being named `"velocity × dt"`
+    /// (a product that overflows, a move that would end out of range); the character and
+    /// `velocity` are then unchanged.
     pub fn move_and_slide(
         &mut self,
         map: &TileMap,
@@ -115,7 +117,27 @@ impl Character {
         if !(dt.is_finite() && dt >= 0.0) {
             return Err(ControllerError::BadTimeStep { dt });
         }
-        let contacts = self.move_by(map, *velocity * dt, options)?;
+        // A finite velocity and dt whose product overflows, or ends the move out of range,
+        // is named as what the caller gave.
+        let contacts = self
+            .move_by(map, *velocity * dt, options)
+            .map_err(|e| match e {
+                ControllerError::NonFinite {
+                    what: "displacement",
+                    value,
+                } => ControllerError::NonFinite {
+                    what: "velocity × dt",
+                    value,
+                },
+                ControllerError::OutOfRange {
+                    what: "displacement",
+                    value,
+                } => ControllerError::OutOfRange {
+                    what: "velocity × dt",
+                    value,
+                },
+                e => e,
+            })?;
         *velocity = self.clip_velocity(*velocity, &contacts);
         Ok(contacts)
     }
