@@ -43,12 +43,13 @@ if [ "${TILESLIDE_SIMD:-1}" = 1 ]; then
     export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=+simd128"
 fi
 # Size: the package stays under 400 KB gzipped only if tileslide, whose loaders are half of
-# the code, is optimized for size ("s": about 398 KB against 449 KB at the release profile's
-# level 3 and 436 KB at level 2, for about a tenth more time on the crowd); the loaders'
-# crates and the JavaScript glue for size at any cost ("z"). The glue's few lines on a hot
-# path (a castRays ray's check and answer) are inlined by hand, so "z" costs them nothing
-# and saves 5 KB. The Node tests fail when the package reaches 400 KB.
-set -- --config "profile.release.package.tileslide.opt-level=\"s\""
+# the code, is optimized for size at any cost ("z": about 374 KB; "s" gave 401 KB once the
+# character's corner rolls were made exact, and 449 KB at the release profile's level 3),
+# as are the loaders' crates and the JavaScript glue. The glue's few lines on a hot path (a
+# castRays ray's check and answer) are inlined by hand, so "z" costs them nothing. What
+# "z" costs tileslide's own code in time, `npm run bench` measures (see web/README.md);
+# `tileslide/speed` is the build for speed. The Node tests fail at 400 KB.
+set -- --config "profile.release.package.tileslide.opt-level=\"z\""
 for crate in tileslide-wasm tiled quick-xml serde serde_core serde_json flate2 miniz_oxide adler2 \
     simd-adler32 base64 indexmap hashbrown memchr itoa zmij crc32fast js-sys wasm-bindgen; do
     set -- "$@" --config "profile.release.package.$crate.opt-level=\"z\""
