@@ -17,23 +17,36 @@ if ! command -v cargo >/dev/null 2>&1 && [ -f "${CARGO_HOME:-$HOME/.cargo}/env" 
 fi
 
 status=0
-cargo test --workspace --no-fail-fast --features tileslide-cli/peers,tileslide/serde,tileslide-bevy/debug,tileslide-bevy/hot_reload || status=1
+# Runs "$@" as the part named $1 and says how long it took; a failure fails the whole run
+# (and this call, for a part that others need).
+part() {
+    name=$1
+    shift
+    start=$SECONDS
+    if "$@"; then
+        echo "--- test.sh: $name ok ($((SECONDS - start)) s)"
+    else
+        echo "--- test.sh: $name FAILED ($((SECONDS - start)) s)" >&2
+        status=1
+        return 1
+    fi
+}
+part rust cargo test --workspace --no-fail-fast \
+    --features tileslide-cli/peers,tileslide/serde,tileslide-bevy/debug,tileslide-bevy/hot_reload
 # The C API's tests and example in C, under AddressSanitizer and UndefinedBehaviorSanitizer
 # (the system's C compiler and make; examples/c/Makefile builds the static library first).
-make -C examples/c test || status=1
+part c make -C examples/c test
 # The Python package's tests (crates/tileslide-py/test.sh: a virtual environment in
 # target/py with maturin, NumPy and pytest from PyPI, the wheel built and installed, pytest).
-crates/tileslide-py/test.sh || status=1
+part python crates/tileslide-py/test.sh
 if ! command -v node >/dev/null 2>&1; then
     echo "error: the web tests need Node.js 20.19 or later (node)" >&2
     exit 1
 fi
-if sh web/build.sh; then
-    (cd web && node --test test/*.test.mjs) || status=1
+if part web-build sh web/build.sh; then
+    part web-node sh -c 'cd web && node --test test/*.test.mjs'
     # The playground in Chromium (Debian's, /usr/bin/chromium; .ci/run installs it), driven
     # by playwright-core from web/node_modules.
-    (cd web && npm ci --no-audit --no-fund && npm run test:browser) || status=1
-else
-    status=1
+    part browser sh -c 'cd web && npm ci --no-audit --no-fund && npm run test:browser'
 fi
 exit $status
