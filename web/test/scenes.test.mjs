@@ -18,7 +18,7 @@ speed.initSync({ module: readFileSync(here("../pkg/speed/tileslide_bg.wasm")) })
 /** crates/tileslide-web-bench/src/lib.rs's RAYS_CHECKSUM. */
 const RAYS_CHECKSUM = "2d2187acd2742f7e";
 /** The golden hash of crates/tileslide/tests/resolver_golden.rs: 2,000 circles, 40 steps. */
-const GOLDEN = "85842b31c9d3e773";
+const GOLDEN = "527eda9698ab4a5d";
 
 const dir = mkdtempSync(join(tmpdir(), "tileslide-scenes-"));
 execFileSync("cargo", ["run", "--quiet", "-p", "tileslide-web-bench", "--", "export", dir], {

@@ -312,3 +312,146 @@ fn the_crowd_pair_that_locked_up_slides_round() {
         );
     }
 }
+
+/// Thirteen bodies of a soak's crowd against the map's right-hand wall, as they were: one
+/// (0.379 across) pressed between the wall and a neighbour, sliding up the wall along the
+/// neighbour, where x's float spacing (1.5·10⁻⁵ at x = 135) is thirty times y's. The slide
+/// leans 1 % away from the neighbour; each pass rounded that component away and kept the
+/// rest, and the body crept into its neighbour by 6·10⁻⁶ a pass (8.9·10⁻⁵ deep here, the
+/// soak found it past 10⁻⁴). A step never takes it deeper.
+#[test]
+fn a_body_sliding_up_a_wall_past_a_neighbour_never_creeps_into_it() {
+    // The map's top right corner (columns 124 to 137 of 138), walled below.
+    let corner = [
+        "##############",
+        "..../......#.#",
+        ".#...##..#...#",
+        "..\\.=#..#.#.##",
+        "==\\..=//.#\\.\\#",
+        "\\...../.=#./.#",
+        "..#/#..#\\.=\\.#",
+        ".#..#.\\.../..#",
+        "...=#.//\\.\\#.#",
+        ".=./....#.\\/.#",
+    ];
+    let mut text = String::new();
+    for r in 0..12 {
+        let mut row = vec!['.'; 138];
+        if let Some(known) = corner.get(r) {
+            for (k, ch) in known.chars().enumerate() {
+                row[124 + k] = ch;
+            }
+        }
+        if r == 0 || r >= 10 {
+            row.fill('#');
+        }
+        row[0] = '#';
+        row[137] = '#';
+        text.extend(row);
+        text.push('\n');
+    }
+    let map = ascii::parse(&text, "corner.txt", 1.0).unwrap();
+    type Placed = ([f32; 2], &'static [(f32, f32, f32)], [f32; 2]);
+    let crowd: [Placed; 13] = [
+        (
+            [135.02599, 4.2145634],
+            &[(0.0, 0.0, 0.21513012)],
+            [0.0041668676, -0.021524461],
+        ),
+        (
+            [132.6923, 4.3076887],
+            &[(0.0, 0.0, 0.30668867)],
+            [0.13028097, 0.13071026],
+        ),
+        (
+            [135.62, 4.220513],
+            &[(0.0, 0.0, 0.37899864)],
+            [-0.08367095, -0.095025465],
+        ),
+        (
+            [132.4163, 4.769064],
+            &[(0.0, 0.0, 0.22993597)],
+            [0.09321738, 0.18390757],
+        ),
+        (
+            [136.68756, 6.632388],
+            &[(0.0, 0.0, 0.31143135)],
+            [0.02022158, -0.2053808],
+        ),
+        (
+            [136.62015, 5.9444036],
+            &[(0.0, 0.0, 0.37934792)],
+            [0.1117523, -0.003834198],
+        ),
+        (
+            [136.67545, 2.651861],
+            &[(0.0, 0.0, 0.31896925)],
+            [-0.00018291063, -0.0011467215],
+        ),
+        (
+            [136.3172, 5.3171935],
+            &[(0.0, 0.0, 0.3161934)],
+            [-0.12075085, 0.21510045],
+        ),
+        (
+            [135.60974, 4.7741475],
+            &[
+                (-0.18409663, 0.0, 0.20028625),
+                (0.18409663, 0.0, 0.20028625),
+            ],
+            [-0.025544884, 0.029532788],
+        ),
+        (
+            [135.55937, 3.395568],
+            &[(0.0, 0.0, 0.23458624)],
+            [-0.04110718, -0.04627792],
+        ),
+        (
+            [132.87143, 4.7043757],
+            &[(0.0, 0.0, 0.12806496)],
+            [0.12183955, -0.12694263],
+        ),
+        (
+            [135.29572, 5.266896],
+            &[(0.0, 0.0, 0.30877584)],
+            [0.041568596, -0.039282214],
+        ),
+        (
+            [134.2754, 5.72409],
+            &[(0.0, 0.0, 0.27490976)],
+            [-0.12503569, 0.14081633],
+        ),
+    ];
+    let mut bodies = Bodies::new();
+    let handles: Vec<_> = crowd
+        .iter()
+        .map(|(at, circles, proposed)| {
+            let shape = BodyShape::compound(
+                circles
+                    .iter()
+                    .map(|&(x, y, r)| tileslide::Circle::new(Vec2::new(x, y), r)),
+            )
+            .unwrap();
+            let h = bodies.add(BodyDesc::new(Vec2::from(*at), shape)).unwrap();
+            bodies.propose(h, Vec2::from(*proposed)).unwrap();
+            h
+        })
+        .collect();
+    // The pressed body (2) and its neighbour (0).
+    let (r0, r2) = (crowd[0].1[0].2, crowd[2].1[0].2);
+    let overlap = |b: &Bodies| {
+        let (p, q) = (
+            b.get(handles[0]).unwrap().position(),
+            b.get(handles[2]).unwrap().position(),
+        );
+        r0 + r2 - p.distance(q)
+    };
+    let before = overlap(&bodies);
+    assert!(before > 8e-5, "{before}");
+    bodies.step(&map);
+    let after = overlap(&bodies);
+    assert!(
+        after <= before,
+        "{before} deep before the step, {after} after"
+    );
+}

@@ -803,3 +803,51 @@ fn a_position_set_to_nan_or_an_overflowing_move_is_an_error() {
         .unwrap_err();
     assert!(err.to_string().contains("position"), "{err}");
 }
+
+/// A circle running up a ramp into the wedge it makes with a ceiling, and on pushing into
+/// it for 10 seconds, stays out of both. Where the x coordinate's unit in the last place is
+/// half the y coordinate's (x in [32, 64), y in [64, 128)), each push used to advance the
+/// character a unit along x and none along y, off the ramp's line and into the ramp: 10⁻⁴
+/// deep after 40 steps and deeper each step (the soak found it).
+#[test]
+fn a_circle_pushing_into_the_wedge_of_a_ramp_and_a_ceiling_stays_out_of_both() {
+    // A pocket at (56, 88): the ceiling is the bottom of the ramps above, the floor a ramp
+    // down to the right onto a block.
+    let (w, h) = (64usize, 92usize);
+    let mut rows = vec![vec!['.'; w]; h];
+    for (r, row) in rows.iter_mut().enumerate() {
+        for (c, cell) in row.iter_mut().enumerate() {
+            if r == 0 || c == 0 || r == h - 1 || c == w - 1 {
+                *cell = '#';
+            }
+        }
+    }
+    rows[87][56] = '/';
+    rows[87][57] = '\\';
+    rows[88][56] = '\\';
+    rows[89][57] = '#';
+    let text: String = rows
+        .iter()
+        .map(|r| r.iter().collect::<String>() + "\n")
+        .collect();
+    let m = map(&text);
+    let radius = 0.297_474_24;
+    let mut ch = hero(CharacterShape::circle(radius).unwrap(), v(56.9, 88.35));
+    let ramp = Segment::new(v(56.0, 88.0), v(57.0, 89.0));
+    let mut velocity = Vec2::ZERO;
+    for frame in 0..600 {
+        velocity.x = -6.0;
+        velocity.y = (velocity.y + 40.0 / 60.0).min(20.0);
+        ch.move_and_slide(&m, &mut velocity, 1.0 / 60.0, MoveOptions::default())
+            .unwrap();
+        let p = ch.position;
+        let into_ramp = radius - ramp.distance_squared_to(p).sqrt();
+        let into_ceiling = 88.0 - (p.y - radius);
+        assert!(
+            into_ramp <= 0.0 && into_ceiling <= 0.0,
+            "frame {frame}: at {p}, {into_ramp} into the ramp, {into_ceiling} into the ceiling"
+        );
+    }
+    // It got into the wedge.
+    assert!(ch.position.x < 56.75, "{}", ch.position);
+}

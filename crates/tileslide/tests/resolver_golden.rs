@@ -10,7 +10,7 @@ use tileslide_scenes::{CROWD_RADIUS, audit_crowd, dungeon256, positions_hash, sc
 
 /// [`positions_hash`] of the final positions: FNV-1a 64 of their bits, x then y, body by
 /// body.
-const GOLDEN: u64 = 0x8584_2b31_c9d3_e773;
+const GOLDEN: u64 = 0x527e_da96_98ab_4a5d;
 
 /// Steps of the run.
 const STEPS: usize = 40;

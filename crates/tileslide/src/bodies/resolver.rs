@@ -276,6 +276,9 @@ impl Resolver {
             self.wall_ranges.push(range);
         }
         let mut remaining = self.motion[bi];
+        // The normal of the contact the remaining motion slides along (none for the move as
+        // proposed).
+        let mut along: Option<Vec2> = None;
         for pass in 0..=config.passes {
             if remaining == Vec2::ZERO {
                 break;
@@ -283,7 +286,7 @@ impl Resolver {
             sink.pass(pass, self.position[bi], remaining);
             let Some((hit, obstacle, id)) = self.first_contact(b, remaining, gap, sink) else {
                 sink.free();
-                self.position[bi] += remaining;
+                self.position[bi] = off_contact(self.position[bi], remaining, along);
                 return;
             };
             report.contact_count += 1;
@@ -293,7 +296,8 @@ impl Resolver {
             // neighbour would creep into the neighbour a few ulps per pass.
             let step = remaining * hit.t;
             let taken = step.length() >= gap * MIN_STEP;
-            self.position[bi] += Vec2::new(keep_if(taken, step.x), keep_if(taken, step.y));
+            let kept = Vec2::new(keep_if(taken, step.x), keep_if(taken, step.y));
+            self.position[bi] = off_contact(self.position[bi], kept, along);
             if pass == config.passes {
                 if sink.on() {
                     let decision = Decision {
@@ -312,6 +316,7 @@ impl Resolver {
             }
             let blocked = remaining * (1.0 - hit.t);
             remaining = slide(blocked, hit.normal, obstacle, b, config.slide);
+            along = Some(hit.normal);
             // A slide that would end past MAX_COORD is not taken, so every body stays in
             // range: a move ends within it (checked by `propose`), and every later position
             // lies on a straight path between two points within it (the square is convex,
@@ -411,6 +416,51 @@ impl Resolver {
             }
         }
         best
+    }
+}
+
+/// Where a step from `from` ends, when it slides along a contact whose normal is `along`:
+/// at `from + step`, unless rounding that lost one of the step's coordinates whole and so
+/// moved the body towards the contact. A slide is tangent to the contact, but rounded, a step can lose a component
+/// smaller than half the float spacing of its coordinate and keep the other (at x = 135 the
+/// spacing is 1.5·10⁻⁵): a body pressed between a wall and a neighbour and sliding along
+/// the wall lost the part of each step that kept it off the neighbour, and crept into it
+/// by 6·10⁻⁶ a step. The end is then moved away from the contact by units in the last place
+/// of the coordinate the normal leans on most (at most two), or the body stays where it is
+/// (as it does where the nudge would take it past `MAX_COORD`).
+fn off_contact(from: Vec2, step: Vec2, along: Option<Vec2>) -> Vec2 {
+    let to = from + step;
+    let Some(normal) = along else {
+        return to;
+    };
+    // Only a step that lost a coordinate whole: elsewhere rounding is as likely to move the
+    // body away as towards the contact, and adds up to nothing.
+    if !((step.x != 0.0 && to.x == from.x) || (step.y != 0.0 && to.y == from.y)) {
+        return to;
+    }
+    let mut end = to;
+    for _ in 0..3 {
+        if (end - from).dot(normal) >= 0.0 {
+            // (Nudged past MAX_COORD, it stays: every body stays in range.)
+            return if in_range(end) { end } else { from };
+        }
+        if normal.x.abs() >= normal.y.abs() {
+            end.x = next_toward(end.x, normal.x);
+        } else {
+            end.y = next_toward(end.y, normal.y);
+        }
+    }
+    from
+}
+
+/// The float next to `x` in the direction of `sign`'s sign (`x` itself for a zero `sign`).
+fn next_toward(x: f32, sign: f32) -> f32 {
+    if sign > 0.0 {
+        x.next_up()
+    } else if sign < 0.0 {
+        x.next_down()
+    } else {
+        x
     }
 }
 

@@ -659,7 +659,14 @@ impl Character {
         } else {
             0.0
         };
-        let advance = (reach * hit.t - back).clamp(0.0, length);
+        let mut advance = (reach * hit.t - back).clamp(0.0, length);
+        // An advance within the rounding of the position is not made: rounded, it would not
+        // move the character along `dir` but a unit in the last place along one axis and
+        // none along the other, off its way (a character pinned in a wedge between a ramp
+        // and a ceiling, pushing on, crept into the ramp by that every step).
+        if advance <= self.slack() {
+            advance = 0.0;
+        }
         self.position += dir * advance;
         log.sweep(
             map,
