@@ -21,7 +21,8 @@
 //!   each names objects registered this frame.
 //! - `paths`: `find_path` between any points for any radius on maps with ramps (a path
 //!   may cross a one-way platform from behind, where the circle does not fit): errors for
-//!   bad values, and every point of a path found is finite and where the circle fits.
+//!   bad values; a path found runs from one end to the other, both where the circle fits,
+//!   and every straight run of it is clear by the circle cast.
 
 use tileslide::broadphase::PairMethod;
 use tileslide::io::ascii;
@@ -648,17 +649,37 @@ pub fn paths(data: &[u8]) {
         match grid.find_path(&map, from, to, radius) {
             Err(_) => {}
             Ok(None) => {}
+            // What `find_path` promises: from `from` to `to`, both where the circle fits,
+            // every straight run clear by the circle cast (a corner the smoothing cut may be
+            // nearer a wall than the grid's margin, which `fits` asks of a place).
             Ok(Some(path)) => {
                 assert!(from.is_finite() && to.is_finite() && radius.is_finite());
                 let points = path.points();
-                assert!(!points.is_empty(), "an empty path");
-                for p in points {
-                    assert!(p.is_finite(), "{p}");
+                assert_eq!(
+                    (points.first(), points.last()),
+                    (Some(&from), Some(&to)),
+                    "{points:?}"
+                );
+                for p in [from, to] {
                     assert_eq!(
-                        grid.fits(&map, *p, radius).ok(),
+                        grid.fits(&map, p, radius).ok(),
                         Some(true),
-                        "a path point {p} where a circle of {radius} does not fit"
+                        "an end {p} where a circle of {radius} does not fit"
                     );
+                }
+                let filter = QueryFilter::both_sides().with_mask(SegmentFlags(
+                    NavConfig::default().mask.0 & !SegmentFlags::ONE_WAY.0,
+                ));
+                for run in points.windows(2) {
+                    let (a, b) = (run[0], run[1]);
+                    assert!(a.is_finite() && b.is_finite(), "{points:?}");
+                    if a != b {
+                        let cast = map.cast_circle(a, radius, b - a, &filter);
+                        assert!(
+                            matches!(cast, Ok(None)),
+                            "the run {a} to {b} of a circle of {radius} is not clear: {cast:?}"
+                        );
+                    }
                 }
             }
         }

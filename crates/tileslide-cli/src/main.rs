@@ -22,6 +22,7 @@ mod raycast;
 mod render;
 mod scene;
 mod simulate;
+mod soak;
 
 /// Collision detection for tile-based 2D games: inspect, cast rays, find paths, simulate,
 /// draw and bake maps, run the demo games, benchmark.
@@ -160,6 +161,10 @@ enum Command {
     /// with it; or why each segment of a map's cell (`--cell C,R`) is active or hidden and
     /// how its ends join. `-o OUT.png` draws it.
     Explain(explain::ExplainArgs),
+    /// Run a long randomized session (a cave dug and built, bodies, characters, moving
+    /// platforms, hit volumes, rays, paths, snapshots) with every promise audited every
+    /// step; report steps per second and the audit, and fail on any violation.
+    Soak(soak::SoakArgs),
     /// Run a demo game headless and write a GIF, a final PNG and a summary.
     Demo {
         #[command(subcommand)]
@@ -260,6 +265,7 @@ fn main() -> ExitCode {
         #[cfg(not(feature = "peers"))]
         Command::Bench { args } => bench_without_peers(&args),
         Command::Explain(args) => explain::run(&args),
+        Command::Soak(args) => soak::run(&args),
         Command::Demo { which } => demo::run(which),
     };
     match result {
