@@ -18,9 +18,11 @@ if ! rustup toolchain list | grep -q '^nightly'; then
     echo "error: the fuzz targets need the nightly toolchain (rustup toolchain install nightly)" >&2
     exit 1
 fi
+# cargo-fuzz only runs cargo and the targets: built without optimisation, it installs in
+# about half the time.
 if ! cargo fuzz --version >/dev/null 2>&1; then
     echo "installing cargo-fuzz (crates.io)" >&2
-    cargo install --locked cargo-fuzz --version 0.13.2
+    cargo install --locked --debug cargo-fuzz --version 0.13.2
 fi
 
 set -- -O -a -s none

@@ -75,24 +75,25 @@ wasm-bindgen --target web --weak-refs --remove-name-section --out-dir pkg --out-
     "$target_dir/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
 size_of pkg/tileslide_bg.wasm
 
-# Built for speed: tileslide at the release profile's level 3, everything else as above, in
-# a target directory of its own, so neither these builds nor the package's undo the other's.
+# Built for speed: tileslide at the release profile's level 3, everything else as above (so
+# the dependencies built for the package serve these builds too; cargo keeps both builds of
+# tileslide side by side, and each wasm file is bound as soon as it is built).
 # - web/pkg/speed/: the same package (`import … from "tileslide/speed"`): about 50 KB more
 #   gzipped, and the rays scene in about three fifths of the time, a crowd step in about
 #   three quarters (npm run bench).
 # - web/playground-pkg/: the same with `explain`, for the playground, whose sandbox steps
 #   10,000 bodies a frame. It comes first: both write tileslide_wasm.wasm.
-set -- "$@" --config 'profile.release.package.tileslide.opt-level=3' --target-dir "$target_dir/speed"
+set -- "$@" --config 'profile.release.package.tileslide.opt-level=3'
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
     -p tileslide-wasm --features explain "$@"
 rm -rf playground-pkg
 wasm-bindgen --target web --weak-refs --remove-name-section --out-dir playground-pkg --out-name tileslide \
-    "$target_dir/speed/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
+    "$target_dir/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
 size_of playground-pkg/tileslide_bg.wasm "(explain; not the npm package)"
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
     -p tileslide-wasm "$@"
 wasm-bindgen --target web --weak-refs --remove-name-section --out-dir pkg/speed --out-name tileslide \
-    "$target_dir/speed/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
+    "$target_dir/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
 size_of pkg/speed/tileslide_bg.wasm
 
 rm -rf games-pkg
