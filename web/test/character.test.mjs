@@ -110,6 +110,18 @@ test("bad shapes, configs and numbers are Errors naming them", () => {
   map.free();
 });
 
+test("a map holds at most 65,536 temporary segments", () => {
+  const map = TileMap.fromAscii(ROOM);
+  for (let i = 0; i < 65_536; i++) {
+    map.addTemporary(1, 1 + (i % 3), 2, 1 + (i % 3), 0, -1, { owner: i % 7 });
+  }
+  assert.throws(() => map.addTemporary(1, 1, 2, 1, 0, -1, { owner: 9 }), /owner 9 refused.*65536.*MAX_TEMPORARIES/);
+  assert.equal(map.temporaryCount, 65_536);
+  map.clearTemporariesOf(3);
+  map.addTemporary(1, 1, 2, 1, 0, -1, { owner: 9 });
+  map.free();
+});
+
 test("10,000 Characters made, moved and freed do not grow the wasm memory", () => {
   const map = TileMap.fromAscii(ROOM);
   const grew = growth(10_000, () => {

@@ -103,8 +103,10 @@ fn describe(hit: Option<&RayHit>) -> String {
 /// Reads a CSV ray file: `x0,y0,x1,y1` per line; blank lines and lines starting with `#`
 /// are skipped. Errors name the file, line and column.
 fn read_rays(path: &Path) -> Result<Vec<(Vec2, Vec2)>> {
-    let text = std::fs::read_to_string(path)
+    let bytes = tileslide::io::read_limited(path)
         .with_context(|| format!("{}: cannot read the ray file", path.display()))?;
+    let text = String::from_utf8(bytes)
+        .with_context(|| format!("{}: the ray file is not UTF-8 text", path.display()))?;
     let mut rays = Vec::new();
     for (n, line) in text.lines().enumerate() {
         let trimmed = line.trim();

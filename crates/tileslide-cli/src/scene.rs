@@ -11,7 +11,8 @@ use tileslide::{
     ControllerConfig, MoveOptions, MoveTrace, SegmentFlags, TileMap, Vec2,
 };
 
-use crate::map_file::{self, MapFormat};
+// `super`: the fuzz target `scene` includes this file beside a `map_file` of its own.
+use super::map_file::{self, MapFormat};
 
 /// Most steps a scene may ask for (a typo of a few zeros should not run for days).
 pub const MAX_STEPS: u64 = 10_000_000;
@@ -106,9 +107,17 @@ pub struct Scene {
 impl Scene {
     /// Reads and checks the scene at `path`.
     pub fn load(path: &Path) -> Result<Self> {
-        let text = std::fs::read_to_string(path)
+        let bytes = tileslide::io::read_limited(path)
             .with_context(|| format!("{}: cannot read the scene", path.display()))?;
-        let scene: SceneFile = serde_json::from_str(&text)
+        let text = String::from_utf8(bytes)
+            .with_context(|| format!("{}: the scene is not UTF-8 text", path.display()))?;
+        Self::parse(&text, path)
+    }
+
+    /// Reads and checks the scene `text`, from the file at `path` (which names it in
+    /// errors, and which the map file it names is relative to).
+    pub fn parse(text: &str, path: &Path) -> Result<Self> {
+        let scene: SceneFile = serde_json::from_str(text)
             .with_context(|| format!("{}: not a valid scene", path.display()))?;
         let (map, format) = load_map(path, &scene)?;
         if let Some(steps) = scene.steps

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use thiserror::Error;
-use tileslide::io::{LoadError, ascii, replica};
+use tileslide::io::{LoadError, ascii, read_limited, replica};
 use tileslide::{Aabb, TileMap, Vec2};
 
 use crate::replica_objects::{self, EnemyStart, IgnoredObjects};
@@ -110,7 +110,9 @@ impl Level {
     /// Reads an ASCII level with the demo's markers (see the bundled level's header).
     pub fn load_ascii(path: impl AsRef<Path>) -> Result<Self, LevelError> {
         let path = path.as_ref();
-        let text = std::fs::read_to_string(path).map_err(|e| unreadable(path, e))?;
+        let text = read_limited(path)
+            .and_then(|b| String::from_utf8(b).map_err(std::io::Error::other))
+            .map_err(|e| unreadable(path, e))?;
         Self::parse_ascii(&text, path)
     }
 
@@ -201,8 +203,8 @@ impl Level {
         tile_set: impl AsRef<Path>,
     ) -> Result<Self, LevelError> {
         let (level, tile_set) = (level.as_ref(), tile_set.as_ref());
-        let set_bytes = std::fs::read(tile_set).map_err(|e| unreadable(tile_set, e))?;
-        let bytes = std::fs::read(level).map_err(|e| unreadable(level, e))?;
+        let set_bytes = read_limited(tile_set).map_err(|e| unreadable(tile_set, e))?;
+        let bytes = read_limited(level).map_err(|e| unreadable(level, e))?;
         Self::parse_replica(&bytes, level, &set_bytes, tile_set)
     }
 

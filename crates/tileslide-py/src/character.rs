@@ -327,7 +327,10 @@ impl Character {
     /// `move_and_slide` clips it: for a displacement made with `move_by`.
     fn clip_velocity(&self, vx: f32, vy: f32) -> PyResult<(f32, f32)> {
         let velocity = finite_point(["vx", "vy"], vx, vy)?;
-        let v = self.character.clip_velocity(velocity, &self.last);
+        let v = self
+            .character
+            .clip_velocity(velocity, &self.last)
+            .map_err(|e| controller_error(&e))?;
         Ok((v.x, v.y))
     }
 

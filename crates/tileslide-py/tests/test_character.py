@@ -191,3 +191,14 @@ def test_bad_temporary_segments_are_refused_naming_the_argument():
     with pytest.raises(ValueError, match="owner"):
         m.clear_temporaries(owner=-3)
     assert m.temporary_count == 0
+
+
+def test_a_map_holds_at_most_max_temporaries():
+    m = tileslide.TileMap.from_ascii(ROOM)
+    for i in range(65536):
+        m.add_temporary(1.0, 1.0 + (i % 3), 2.0, 1.0 + (i % 3), 0.0, -1.0, owner=i % 7)
+    with pytest.raises(ValueError, match="owner 9 refused.*65536.*MAX_TEMPORARIES"):
+        m.add_temporary(1.0, 1.0, 2.0, 1.0, 0.0, -1.0, owner=9)
+    assert m.temporary_count == 65536
+    m.clear_temporaries(owner=3)
+    m.add_temporary(1.0, 1.0, 2.0, 1.0, 0.0, -1.0, owner=9)

@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use thiserror::Error;
 
-use crate::MAX_PIXELS;
+use crate::{MAX_GIF_BYTES, MAX_PIXELS};
 
 /// Why a picture or an animation could not be made or written.
 #[derive(Debug, Error)]
@@ -49,6 +49,17 @@ pub enum RenderError {
         got_width: u32,
         /// The frame's height, in pixels.
         got_height: u32,
+    },
+    /// The animation's GIF already holds [`MAX_GIF_BYTES`] bytes: no frame more is taken.
+    #[error(
+        "the animation's GIF holds {bytes} bytes after {frames} frames: at most {MAX_GIF_BYTES} \
+         (MAX_GIF_BYTES); record fewer or smaller frames"
+    )]
+    GifTooLarge {
+        /// Frames taken.
+        frames: usize,
+        /// Bytes of GIF they made.
+        bytes: u64,
     },
     /// The PNG encoder failed.
     #[error("cannot encode the PNG: {0}")]

@@ -6,7 +6,7 @@ use std::path::Path;
 use gif::{Encoder, Repeat};
 
 use crate::palette::Palette;
-use crate::{DEFAULT_FRAME_DELAY, Image, RenderError, Style};
+use crate::{DEFAULT_FRAME_DELAY, Image, MAX_GIF_BYTES, RenderError, Style};
 
 /// An animated GIF of images the caller renders, all of one size, looping forever: for
 /// frames that are not one canvas's pictures (a [`Camera`](crate::Camera) that zooms
@@ -39,6 +39,8 @@ pub struct ImageAnimation {
     size: (u16, u16),
     frames: usize,
     delay: u16,
+    /// The most bytes the GIF may hold before a push: [`MAX_GIF_BYTES`].
+    max_bytes: u64,
 }
 
 impl ImageAnimation {
@@ -58,6 +60,7 @@ impl ImageAnimation {
             size: (w, h),
             frames: 0,
             delay: DEFAULT_FRAME_DELAY,
+            max_bytes: MAX_GIF_BYTES,
         })
     }
 
@@ -67,8 +70,16 @@ impl ImageAnimation {
     }
 
     /// Appends `image` as the next frame, or [`RenderError::FrameSize`] if it is not the
-    /// animation's size.
+    /// animation's size, or [`RenderError::GifTooLarge`] once the GIF holds
+    /// [`MAX_GIF_BYTES`].
     pub fn push(&mut self, image: &Image) -> Result<(), RenderError> {
+        let bytes = self.encoder.get_ref().len() as u64;
+        if bytes >= self.max_bytes {
+            return Err(RenderError::GifTooLarge {
+                frames: self.frames,
+                bytes,
+            });
+        }
         if (image.width(), image.height()) != (self.width(), self.height()) {
             return Err(RenderError::FrameSize {
                 width: self.width(),
@@ -132,5 +143,43 @@ impl std::fmt::Debug for ImageAnimation {
             .field("frames", &self.frames)
             .field("delay", &self.delay)
             .finish_non_exhaustive()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Rgba;
+
+    #[test]
+    fn frames_past_the_byte_limit_are_refused_and_the_gif_stays_whole() {
+        let mut gif = ImageAnimation::new(64, 64, &Style::default()).unwrap();
+        gif.max_bytes = 2_000;
+        let mut pushed = 0;
+        let error = loop {
+            // Noise, which compresses badly: a few frames pass the limit.
+            let mut image = Image::filled(64, 64, Rgba::opaque(0, 0, 0)).unwrap();
+            for (i, p) in image.pixmap_mut().pixels_mut().iter_mut().enumerate() {
+                let v = ((i * 7919 + pushed * 104_729) % 251) as u8;
+                *p = tiny_skia::PremultipliedColorU8::from_rgba(v, v / 2, 255 - v, 255).unwrap();
+            }
+            match gif.push(&image) {
+                Ok(()) => pushed += 1,
+                Err(e) => break e,
+            }
+            assert!(pushed < 100, "the limit was never reached");
+        };
+        assert!(pushed >= 1);
+        assert!(error.to_string().contains("MAX_GIF_BYTES"), "{error}");
+        match error {
+            RenderError::GifTooLarge { frames, bytes } => {
+                assert_eq!(frames, pushed);
+                assert!(bytes >= 2_000);
+            }
+            other => panic!("{other}"),
+        }
+        assert_eq!(gif.frame_count(), pushed, "a refused frame is not taken");
+        let bytes = gif.finish().unwrap();
+        assert!(bytes.starts_with(b"GIF89a") && bytes.ends_with(&[0x3b]));
     }
 }

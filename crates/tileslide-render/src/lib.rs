@@ -57,7 +57,9 @@ pub use color::{Rgba, Style};
 pub use error::RenderError;
 pub use image::Image;
 pub use image_animation::ImageAnimation;
-pub use options::{DEFAULT_LAYERS, DEFAULT_PIXELS_PER_CELL, MAX_PIXELS, RenderOptions, YAxis};
+pub use options::{
+    DEFAULT_LAYERS, DEFAULT_PIXELS_PER_CELL, MAX_GIF_BYTES, MAX_PIXELS, RenderOptions, YAxis,
+};
 pub use panel::{Panel, Swatch};
 pub use picture::{Picture, VolumeKind};
 pub use text::{Anchor, FontSize};

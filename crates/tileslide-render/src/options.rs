@@ -13,6 +13,11 @@ pub const DEFAULT_LAYERS: DebugKinds = DebugKinds::ALL.without(DebugKind::Hidden
 /// the scale is refused instead of allocating gigabytes.
 pub const MAX_PIXELS: u64 = 1 << 25;
 
+/// The most bytes an animation's GIF may grow to (1 GiB): frames are compressed as they are
+/// pushed, and a push past this is refused ([`RenderError::GifTooLarge`](crate::RenderError::GifTooLarge)), so a
+/// loop that never stops recording does not take all the memory.
+pub const MAX_GIF_BYTES: u64 = 1 << 30;
+
 /// The scale used unless told otherwise: 16 pixels per cell.
 pub const DEFAULT_PIXELS_PER_CELL: f32 = 16.0;
 

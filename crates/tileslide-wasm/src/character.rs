@@ -193,7 +193,8 @@ impl Character {
     #[wasm_bindgen(js_name = clipVelocity, unchecked_return_type = "[number, number]")]
     pub fn clip_velocity(&self, vx: f64, vy: f64) -> Result<JsValue, JsError> {
         let velocity = args::vec2("clipVelocity: velocity", vx, vy).map_err(error)?;
-        Ok(pair(self.character.clip_velocity(velocity, &self.last)))
+        let clipped = self.character.clip_velocity(velocity, &self.last);
+        Ok(pair(clipped.map_err(error)?))
     }
 
     /// Adds the character to `out`: its shape as a `Character` circle or box, and what its

@@ -11,6 +11,7 @@
 
 pub use crate::bodies::MAX_COMPOUND_CIRCLES;
 pub use crate::geometry::limits::MAX_COORD;
+pub use crate::io::MAX_FILE_BYTES;
 pub use crate::path::MAX_NAV_NODES;
-pub use crate::tiles::{JOURNAL_EDITS, MAX_CELLS, MAX_SHAPE_SEGMENTS};
+pub use crate::tiles::{JOURNAL_EDITS, MAX_CELLS, MAX_SHAPE_SEGMENTS, MAX_TEMPORARIES};
 pub use crate::volumes::{MAX_FRAME_VOLUMES, MAX_HIT_OBJECTS, MAX_OBJECT_VOLUMES};

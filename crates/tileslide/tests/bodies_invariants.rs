@@ -15,7 +15,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod generators;
+use crate::generators;
 
 use generators::{tile_chars, tile_map, wall_in};
 use proptest::prelude::*;

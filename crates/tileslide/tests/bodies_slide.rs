@@ -455,3 +455,59 @@ fn a_body_sliding_up_a_wall_past_a_neighbour_never_creeps_into_it() {
         "{before} deep before the step, {after} after"
     );
 }
+
+/// The soak's second creep: a body sliding up a ramp at (110.69, 42.06), where x's float
+/// spacing (7.6·10⁻⁶) is twice y's, on a slide that pressed it gently into the ramp. The
+/// slide is tangent to the ramp, but each step's end rounded x and y the same way, and the
+/// body crept into the ramp by 2.7·10⁻⁶ a step (9.9·10⁻⁵ deep here, past 10⁻⁴ in the soak).
+/// No step should take it deeper. Open: moving every such rounded end back off the ramp (as
+/// `off_contact` in the resolver does for a step that lost a coordinate whole) fixes this
+/// body but jams the crowds of `path.rs` (17 agents stuck after 2,500 steps), which lean on
+/// how their near-touches round; see docs/soak.md.
+#[test]
+#[ignore = "open: the soak's ramp creep (docs/soak.md); the fix jams path.rs's crowds"]
+fn a_body_sliding_along_a_ramp_never_creeps_into_it() {
+    // The ramp '/' at column 110, row 42 (its face from (110, 43) to (111, 42)), and the
+    // block above its top end.
+    let mut text = String::new();
+    for r in 0..43 {
+        let mut row = vec!['.'; 112];
+        match r {
+            41 => row[111] = '#',
+            42 => row[110] = '/',
+            _ => {}
+        }
+        text.extend(row);
+        text.push('\n');
+    }
+    let map = ascii::parse(&text, "ramp.txt", 1.0).unwrap();
+    let radius = 0.17561081;
+    let mut bodies = Bodies::new();
+    let h = bodies
+        .add(BodyDesc::new(
+            Vec2::new(110.6872, 42.064587),
+            BodyShape::circle(radius).unwrap(),
+        ))
+        .unwrap();
+    let normal = Vec2::new(-1.0, -1.0).normalize();
+    let depth = |b: &Bodies| {
+        let p = b.get(h).unwrap().position();
+        radius - (p - Vec2::new(111.0, 42.0)).dot(normal)
+    };
+    let start = depth(&bodies);
+    assert!(start > 9.9e-5, "{start}");
+    for step in 0..60 {
+        bodies
+            .propose(h, Vec2::new(0.0009268843, -0.0006820779))
+            .unwrap();
+        let before = depth(&bodies);
+        bodies.step(&map);
+        let after = depth(&bodies);
+        assert!(
+            after <= before,
+            "step {step}: {before} deep before, {after} after"
+        );
+    }
+    // It did slide on, up the ramp.
+    assert!(bodies.get(h).unwrap().position().x > 110.72);
+}

@@ -6,7 +6,7 @@
 //! to right it must cross from the spawn to the right wall.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod replica_support;
+use crate::replica_support;
 
 use std::sync::Arc;
 

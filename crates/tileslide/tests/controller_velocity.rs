@@ -5,7 +5,7 @@
 //! nor down into its ground.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod generators;
+use crate::generators;
 
 use generators::{rows, tile_chars, wall_in};
 use proptest::prelude::*;

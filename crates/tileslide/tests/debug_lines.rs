@@ -3,7 +3,7 @@
 //! where the bodies are.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod generators;
+use crate::generators;
 
 use generators::small_map_at;
 use proptest::prelude::*;

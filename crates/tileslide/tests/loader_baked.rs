@@ -4,7 +4,7 @@
 //! whose checksum was recomputed over culled segments that are not what its tiles make.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod replica_support;
+use crate::replica_support;
 
 use std::sync::Arc;
 

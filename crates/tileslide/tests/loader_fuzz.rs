@@ -4,7 +4,7 @@
 //! `Err` from `parse_tile_set` / `parse_level` / `parse_objects`; random text and cell sizes never panic the
 //! ASCII parser, which also agrees cell by cell with a brute-force reference reading.
 
-mod replica_support;
+use crate::replica_support;
 
 use std::sync::Arc;
 

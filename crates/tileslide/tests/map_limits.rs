@@ -3,7 +3,8 @@
 
 use std::sync::Arc;
 
-use tileslide::{Cell, MapError, TileId, TileMap, TileSet, TileShape, Vec2, limits::MAX_CELLS};
+use tileslide::limits::{MAX_CELLS, MAX_FILE_BYTES};
+use tileslide::{Cell, MapError, TileId, TileMap, TileSet, TileShape, Vec2};
 
 fn round_tile(vertices: usize) -> TileSet {
     let mut set = TileSet::new(Vec2::ONE).unwrap();
@@ -151,4 +152,21 @@ fn a_map_reaching_past_max_coord_is_refused() {
         Err(MapError::OutOfRange { .. })
     ));
     assert!(TileMap::new(set, 4, 4, Vec2::splat(MAX_COORD - 128.0)).is_ok());
+}
+
+#[test]
+fn a_map_file_larger_than_max_file_bytes_is_refused_before_it_is_read() {
+    // A sparse file one byte past the limit: its size says so, and nothing is read.
+    let path = std::env::temp_dir().join(format!("tileslide-huge-{}.txt", std::process::id()));
+    let file = std::fs::File::create(&path).unwrap();
+    file.set_len(MAX_FILE_BYTES + 1).unwrap();
+    drop(file);
+    let e = tileslide::io::ascii::load(&path, 1.0).unwrap_err();
+    std::fs::remove_file(&path).unwrap();
+    assert_eq!(e.io_error_kind(), Some(std::io::ErrorKind::FileTooLarge));
+    let message = e.to_string();
+    assert!(
+        message.contains("tileslide-huge") && message.contains("MAX_FILE_BYTES"),
+        "{message}"
+    );
 }

@@ -6,8 +6,8 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod drawn;
-mod generators;
+use crate::drawn;
+use crate::generators;
 
 use std::sync::Arc;
 
@@ -634,6 +634,21 @@ mod absurd_inputs {
             Vec2::splat(MAX_COORD),
         ))
         .len()
+    }
+
+    #[test]
+    fn a_box_of_any_finite_size_finds_the_cells_it_covers() {
+        // Cells of 0.5: the box scaled to cells would overflow.
+        let map = room();
+        let cells = |b: Aabb| map.cells_overlapping(&b).count();
+        let huge = Aabb::from_corners(Vec2::splat(-f32::MAX), Vec2::splat(f32::MAX));
+        assert_eq!(cells(huge), 9);
+        let left = Aabb::from_corners(Vec2::splat(-3e38), Vec2::new(0.25, 3e38));
+        assert_eq!(cells(left), 3);
+        let corner = Aabb::from_corners(Vec2::splat(1.5), Vec2::splat(f32::MAX));
+        assert_eq!(cells(corner), 1, "touching the far corner at (1.5, 1.5)");
+        let beyond = Aabb::from_corners(Vec2::new(1.6, -f32::MAX), Vec2::splat(f32::MAX));
+        assert_eq!(cells(beyond), 0);
     }
 
     #[test]

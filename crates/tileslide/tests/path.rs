@@ -18,8 +18,8 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod generators;
-mod path_support;
+use crate::generators;
+use crate::path_support;
 
 use generators::{rows, tile_chars, tile_map, wall_in};
 use glam::DVec2;

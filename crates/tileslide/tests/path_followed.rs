@@ -6,8 +6,8 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod generators;
-mod path_support;
+use crate::generators;
+use crate::path_support;
 
 use generators::{rows, tile_chars, wall_in};
 use proptest::prelude::*;

@@ -11,8 +11,8 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod generators;
-mod path_support;
+use crate::generators;
+use crate::path_support;
 
 use generators::{map_of, small_map_at};
 use glam::DVec2;

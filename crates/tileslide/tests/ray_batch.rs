@@ -9,7 +9,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod generators;
+use crate::generators;
 
 use generators::{query_filter, tile_chars, tile_map};
 use proptest::prelude::*;

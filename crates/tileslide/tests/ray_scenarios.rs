@@ -5,7 +5,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod drawn;
+use crate::drawn;
 
 use std::f32::consts::FRAC_1_SQRT_2;
 use std::sync::Arc;

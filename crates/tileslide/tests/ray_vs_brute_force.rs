@@ -17,7 +17,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod generators;
+use crate::generators;
 
 use generators::{query_filter, rows, tile_chars, tile_map, varied_tile_chars};
 use proptest::prelude::*;

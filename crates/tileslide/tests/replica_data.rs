@@ -3,7 +3,7 @@
 //! them: the tile set's ids and shapes, every level's size and collision layer (checked cell
 //! by cell against an independent reading of the bytes), and the known truncated level.
 
-mod replica_support;
+use crate::replica_support;
 
 use std::path::Path;
 use std::sync::Arc;

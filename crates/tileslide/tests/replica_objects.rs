@@ -4,7 +4,7 @@
 //! reading of the bytes puts it, the player spawns where the level says, and the two files
 //! the game ships cut short are reported, not refused.
 
-mod replica_support;
+use crate::replica_support;
 
 use std::path::Path;
 

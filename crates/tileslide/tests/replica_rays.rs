@@ -3,7 +3,7 @@
 //! tiles and expected points are worked out from the raw level bytes in this file (y up,
 //! 32-pixel tiles, row 0 at the bottom), never from the loader.
 
-mod replica_support;
+use crate::replica_support;
 
 use std::path::Path;
 use std::sync::Arc;

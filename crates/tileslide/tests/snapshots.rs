@@ -19,6 +19,7 @@
 
 use serde::{Deserialize, Serialize};
 use tileslide::io::ascii;
+use tileslide::limits::MAX_TEMPORARIES;
 use tileslide::{
     Bodies, BodyDesc, BodyHandle, BodyShape, Cell, HitObject, HitTypes, HitWorld, MapEdits, Owner,
     ResolveReport, Segment, SegmentFlags, SnapshotError, TeamRule, TemporarySegment, TileMap, Vec2,
@@ -630,6 +631,12 @@ fn values_beyond_the_limits_are_refused_with_what_is_wrong() {
         &message,
         &["temporary segment 0", "(0, -2)", "not of unit length"],
     );
+    // More temporary segments than a map holds.
+    let message = refused::<MapEdits>(&edits, |json| {
+        let one = json["temporaries"][0].clone();
+        json["temporaries"] = serde_json::Value::Array(vec![one; MAX_TEMPORARIES + 1]);
+    });
+    names(&message, &["temporary segment", "65536", "MAX_TEMPORARIES"]);
 }
 
 #[test]

@@ -7,6 +7,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use tileslide::io::ascii;
+use tileslide::limits::MAX_TEMPORARIES;
 use tileslide::{
     MapError, Owner, QueryFilter, Ray, RayHit, Segment, SegmentFlags, SegmentSource,
     TemporaryError, TemporarySegment, TileMap, Vec2,
@@ -208,21 +209,25 @@ fn nan_temporary_segment_is_refused_with_an_error() {
     let mut m = corridor();
     let mut bad = door(3.0, 42);
     bad.segment.a.x = f32::NAN;
-    assert_eq!(
-        m.add_temporary(bad),
-        Err(MapError::Temporary(TemporaryError::NonFinite(Owner(42))))
-    );
+    let e = m.add_temporary(bad).unwrap_err().to_string();
+    assert!(e.contains("end point a (NaN, 1)"), "{e}");
     let mut bad = door(3.0, 42);
     bad.normal = v(f32::NAN, 0.0);
-    assert_eq!(
-        m.add_temporary(bad),
-        Err(MapError::Temporary(TemporaryError::NonFinite(Owner(42))))
+    let e = m.add_temporary(bad).unwrap_err().to_string();
+    assert!(
+        e.contains("owner 42") && e.contains("normal (NaN, 0)"),
+        "{e}"
     );
     let mut bad = door(3.0, 42);
     bad.velocity = v(0.0, f32::INFINITY);
     assert_eq!(
         m.add_temporary(bad),
-        Err(MapError::Temporary(TemporaryError::NonFinite(Owner(42))))
+        Err(MapError::Temporary(TemporaryError::NonFinite {
+            owner: Owner(42),
+            what: "velocity",
+            x: 0.0,
+            y: f32::INFINITY
+        }))
     );
     assert!(m.temporaries().is_empty(), "nothing refused is kept");
     // The error names the owner.
@@ -308,4 +313,40 @@ fn temporary_segment_beyond_max_coord_is_refused_naming_the_point() {
         hits.iter().any(|h| owner_of(h) == Some(Owner(8))),
         "{hits:?}"
     );
+}
+
+#[test]
+fn a_map_holds_at_most_max_temporaries() {
+    let mut m = corridor();
+    for i in 0..MAX_TEMPORARIES {
+        m.add_temporary(door(0.5 + (i % 5) as f32, i as u64))
+            .unwrap();
+    }
+    let revision = m.revision();
+    assert_eq!(
+        m.add_temporary(door(3.0, 7)),
+        Err(MapError::Temporary(TemporaryError::TooMany(Owner(7))))
+    );
+    assert_eq!(
+        m.temporaries().len(),
+        MAX_TEMPORARIES,
+        "nothing refused is kept"
+    );
+    assert_eq!(m.revision(), revision, "a refusal is no change");
+    let e = m.add_temporary(door(3.0, 7)).unwrap_err().to_string();
+    assert!(e.contains("owner 7") && e.contains("65536"), "{e}");
+    // A bad segment is named for what is wrong with it, even at the limit.
+    let mut bad = door(3.0, 8);
+    bad.segment.a.x = f32::NAN;
+    assert!(matches!(
+        m.add_temporary(bad),
+        Err(MapError::Temporary(TemporaryError::NonFinite {
+            owner: Owner(8),
+            what: "end point a",
+            ..
+        }))
+    ));
+    // Room again once one owner's are cleared.
+    m.clear_temporaries_of(Owner(0));
+    m.add_temporary(door(3.0, 7)).unwrap();
 }

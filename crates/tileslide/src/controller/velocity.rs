@@ -42,8 +42,39 @@ impl Character {
     /// [`move_by`](Self::move_by)), so its velocity is not added here; a game that wants a
     /// character to keep the platform's speed when it jumps off adds
     /// [`Contact::platform_velocity`](crate::Contact::platform_velocity) to the jump.
-    #[must_use]
-    pub fn clip_velocity(&self, velocity: Vec2, contacts: &Contacts) -> Vec2 {
+    ///
+    /// A velocity of any finite size is clipped by the same rules (a result past `f32`'s
+    /// range, from a velocity near it, saturates at `±f32::MAX`).
+    ///
+    /// # Errors
+    /// [`ControllerError::NonFinite`] naming the `"velocity"` when it is not finite.
+    pub fn clip_velocity(
+        &self,
+        velocity: Vec2,
+        contacts: &Contacts,
+    ) -> Result<Vec2, ControllerError> {
+        finite("velocity", velocity)?;
+        Ok(self.clipped(velocity, contacts))
+    }
+
+    /// [`clip_velocity`](Self::clip_velocity) of a finite velocity.
+    fn clipped(&self, velocity: Vec2, contacts: &Contacts) -> Vec2 {
+        // Clipping is linear in the velocity, and so is its tolerance: a velocity so large
+        // that its length or a product with a normal could overflow is clipped at 2⁻⁸⁰ of
+        // its size (exact: a power of two; what it rounds away is far below the tolerance)
+        // and scaled back.
+        const HUGE: f32 = 1.1529215e18; // 2⁶⁰
+        if velocity.abs().max_element() > HUGE {
+            let scale = 2f32.powi(-80);
+            let v = self.clip(velocity * scale, contacts) / scale;
+            return v.clamp(Vec2::splat(-f32::MAX), Vec2::splat(f32::MAX));
+        }
+        self.clip(velocity, contacts)
+    }
+
+    /// [`clip_velocity`](Self::clip_velocity) of a finite velocity whose length does not
+    /// overflow.
+    fn clip(&self, velocity: Vec2, contacts: &Contacts) -> Vec2 {
         let up = self.up();
         // Speeds into a surface smaller than this are rounding, left alone: a velocity slid
         // along a surface stays slid along it.
@@ -138,7 +169,7 @@ impl Character {
                 },
                 e => e,
             })?;
-        *velocity = self.clip_velocity(*velocity, &contacts);
+        *velocity = self.clipped(*velocity, &contacts);
         Ok(contacts)
     }
 }
@@ -195,7 +226,9 @@ mod tests {
             ground: Some(contact(Vec2::new(-1.0, -1.0))),
             ..Contacts::default()
         };
-        let v = hero().clip_velocity(Vec2::new(3.0, 5.0), &contacts);
+        let v = hero()
+            .clip_velocity(Vec2::new(3.0, 5.0), &contacts)
+            .unwrap();
         assert_eq!(v, Vec2::new(3.0, 0.0));
     }
 
@@ -207,7 +240,9 @@ mod tests {
             right: Some(contact(Vec2::new(-1.0, 0.2))),
             ..Contacts::default()
         };
-        let v = hero().clip_velocity(Vec2::new(4.0, -4.0), &contacts);
+        let v = hero()
+            .clip_velocity(Vec2::new(4.0, -4.0), &contacts)
+            .unwrap();
         for c in [contacts.ceiling, contacts.right].iter().flatten() {
             assert!(v.dot(c.normal) >= -1e-5, "{v} into {}", c.normal);
         }
@@ -219,9 +254,56 @@ mod tests {
             right: Some(contact(Vec2::new(-1.0, -0.4))),
             ..Contacts::default()
         };
-        let v = hero().clip_velocity(Vec2::new(5.0, 0.0), &contacts);
+        let v = hero()
+            .clip_velocity(Vec2::new(5.0, 0.0), &contacts)
+            .unwrap();
         assert!(v.y >= 0.0, "{v} rises");
         assert!(v.dot(contacts.right.unwrap().normal) >= -1e-6);
+    }
+
+    #[test]
+    fn a_velocity_of_any_finite_size_is_clipped_as_a_small_one() {
+        let contacts = Contacts {
+            ceiling: Some(contact(Vec2::new(-0.3, 1.0))),
+            right: Some(contact(Vec2::new(-1.0, 0.2))),
+            ground: Some(contact(Vec2::new(0.6, -0.8))),
+            ..Contacts::default()
+        };
+        let h = hero();
+        for small in [
+            Vec2::new(4.0, -4.0),
+            Vec2::new(5.0, 0.5),
+            Vec2::new(-3.0, 2.0),
+            Vec2::new(0.25, -1.0),
+        ] {
+            let want = h.clip_velocity(small, &contacts).unwrap();
+            // Powers of two scale exactly, so the answer scales exactly too, up to the
+            // largest finite velocities (whose squared length overflows).
+            for k in [40, 62, 100, 125] {
+                let scale = 2f32.powi(k);
+                let got = h.clip_velocity(small * scale, &contacts).unwrap();
+                assert!(got.is_finite(), "{small} × 2^{k}: {got}");
+                assert_eq!(got / scale, want, "{small} × 2^{k}");
+            }
+        }
+        // Near f32::MAX the answer saturates rather than overflowing.
+        let v = h
+            .clip_velocity(Vec2::new(f32::MAX, -f32::MAX), &contacts)
+            .unwrap();
+        assert!(v.is_finite(), "{v}");
+        for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+            let e = h.clip_velocity(Vec2::new(1.0, bad), &contacts);
+            assert!(
+                matches!(
+                    e,
+                    Err(ControllerError::NonFinite {
+                        what: "velocity",
+                        ..
+                    })
+                ),
+                "{e:?}"
+            );
+        }
     }
 
     #[test]

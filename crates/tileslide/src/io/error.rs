@@ -431,9 +431,48 @@ impl LoadError {
     }
 }
 
-/// Reads a whole file, naming it in the error.
+/// Reads a whole file, naming it in the error; refused past [`MAX_FILE_BYTES`].
 pub(crate) fn read_file(path: &std::path::Path) -> Result<Vec<u8>, LoadError> {
-    std::fs::read(path).map_err(|e| LoadError::unreadable(path, e))
+    read_limited(path).map_err(|e| LoadError::unreadable(path, e))
+}
+
+/// Most bytes a file read whole may hold (1 GiB): more than the largest map tileslide loads
+/// (a Tiled map of [`MAX_CELLS`](crate::limits::MAX_CELLS) cells written as CSV), and a bound on
+/// what a file that never ends (a device, a pipe) may take.
+pub const MAX_FILE_BYTES: u64 = 1 << 30;
+
+/// The bytes of the file at `path`, read whole: what every loader reading from disk uses.
+///
+/// # Errors
+/// The operating system's error, or one of kind
+/// [`FileTooLarge`](std::io::ErrorKind::FileTooLarge) for a file of more than
+/// [`MAX_FILE_BYTES`] bytes, found from its size before reading when it has one, else by
+/// reading no more than one byte past the limit.
+pub fn read_limited(path: &std::path::Path) -> std::io::Result<Vec<u8>> {
+    read_at_most(path, MAX_FILE_BYTES)
+}
+
+/// [`read_limited`] with a limit of `max` bytes.
+fn read_at_most(path: &std::path::Path, max: u64) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let file = std::fs::File::open(path)?;
+    let too_large = || {
+        std::io::Error::new(
+            std::io::ErrorKind::FileTooLarge,
+            format!("it holds more than {max} bytes (MAX_FILE_BYTES)"),
+        )
+    };
+    // A regular file says its size; a device or a pipe says 0 and is read up to the limit.
+    let size = file.metadata().map_or(0, |m| m.len());
+    if size > max {
+        return Err(too_large());
+    }
+    let mut bytes = Vec::with_capacity(usize::try_from(size).unwrap_or(0));
+    file.take(max + 1).read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > max {
+        return Err(too_large());
+    }
+    Ok(bytes)
 }
 
 /// `bytes` as UTF-8 text, or an error naming `path` and the first byte that is not.
@@ -445,4 +484,30 @@ pub(crate) fn as_text<'a>(bytes: &'a [u8], path: &std::path::Path) -> Result<&'a
             LoadErrorKind::NotText,
         )
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_file_that_never_ends_is_read_no_further_than_the_limit() {
+        let zero = std::path::Path::new("/dev/zero");
+        if !zero.exists() {
+            return;
+        }
+        let e = read_at_most(zero, 4096).unwrap_err();
+        assert_eq!(e.kind(), std::io::ErrorKind::FileTooLarge);
+        assert!(e.to_string().contains("more than 4096 bytes"), "{e}");
+    }
+
+    #[test]
+    fn a_file_at_the_limit_is_read_whole_and_one_past_it_is_refused() {
+        let path = std::env::temp_dir().join(format!("tileslide-limit-{}", std::process::id()));
+        std::fs::write(&path, [7u8; 100]).unwrap();
+        assert_eq!(read_at_most(&path, 100).unwrap(), [7u8; 100]);
+        let e = read_at_most(&path, 99).unwrap_err();
+        assert_eq!(e.kind(), std::io::ErrorKind::FileTooLarge);
+        std::fs::remove_file(&path).unwrap();
+    }
 }

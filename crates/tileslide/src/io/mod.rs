@@ -22,7 +22,7 @@ mod tiled_faults;
 
 pub use any::load_file;
 pub use baked::BakedFault;
-pub use error::{LoadError, LoadErrorKind, Location, ParserError};
+pub use error::{LoadError, LoadErrorKind, Location, MAX_FILE_BYTES, ParserError, read_limited};
 #[cfg(feature = "ldtk")]
 pub use ldtk_faults::LdtkFault;
 pub use tiled_faults::{NotTiled, TilePlacement, Unsupported};

@@ -20,9 +20,21 @@ pub struct SegmentOverlap {
 
 impl TileMap {
     /// The cells whose closed rectangles share a point with the closed box, row by row.
-    /// Empty for a box outside the map or with a non-finite coordinate.
+    /// Empty for a box outside the map or with a non-finite coordinate; a box of any
+    /// finite size is answered.
     pub fn cells_overlapping(&self, aabb: &Aabb) -> impl Iterator<Item = Cell> + use<> {
-        let (c0, r0, c1, r1) = self.cell_range(aabb).unwrap_or((1, 1, 0, 0));
+        // Cut to the map's bounds and a cell beyond first (which changes no answer: every
+        // cell lies within them), so that nothing computed from the box overflows.
+        let bounds = self.bounds();
+        let (lo, hi) = (bounds.min - self.cell_size(), bounds.max + self.cell_size());
+        let range = aabb
+            .is_valid()
+            .then(|| Aabb {
+                min: aabb.min.clamp(lo, hi),
+                max: aabb.max.clamp(lo, hi),
+            })
+            .and_then(|cut| self.cell_range(&cut));
+        let (c0, r0, c1, r1) = range.unwrap_or((1, 1, 0, 0));
         (r0..=r1).flat_map(move |r| (c0..=c1).map(move |c| Cell::new(c, r)))
     }
 

@@ -187,7 +187,9 @@ mod read {
     use glam::Vec2;
 
     use super::{MapEdits, SnapshotError};
-    use crate::tiles::{Cell, MAX_CELLS, MapError, TemporarySegment, TileId};
+    use crate::tiles::{
+        Cell, MAX_CELLS, MAX_TEMPORARIES, MapError, TemporaryError, TemporarySegment, TileId,
+    };
 
     /// How far a saved normal's squared length may be from 1: a few rounding steps of the
     /// normalisation the map applies, far less than any normal that was not normalised.
@@ -232,6 +234,12 @@ mod read {
                     });
                 }
                 last = Some(at);
+            }
+            if let Some(t) = data.temporaries.get(MAX_TEMPORARIES) {
+                return Err(SnapshotError::Temporary {
+                    index: MAX_TEMPORARIES,
+                    error: TemporaryError::TooMany(t.owner),
+                });
             }
             for (index, t) in data.temporaries.iter().enumerate() {
                 check_temporary(index, t)?;

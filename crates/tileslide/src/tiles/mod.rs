@@ -38,5 +38,5 @@ pub use map::{ActiveSegment, MAX_CELLS, TileMap};
 pub use map_error::MapError;
 pub use segment_ref::SegmentRef;
 pub use shape::{MAX_SHAPE_SEGMENTS, ShapeError, TileSegment, TileShape};
-pub use temporary::{TemporaryError, TemporarySegment};
+pub use temporary::{MAX_TEMPORARIES, TemporaryError, TemporarySegment};
 pub use tile_set::{TileSet, TileSetError};

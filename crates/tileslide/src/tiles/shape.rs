@@ -2,7 +2,7 @@ use glam::Vec2;
 use thiserror::Error;
 
 use super::SegmentFlags;
-use crate::geometry::{Ray, Segment, cast_ray_segment, unit_normal};
+use crate::geometry::{Ray, Segment, cast_ray_segment, in_range, unit_normal};
 
 /// One segment of a tile shape, in tile-local coordinates.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -71,6 +71,21 @@ pub enum ShapeError {
     /// The polygon encloses no area, so its winding (and its normals) are undefined.
     #[error("the polygon has zero area")]
     ZeroArea,
+    /// A point lies beyond [`MAX_COORD`](crate::limits::MAX_COORD) from the tile's corner:
+    /// no tile of a map is that large, and the shape's areas and normals would overflow.
+    #[error(
+        "segment {segment} has the point ({x}, {y}), beyond the ±{max} coordinate range \
+         (MAX_COORD)",
+        max = crate::geometry::MAX_COORD
+    )]
+    OutOfRange {
+        /// Index of the segment (or polygon edge) the point starts or ends.
+        segment: usize,
+        /// The point's x.
+        x: f32,
+        /// The point's y.
+        y: f32,
+    },
     /// Two edges of the polygon cross or overlap.
     #[error("polygon edges {first} and {second} intersect")]
     SelfIntersecting {
@@ -181,6 +196,8 @@ impl TileShape {
             if !(s.a.is_finite() && s.b.is_finite() && s.normal.is_finite()) {
                 return Err(ShapeError::NonFinite { segment: i });
             }
+            out_of_range(i, s.a)?;
+            out_of_range(i, s.b)?;
             if s.a == s.b {
                 return Err(ShapeError::ZeroLength { segment: i });
             }
@@ -269,6 +286,19 @@ impl TileShape {
     }
 }
 
+/// An error naming `p` and its `segment` when it lies beyond [`MAX_COORD`](crate::limits::MAX_COORD).
+fn out_of_range(segment: usize, p: Vec2) -> Result<(), ShapeError> {
+    if in_range(p) {
+        Ok(())
+    } else {
+        Err(ShapeError::OutOfRange {
+            segment,
+            x: p.x,
+            y: p.y,
+        })
+    }
+}
+
 /// The edges of a closed polygon with normals from its winding, after validation.
 fn polygon_edges(points: &[Vec2], first: usize) -> Result<Vec<(Vec2, Vec2, Vec2)>, ShapeError> {
     let n = points.len();
@@ -279,6 +309,7 @@ fn polygon_edges(points: &[Vec2], first: usize) -> Result<Vec<(Vec2, Vec2, Vec2)
         if !p.is_finite() {
             return Err(ShapeError::NonFinite { segment: first + i });
         }
+        out_of_range(first + i, *p)?;
     }
     let edge = |i: usize| (points[i], points[(i + 1) % n]);
     for i in 0..n {
@@ -433,6 +464,22 @@ mod tests {
         assert!(matches!(
             TileShape::polygon(&[v(0.0, 0.0), v(2.0, 2.0), v(2.0, 0.0), v(0.0, 1.0)]),
             Err(ShapeError::SelfIntersecting { .. })
+        ));
+        // Points so far out that the area would overflow are named, not called flat.
+        let e = TileShape::polygon(&[v(0.0, 0.0), v(1e20, 0.0), v(1e20, 1e20)]).unwrap_err();
+        assert_eq!(
+            e,
+            ShapeError::OutOfRange {
+                segment: 1,
+                x: 1e20,
+                y: 0.0
+            }
+        );
+        assert!(e.to_string().contains("100000000000000000000"), "{e}");
+        let s = |a, b| TileSegment::new(a, b, v(0.0, -1.0), SegmentFlags::SOLID);
+        assert!(matches!(
+            TileShape::from_segments([s(v(0.0, 0.0), v(-3e38, 0.0))]),
+            Err(ShapeError::OutOfRange { segment: 0, .. })
         ));
     }
 

@@ -23,13 +23,26 @@ pub struct TemporarySegment {
     pub velocity: Vec2,
 }
 
+/// Most temporary segments a map holds at once: every query looks at each of them, so a
+/// game with more (a whole level of moving platforms) makes them tiles instead.
+pub const MAX_TEMPORARIES: usize = 1 << 16;
+
 /// Why a temporary segment was refused.
 #[derive(Clone, Copy, Debug, PartialEq, Error)]
 #[non_exhaustive]
 pub enum TemporaryError {
-    /// A coordinate, normal or velocity component is NaN or infinite.
-    #[error("temporary segment of owner {} has a non-finite coordinate, normal or velocity", .0.0)]
-    NonFinite(Owner),
+    /// An end point, the normal or the velocity has a NaN or infinite component.
+    #[error("temporary segment of owner {} has a non-finite {what} ({x}, {y})", owner.0)]
+    NonFinite {
+        /// Who submitted it.
+        owner: Owner,
+        /// Which value: `"end point a"`, `"end point b"`, `"normal"` or `"velocity"`.
+        what: &'static str,
+        /// The value's x.
+        x: f32,
+        /// The value's y.
+        y: f32,
+    },
     /// Start and end point are the same.
     #[error("temporary segment of owner {} has zero length", .0.0)]
     ZeroLength(Owner),
@@ -52,6 +65,13 @@ pub enum TemporaryError {
         /// The end point's y.
         y: f32,
     },
+    /// The map already holds [`MAX_TEMPORARIES`] temporary segments.
+    #[error(
+        "temporary segment of owner {} refused: the map already holds {MAX_TEMPORARIES}, the \
+         most it holds (MAX_TEMPORARIES)",
+        .0.0
+    )]
+    TooMany(Owner),
 }
 
 impl TemporarySegment {
@@ -59,8 +79,20 @@ impl TemporarySegment {
     /// non-zero normal) and normalises its normal.
     pub(crate) fn validated(mut self) -> Result<Self, TemporaryError> {
         let id = self.owner;
-        if !(self.segment.is_finite() && self.normal.is_finite() && self.velocity.is_finite()) {
-            return Err(TemporaryError::NonFinite(id));
+        for (what, v) in [
+            ("end point a", self.segment.a),
+            ("end point b", self.segment.b),
+            ("normal", self.normal),
+            ("velocity", self.velocity),
+        ] {
+            if !v.is_finite() {
+                return Err(TemporaryError::NonFinite {
+                    owner: id,
+                    what,
+                    x: v.x,
+                    y: v.y,
+                });
+            }
         }
         if let Some(p) = [self.segment.a, self.segment.b]
             .into_iter()
@@ -83,9 +115,14 @@ impl TemporarySegment {
 
 impl TileMap {
     /// Adds a temporary segment (a moving platform, a door) that every query sees until
-    /// [`clear_temporaries`](Self::clear_temporaries). Refused if non-finite or degenerate.
+    /// [`clear_temporaries`](Self::clear_temporaries). Refused if non-finite or degenerate,
+    /// or when the map already holds [`MAX_TEMPORARIES`].
     pub fn add_temporary(&mut self, segment: TemporarySegment) -> Result<(), MapError> {
-        self.temporaries.push(segment.validated()?);
+        let segment = segment.validated()?;
+        if self.temporaries.len() >= MAX_TEMPORARIES {
+            return Err(TemporaryError::TooMany(segment.owner).into());
+        }
+        self.temporaries.push(segment);
         self.journal.record_temporaries();
         Ok(())
     }

@@ -324,7 +324,7 @@ fn level_layers<'a>(
             } => ldtk_error(path, rel_at.clone(), *fault),
             other => other,
         })?;
-        let bytes = std::fs::read(&file).map_err(|source| unreadable(&file, source))?;
+        let bytes = crate::io::read_limited(&file).map_err(|source| unreadable(&file, source))?;
         (file, bytes)
     } else {
         let file = folder_of(path).join(&inside);

@@ -16,7 +16,7 @@ pub type TiledFiles = BTreeMap<String, Vec<u8>>;
 /// The disk's error, or `NotFound` for a file `files` lacks (naming the names it has).
 pub(super) fn read_external(file: &Path, map: &Path, files: &TiledFiles) -> io::Result<Vec<u8>> {
     if files.is_empty() {
-        return std::fs::read(file);
+        return crate::io::read_limited(file);
     }
     let dir = map.parent().unwrap_or(Path::new(""));
     let relative = file.strip_prefix(dir).unwrap_or(file);
