@@ -31,12 +31,24 @@ cargo +nightly fuzz build "$@" --codegen-units 16
 logs=../target/fuzz-logs
 rm -rf "$logs"
 mkdir -p "$logs"
+# The dictionary of target $1's text format (dict/), if it has one.
+dictionary() {
+    case $1 in
+    ascii) echo ascii ;;
+    tmx | tsx) echo tiled-xml ;;
+    tmj | tsj) echo tiled-json ;;
+    ldtk) echo ldtk ;;
+    scene) echo scene ;;
+    esac
+}
 # Runs target $1, writing its log and, when it fails, a file saying so.
 run_one() {
     corpus=../target/fuzz-corpus/$1
     mkdir -p "$corpus"
+    dict=$(dictionary "$1")
     if ! cargo +nightly fuzz run "$@" "$corpus" "corpus/$1" -- \
-        -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 >"$logs/$1.log" 2>&1; then
+        -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 \
+        ${dict:+-dict=dict/$dict.dict} >"$logs/$1.log" 2>&1; then
         touch "$logs/$1.failed"
     fi
 }

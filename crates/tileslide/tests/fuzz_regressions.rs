@@ -10,33 +10,19 @@ use std::path::{Path, PathBuf};
 mod api;
 #[path = "../../../fuzz/src/checks.rs"]
 mod checks;
+#[path = "../../../fuzz/src/inputs.rs"]
+mod inputs;
 
 fn fuzz_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz")
 }
 
-/// The files of `dir` (none when it does not exist), sorted.
-fn files(dir: &Path) -> Vec<PathBuf> {
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return Vec::new();
-    };
-    let mut files: Vec<PathBuf> = entries
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.is_file())
-        .collect();
-    files.sort();
-    files
-}
-
 #[test]
 fn every_seed_and_every_kept_crash_input_passes_its_targets_checks() {
     for (name, check) in checks::TARGETS {
-        let seeds = files(&fuzz_dir().join("corpus").join(name));
+        let (seeds, kept) = inputs::seeds_and_kept(&fuzz_dir(), name);
         assert!(!seeds.is_empty(), "fuzz/corpus/{name}/ has no seed");
-        for file in seeds
-            .iter()
-            .chain(&files(&fuzz_dir().join("regressions").join(name)))
-        {
+        for file in seeds.iter().chain(&kept) {
             let data = std::fs::read(file).unwrap();
             let outcome = std::panic::catch_unwind(|| check(&data));
             assert!(
