@@ -40,7 +40,11 @@ impl GridPairs {
         // 10,000 bodies), and with many more, clearing and summing the cells dominates.
         let span = hi - lo;
         let per_box = (span.x.max(largest) * span.y.max(largest) / boxes.len() as f32).sqrt();
-        let mut size = largest
+        // Larger than the largest box by more than a box's corners can round to: a corner's
+        // cell coordinate `(p − lo) · inv` is off by a few units in its last place (up to
+        // 2⁻¹⁰ of a cell for the 4,097 cells a side can have), and a box exactly one cell
+        // tall could then span three rows and miss a box two rows from its own.
+        let mut size = (largest * (1.0 + 1.0 / 256.0))
             .max(0.3 * per_box)
             .max(span.max_element() / 4096.0)
             .max(f32::MIN_POSITIVE);

@@ -433,6 +433,28 @@ mod tests {
     }
 
     #[test]
+    fn a_box_exactly_one_grid_cell_tall_meets_what_its_far_end_touches() {
+        // Found by the `volumes` fuzz target: the grid's cells were exactly as tall as the
+        // tallest box (239/255, from 0 to 239/255 above the lowest box at −4780/255), so
+        // that box's corners fell in cells 18.99999 and 20.00001 after rounding, and the
+        // box it touches at the top, filed in row 20, was two rows away.
+        let tall = 0.9372549f32;
+        let boxes = [
+            Aabb::from_corners(Vec2::new(0.0, -18.745098), Vec2::new(3e-30, -18.325489)),
+            Aabb::from_corners(Vec2::new(0.0, -tall), Vec2::new(3e-30, 3e-30)),
+            Aabb::from_corners(Vec2::ZERO, Vec2::splat(3e-30)),
+            Aabb::from_corners(Vec2::ZERO, Vec2::splat(3e-30)),
+        ];
+        for kind in KINDS {
+            assert_eq!(
+                found(&mut PairFinder::default(), kind, &boxes),
+                brute(&boxes),
+                "{kind:?}"
+            );
+        }
+    }
+
+    #[test]
     fn many_points_on_a_lattice_match_all_pairs() {
         // Zero-size boxes, many sharing a coordinate: the sweep's bands cannot take their
         // height from the boxes.
