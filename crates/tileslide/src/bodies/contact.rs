@@ -29,8 +29,9 @@ const SLIDE_LIFT: f32 = 1e-6;
 /// What a sweep stopped at.
 #[derive(Clone, Copy, Debug)]
 pub(super) enum Obstacle {
-    /// A wall: met on its flat side, or at a rounded end.
-    Wall { flat: bool },
+    /// A wall: met on its flat side, or at a rounded end; by the body's circle `circle`
+    /// (from its first), and found at `wall` in the near walls' pool.
+    Wall { flat: bool, circle: u32, wall: u32 },
     /// Another body, by work index.
     Body(u32),
 }
@@ -151,7 +152,7 @@ pub(super) fn slide(
     // the flat side: a slide off a rounded end is a round obstacle's, which `grazes` lets
     // through.)
     let lean = slid.dot(normal);
-    if matches!(obstacle, Obstacle::Wall { flat: true }) && lean < 0.0 {
+    if matches!(obstacle, Obstacle::Wall { flat: true, .. }) && lean < 0.0 {
         slid + normal * (SLIDE_LIFT * slid.length())
     } else {
         slid
@@ -209,7 +210,11 @@ mod tests {
             slide(
                 blocked,
                 up,
-                Obstacle::Wall { flat: true },
+                Obstacle::Wall {
+                    flat: true,
+                    circle: 0,
+                    wall: 0,
+                },
                 0,
                 SlideMode::FullLength
             ),
@@ -218,7 +223,11 @@ mod tests {
         let t = slide(
             blocked,
             up,
-            Obstacle::Wall { flat: true },
+            Obstacle::Wall {
+                flat: true,
+                circle: 0,
+                wall: 0,
+            },
             0,
             SlideMode::Tangential,
         );
@@ -227,7 +236,11 @@ mod tests {
             slide(
                 blocked,
                 up,
-                Obstacle::Wall { flat: true },
+                Obstacle::Wall {
+                    flat: true,
+                    circle: 0,
+                    wall: 0,
+                },
                 0,
                 SlideMode::Stop
             ),
@@ -237,7 +250,11 @@ mod tests {
             slide(
                 Vec2::new(0.0, -1.0),
                 up,
-                Obstacle::Wall { flat: true },
+                Obstacle::Wall {
+                    flat: true,
+                    circle: 0,
+                    wall: 0,
+                },
                 0,
                 SlideMode::FullLength
             ),

@@ -152,6 +152,11 @@ impl NearWalls {
     pub fn walls(&self, (start, end): (u32, u32)) -> &[Capsule] {
         &self.pool[start as usize..end as usize]
     }
+
+    /// The wall at `index` of the pool (a range's start plus its place in the range).
+    pub fn wall(&self, index: u32) -> &Capsule {
+        &self.pool[index as usize]
+    }
 }
 
 /// Whether disc `reach` grown by `slack` lies inside disc `area`.

@@ -612,7 +612,7 @@ impl Sink for Recorder<'_> {
                 Obstacle::Body(_) if is_head_on(d.blocked, d.normal) => {
                     Response::TieBreak { slide: d.slide }
                 }
-                Obstacle::Wall { flat: false } => Response::RoundedCorner { slide: d.slide },
+                Obstacle::Wall { flat: false, .. } => Response::RoundedCorner { slide: d.slide },
                 _ => Response::Slid { slide: d.slide },
             }
         };
