@@ -32,7 +32,9 @@ fi
 have=$(wasm-bindgen --version 2>/dev/null | awk '{ print $2 }' || true)
 if [ "$have" != "$want" ]; then
     echo "installing wasm-bindgen-cli $want (found: ${have:-none})" >&2
-    cargo install wasm-bindgen-cli --version "$want"
+    # Without its default `rustls-tls` feature: only the test runner's downloads use TLS,
+    # and leaving it out skips building rustls and ring.
+    cargo install wasm-bindgen-cli --version "$want" --no-default-features
 fi
 
 # SIMD128 (every current browser and Node 16.4+ run it) unless TILESLIDE_SIMD=0: the ray
