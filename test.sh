@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every test of tileslide: the Rust workspace's (with the CLI's peer benchmarks, the core
-# crate's serde round trips, and the Bevy plugin's debug drawing and hot reload), the C
+# crate's serde round trips and its `parallel` feature, whose tests compare 1, 2, 3 and 8
+# threads, and the Bevy plugin's debug drawing and hot reload), the C
 # API's in C (examples/c), the Python package's (crates/tileslide-py, pytest), then the web
 # package's (web/: built from crates/tileslide-wasm, tested in Node) and the playground's
 # (web/playground, built with Vite and played in headless Chromium). Installs what the
@@ -32,7 +33,7 @@ part() {
     fi
 }
 part rust cargo test --workspace --no-fail-fast \
-    --features tileslide-cli/peers,tileslide/serde,tileslide-bevy/debug,tileslide-bevy/hot_reload
+    --features tileslide-cli/peers,tileslide/serde,tileslide/parallel,tileslide-bevy/debug,tileslide-bevy/hot_reload
 # The C API's tests and example in C, under AddressSanitizer and UndefinedBehaviorSanitizer
 # (the system's C compiler and make; examples/c/Makefile builds the static library first).
 part c make -C examples/c test

@@ -54,6 +54,11 @@
 //!   system, as built ones are. Also snapshots: [`Bodies`], a [`HitWorld`]'s memory, a
 //!   [`Character`] and [`MapEdits`], saved at a step and restored to go on bit for bit as the run that was
 //!   never interrupted (rollback netcode, replays), and checked as they are read.
+//! - `parallel`: large pieces of work split across the threads of a rayon pool (the global
+//!   pool, or the one a call runs in): ray batches, [`Bodies::resolve`] (in waves of bodies
+//!   that do not meet), the broadphase's scan, [`HitWorld::detect`]'s volume tests, flow
+//!   fields ([`FlowField::new_many`] builds several at once). The answers are the same, bit
+//!   for bit, on any number of threads and without the feature (`docs/parallel.md`).
 //!
 //! ## Quick start
 //!

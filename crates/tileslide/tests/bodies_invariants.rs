@@ -554,9 +554,14 @@ proptest! {
         let b = run(&map, &proposals, STEPS, ResolveConfig::default(), ok)?;
         let sap = ResolveConfig { broadphase: PairMethod::SweepAndPrune, ..ResolveConfig::default() };
         let c = run(&map, &proposals, STEPS, sap, ok)?;
+        // And on any number of threads (the `parallel` feature).
+        let one = generators::on_threads(1, || run(&map, &proposals, STEPS, ResolveConfig::default(), ok))?;
+        let three = generators::on_threads(3, || run(&map, &proposals, STEPS, ResolveConfig::default(), ok))?;
         let bits = |v: &[Vec2]| v.iter().map(|p| (p.x.to_bits(), p.y.to_bits())).collect::<Vec<_>>();
         prop_assert_eq!(bits(&a), bits(&b));
         prop_assert_eq!(bits(&a), bits(&c));
+        prop_assert_eq!(bits(&a), bits(&one));
+        prop_assert_eq!(bits(&a), bits(&three));
     }
 
     /// Bodies with constant moves jam against walls and each other, so the resolver skips
@@ -747,8 +752,11 @@ fn same_as_without_memory(
             let handle = fresh.add(desc).unwrap();
             fresh.propose(handle, b.proposed_move()).unwrap();
         }
-        let expected = fresh.resolve(&map);
-        let got = bodies.resolve(&map);
+        // With the `parallel` feature, the fresh resolver on one thread (in slot order) and
+        // the one with memory on two, three or eight (in waves).
+        let expected = generators::on_threads(1, || fresh.resolve(&map));
+        let threads = [2, 3, 8][step % 3];
+        let got = generators::on_threads(threads, || bodies.resolve(&map));
         prop_assert_eq!(got, expected, "step {}: report", step);
         prop_assert_eq!(
             moves(&bodies),

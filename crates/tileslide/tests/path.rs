@@ -1457,3 +1457,35 @@ fn searches_through_a_shared_grid_on_several_threads_find_what_one_thread_finds(
         }
     }
 }
+
+/// `FlowField::new_many` gives, in order, each field `FlowField::new` gives (and each
+/// error): on dungeon256's 262,144 nodes, on 1, 2, 3 and 8 threads with the `parallel`
+/// feature (the fields built side by side, and each field's open moves split across
+/// threads), on the calling thread without it.
+#[test]
+fn fields_built_together_are_the_fields_built_one_by_one() {
+    let map = tileslide_scenes::dungeon256().to_tile_map().unwrap();
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let goals = [
+        (v(128.5, 128.5), 0.3),
+        (v(f32::NAN, 3.0), 0.3),
+        (v(20.5, 200.5), 0.8),
+        (v(240.0, 17.0), 0.3),
+    ];
+    let one_by_one: Vec<_> = goals
+        .iter()
+        .map(|&(goal, r)| FlowField::new(&nav, &map, goal, r))
+        .collect();
+    assert!(one_by_one[1].is_err());
+    // (An error names the NaN it refused, and NaN equals nothing: errors compare by text.)
+    let text = |fields: &[Result<FlowField, NavError>]| -> Vec<Result<FlowField, String>> {
+        fields
+            .iter()
+            .map(|f| f.clone().map_err(|e| e.to_string()))
+            .collect()
+    };
+    for threads in [1, 2, 3, 8] {
+        let together = generators::on_threads(threads, || FlowField::new_many(&nav, &map, &goals));
+        assert!(text(&together) == text(&one_by_one), "{threads} threads");
+    }
+}

@@ -170,3 +170,52 @@ fn many_rays_fill_many_lanes_and_the_buffer_is_reused() {
     map.cast_rays_into(&[], &filter, &mut out);
     assert!(out.is_empty());
 }
+
+/// A batch large enough to be split across threads (the `parallel` feature) answers every
+/// ray as `cast_ray` does on 1, 2, 3 and 8 threads; without the feature, on one.
+#[test]
+fn a_batch_split_across_threads_answers_as_one_thread() {
+    let map = ascii::parse(
+        "############\n#...#......#\n#.#..../..#\n#....#..=.##\n#.\\.......#\n############",
+        "t.txt",
+        1.0,
+    )
+    .unwrap();
+    // 20,011 rays: several blocks of 4,096 and a ragged last one.
+    let rays: Vec<Ray> = (0..20_011)
+        .map(|i| {
+            let a = i as f32 * 0.618_034 * std::f32::consts::TAU;
+            let from = Vec2::new(1.2 + (i % 9) as f32 * 1.1, 1.3 + (i % 4) as f32 * 0.9);
+            Ray {
+                origin: from,
+                delta: Vec2::new(a.cos(), a.sin()) * (0.5 + (i % 13) as f32),
+            }
+        })
+        .collect();
+    let single: Vec<_> = rays
+        .iter()
+        .map(|ray| bits(&map.cast_ray(*ray, &QueryFilter::default())))
+        .collect();
+    // The default filter takes the batch walk; one for both faces, the single casts (split
+    // across threads too).
+    let one_way_off = QueryFilter::both_sides();
+    let skipping: Vec<_> = rays
+        .iter()
+        .map(|ray| bits(&map.cast_ray(*ray, &one_way_off)))
+        .collect();
+    for threads in [1, 2, 3, 8] {
+        let (batch, other) = generators::on_threads(threads, || {
+            (
+                map.cast_rays(&rays, &QueryFilter::default()),
+                map.cast_rays(&rays, &one_way_off),
+            )
+        });
+        let batch: Vec<_> = batch.iter().map(bits).collect();
+        let other: Vec<_> = other.iter().map(bits).collect();
+        assert!(batch == single, "{threads} threads: the batch walk differs");
+        assert!(
+            other == skipping,
+            "{threads} threads: the single casts differ"
+        );
+    }
+}

@@ -90,3 +90,24 @@ fn the_crowd_is_clean_and_bit_identical_to_the_golden_run() {
         "positions changed: golden hash is now {hash:#018x}"
     );
 }
+
+/// The same run on 1, 2, 3 and 8 threads (the `parallel` feature: resolved in waves of
+/// bodies that do not meet) gives the golden hash every time.
+#[cfg(feature = "parallel")]
+#[test]
+fn the_crowd_is_bit_identical_on_any_number_of_threads() {
+    for threads in [1, 2, 3, 8] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let hash = pool.install(|| {
+            let mut crowd = Crowd::new(2_000);
+            for _ in 0..STEPS {
+                crowd.step();
+            }
+            positions_hash(&crowd.positions())
+        });
+        assert_eq!(hash, GOLDEN, "{threads} threads: {hash:#018x}");
+    }
+}

@@ -110,41 +110,63 @@ impl NearWalls {
         if mask.is_empty() {
             return (0, 0);
         }
-        match self.near[c] {
-            Near::Listed {
-                area,
-                mask: kept,
-                start,
-                end,
-            } if kept == mask && inside(reach, slack, &area) => {
-                return (start, end);
-            }
-            _ => {}
+        if let Some(range) = serves(self.near[c], reach, mask, slack) {
+            return range;
         }
-        let area = Circle::new(
-            reach.center,
-            reach.radius + MARGIN * map.cell_size().min_element(),
-        );
-        let start = self.pool.len();
-        map.capsules_in(&area.aabb(), mask, &mut self.pool);
-        // Only the walls that touch the area itself (a cell its box touches may reach
-        // beyond).
-        let mut kept = start;
-        for k in start..self.pool.len() {
-            if area.overlaps_segment(&self.pool[k].segment) {
-                self.pool[kept] = self.pool[k];
-                kept += 1;
+        self.near[c] = gather(reach, mask, map, &mut self.pool);
+        listed(self.near[c])
+    }
+
+    /// [`around`](Self::around) for every circle `c` for which `mask_of(c)` gives a mask,
+    /// its range into `ranges[c]` (`(0, 0)` for the others); the lists to gather anew are
+    /// gathered on the threads of the rayon pool the call runs in. The pool's order then
+    /// differs from one thread count to another, but every list holds the same walls in the
+    /// same order.
+    #[cfg(feature = "parallel")]
+    pub fn around_all(
+        &mut self,
+        reach: &[Circle],
+        mask_of: impl Fn(usize) -> Option<SegmentFlags> + Sync,
+        slack: f32,
+        map: &TileMap,
+        ranges: &mut Vec<(u32, u32)>,
+    ) {
+        use rayon::prelude::*;
+        let wanted = |c: usize| mask_of(c).filter(|mask| !mask.is_empty());
+        let near = &self.near;
+        // Each task gathers into a pool of its own (the circles listed anew, and their
+        // walls), merged below.
+        type Gathered = (Vec<(u32, Near)>, Vec<Capsule>);
+        let fresh: Vec<Gathered> = (0..reach.len())
+            .into_par_iter()
+            .with_min_len(256)
+            .fold(
+                || (Vec::new(), Vec::new()),
+                |(mut lists, mut pool), c| {
+                    if let Some(mask) = wanted(c)
+                        && serves(near[c], &reach[c], mask, slack).is_none()
+                    {
+                        lists.push((c as u32, gather(&reach[c], mask, map, &mut pool)));
+                    }
+                    (lists, pool)
+                },
+            )
+            .collect();
+        for (lists, pool) in fresh {
+            let offset = self.pool.len() as u32;
+            self.pool.extend_from_slice(&pool);
+            for (c, mut list) in lists {
+                if let Near::Listed { start, end, .. } = &mut list {
+                    (*start, *end) = (*start + offset, *end + offset);
+                }
+                self.near[c as usize] = list;
             }
         }
-        self.pool.truncate(kept);
-        let (start, end) = (start as u32, kept as u32);
-        self.near[c] = Near::Listed {
-            area,
-            mask,
-            start,
-            end,
-        };
-        (start, end)
+        ranges.clear();
+        ranges.extend((0..reach.len()).map(|c| match wanted(c) {
+            Some(_) => listed(self.near[c]),
+            None => (0, 0),
+        }));
     }
 
     /// The walls at a range [`Self::around`] returned.
@@ -156,6 +178,55 @@ impl NearWalls {
     /// The wall at `index` of the pool (a range's start plus its place in the range).
     pub fn wall(&self, index: u32) -> &Capsule {
         &self.pool[index as usize]
+    }
+}
+
+/// The range of a kept list, if it holds the walls with one of `mask`'s flags near the reach
+/// disc `reach` (see [`NearWalls::around`]).
+#[inline]
+fn serves(near: Near, reach: &Circle, mask: SegmentFlags, slack: f32) -> Option<(u32, u32)> {
+    match near {
+        Near::Listed {
+            area,
+            mask: kept,
+            start,
+            end,
+        } if kept == mask && inside(reach, slack, &area) => Some((start, end)),
+        _ => None,
+    }
+}
+
+/// The range of a list (`(0, 0)` for none).
+fn listed(near: Near) -> (u32, u32) {
+    match near {
+        Near::Listed { start, end, .. } => (start, end),
+        Near::Unknown => (0, 0),
+    }
+}
+
+/// Gathers into `pool` the walls with one of `mask`'s flags that touch the reach disc
+/// `reach` grown by the margin, in the map's order: the new list.
+fn gather(reach: &Circle, mask: SegmentFlags, map: &TileMap, pool: &mut Vec<Capsule>) -> Near {
+    let area = Circle::new(
+        reach.center,
+        reach.radius + MARGIN * map.cell_size().min_element(),
+    );
+    let start = pool.len();
+    map.capsules_in(&area.aabb(), mask, pool);
+    // Only the walls that touch the area itself (a cell its box touches may reach beyond).
+    let mut kept = start;
+    for k in start..pool.len() {
+        if area.overlaps_segment(&pool[k].segment) {
+            pool[kept] = pool[k];
+            kept += 1;
+        }
+    }
+    pool.truncate(kept);
+    Near::Listed {
+        area,
+        mask,
+        start: start as u32,
+        end: kept as u32,
     }
 }
 

@@ -38,6 +38,9 @@ use super::trace::{Decision, Recorder, Sink};
 use crate::geometry::{Aabb, Circle, Segment, SweepHit, in_range};
 use crate::tiles::TileMap;
 
+#[cfg(feature = "parallel")]
+mod waves;
+
 /// Shortest safe part of a move that is taken, as a fraction of the gap (see
 /// `collide_and_slide`).
 const MIN_STEP: f32 = 0.125;
@@ -82,6 +85,9 @@ pub(super) struct Resolver {
     wall_ranges: Vec<(u32, u32)>,
     /// The last resolve, to skip bodies blocked in place again.
     settled: Settled,
+    /// The resolve on many threads.
+    #[cfg(feature = "parallel")]
+    waves: waves::Waves,
     /// Bodies the last resolve skipped (blocked in place again), for the tests below.
     #[cfg(test)]
     skipped: usize,
@@ -140,6 +146,13 @@ impl Resolver {
         {
             self.skipped = 0;
         }
+        // On many threads, in waves of bodies that do not meet (see `waves`): the same
+        // result. A traced resolve stays on the calling thread, in slot order.
+        #[cfg(feature = "parallel")]
+        if sink.is_none() && rayon::current_num_threads() > 1 {
+            self.resolve_in_waves(bodies, config, map, &mut report);
+            return report;
+        }
         for (b, body) in bodies.iter_mut().enumerate() {
             let (start, motion) = (self.position[b], self.motion[b]);
             if motion == Vec2::ZERO {
@@ -158,8 +171,12 @@ impl Resolver {
             }
             let before = report;
             sink.begin(b as u32, start, motion);
-            self.collide_and_slide(b as u32, config, gap, map, &mut report, &mut sink);
-            let end = self.position[b];
+            let mut ranges = std::mem::take(&mut self.wall_ranges);
+            self.walls_near(b, gap, map, &mut ranges);
+            let end =
+                self.collide_and_slide(b as u32, &ranges, config, gap, &mut report, &mut sink);
+            self.wall_ranges = ranges;
+            self.position[b] = end;
             sink.end(b as u32, end);
             body.resolved = end - start;
             report.moving += 1;
@@ -255,26 +272,32 @@ impl Resolver {
         );
     }
 
-    /// Moves body `b` by its proposed move with collide and slide, updating its position.
+    /// The walls near each circle of body `b`, into `ranges` (one range of `near` per
+    /// circle): once a step, as the reach disc holds every position the body can take this
+    /// step (slides never lengthen the remainder).
+    fn walls_near(&mut self, b: usize, gap: f32, map: &TileMap, ranges: &mut Vec<(u32, u32)>) {
+        ranges.clear();
+        let mask = self.filter[b].walls;
+        for c in self.first_circle[b] as usize..self.first_circle[b + 1] as usize {
+            ranges.push(self.near.around(c, &self.reach_discs[c], mask, gap, map));
+        }
+    }
+
+    /// Where body `b` ends when it moves by its proposed move with collide and slide from
+    /// where it stands, against the walls at `ranges` of `near` (one range per circle) and
+    /// its neighbours where they stand.
     fn collide_and_slide<S: Sink>(
-        &mut self,
+        &self,
         b: u32,
+        ranges: &[(u32, u32)],
         config: &ResolveConfig,
         gap: f32,
-        map: &TileMap,
         report: &mut ResolveReport,
         sink: &mut S,
-    ) {
+    ) -> Vec2 {
         let bi = b as usize;
-        let circles = self.first_circle[bi] as usize..self.first_circle[bi + 1] as usize;
-        // The walls near each circle, once: the reach disc holds every position the body
-        // can take this step (slides never lengthen the remainder).
-        self.wall_ranges.clear();
-        let mask = self.filter[bi].walls;
-        for c in circles.clone() {
-            let range = self.near.around(c, &self.reach_discs[c], mask, gap, map);
-            self.wall_ranges.push(range);
-        }
+        let first = self.first_circle[bi] as usize;
+        let mut position = self.position[bi];
         let mut remaining = self.motion[bi];
         // The contact the remaining motion slides along (none for the move as proposed).
         let mut along: Option<Along> = None;
@@ -282,11 +305,12 @@ impl Resolver {
             if remaining == Vec2::ZERO {
                 break;
             }
-            sink.pass(pass, self.position[bi], remaining);
-            let Some((hit, obstacle, id)) = self.first_contact(b, remaining, gap, sink) else {
+            sink.pass(pass, position, remaining);
+            let Some((hit, obstacle, id)) =
+                self.first_contact(b, position, ranges, remaining, gap, sink)
+            else {
                 sink.free();
-                self.position[bi] = off_contact(self.position[bi], remaining, along);
-                return;
+                return off_contact(position, remaining, along);
             };
             report.contact_count += 1;
             // A safe part shorter than a fraction of the gap is not taken: rounding the
@@ -296,7 +320,7 @@ impl Resolver {
             let step = remaining * hit.t;
             let taken = step.length() >= gap * MIN_STEP;
             let kept = Vec2::new(keep_if(taken, step.x), keep_if(taken, step.y));
-            self.position[bi] = off_contact(self.position[bi], kept, along);
+            position = off_contact(position, kept, along);
             if pass == config.passes {
                 if sink.on() {
                     let decision = Decision {
@@ -311,7 +335,7 @@ impl Resolver {
                     sink.decide(id, taken, decision);
                 }
                 report.cut_short += 1;
-                return;
+                return position;
             }
             let blocked = remaining * (1.0 - hit.t);
             remaining = slide(blocked, hit.normal, obstacle, b, config.slide);
@@ -319,7 +343,7 @@ impl Resolver {
                 normal: hit.normal,
                 wall: match obstacle {
                     Obstacle::Wall { circle, wall, .. } => {
-                        let c = &self.circles[circles.start + circle as usize];
+                        let c = &self.circles[first + circle as usize];
                         Some(Touch {
                             segment: self.near.wall(wall).segment,
                             offset: c.offset,
@@ -333,7 +357,7 @@ impl Resolver {
             // range: a move ends within it (checked by `propose`), and every later position
             // lies on a straight path between two points within it (the square is convex,
             // and rounding is monotone).
-            let out_of_range = !in_range(self.position[bi] + remaining);
+            let out_of_range = !in_range(position + remaining);
             if sink.on() {
                 let decision = Decision {
                     blocked,
@@ -350,19 +374,21 @@ impl Resolver {
                 remaining = Vec2::ZERO;
             }
         }
+        position
     }
 
-    /// The first contact of body `b` moving by `motion` from where it is now, against the
-    /// walls near it and its neighbours where they are now.
+    /// The first contact of body `b` moving by `motion` from `origin`, against the walls
+    /// at `ranges` and its neighbours where they are now.
     fn first_contact<S: Sink>(
         &self,
         b: u32,
+        origin: Vec2,
+        ranges: &[(u32, u32)],
         motion: Vec2,
         gap: f32,
         sink: &mut S,
     ) -> Option<(SweepHit, Obstacle, S::Id)> {
         let bi = b as usize;
-        let origin = self.position[bi];
         // Obstacles farther than the move's length plus the contact radius are out of reach:
         // the cheap test that lets a free body skip almost every sweep.
         let reach = motion.length();
@@ -378,7 +404,7 @@ impl Resolver {
             .enumerate()
         {
             let center = origin + c.offset;
-            let range = self.wall_ranges[k];
+            let range = ranges[k];
             for (w, wall) in (range.0..).zip(self.near.walls(range)) {
                 let distance2 = wall.segment.distance_squared_to(center);
                 let radius = band(distance2, c.radius, gap);

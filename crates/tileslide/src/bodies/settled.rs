@@ -40,6 +40,20 @@ struct Memory {
     stayed: bool,
 }
 
+impl Memory {
+    /// A resolve from `start` by `motion` to `end`, with its contacts.
+    fn of(start: Vec2, motion: Vec2, end: Vec2, contacts: usize, cut_short: bool) -> Self {
+        Self {
+            start,
+            motion,
+            end,
+            contacts: u32::try_from(contacts).unwrap_or(u32::MAX),
+            cut_short,
+            stayed: motion != Vec2::ZERO && end == start,
+        }
+    }
+}
+
 const UNKNOWN: Memory = Memory {
     start: Vec2::NAN,
     motion: Vec2::NAN,
@@ -97,14 +111,21 @@ impl Settled {
         motion: Vec2,
         report: &mut ResolveReport,
     ) -> bool {
+        let kept = self.kept(b, start, motion);
+        if let Some((contacts, cut_short)) = kept {
+            report.moving += 1;
+            report.contact_count += contacts;
+            report.cut_short += usize::from(cut_short);
+        }
+        kept.is_some()
+    }
+
+    /// Whether body `b` stays as [`stays`](Self::stays) tells, without counting it: if so,
+    /// its last resolve's contacts and whether it was cut short.
+    pub fn kept(&self, b: usize, start: Vec2, motion: Vec2) -> Option<(usize, bool)> {
         let m = &self.bodies[b];
         let stays = m.stayed && !self.disturbed[b] && m.start == start && m.motion == motion;
-        if stays {
-            report.moving += 1;
-            report.contact_count += m.contacts as usize;
-            report.cut_short += usize::from(m.cut_short);
-        }
-        stays
+        stays.then_some((m.contacts as usize, m.cut_short))
     }
 
     /// Remembers body `b`'s resolve: from `start` by the proposed `motion` to `end`.
@@ -117,17 +138,37 @@ impl Settled {
         contacts: usize,
         cut_short: bool,
     ) {
-        self.bodies[b] = Memory {
-            start,
-            motion,
-            end,
-            contacts: u32::try_from(contacts).unwrap_or(u32::MAX),
-            cut_short,
-            stayed: motion != Vec2::ZERO && end == start,
-        };
+        self.bodies[b] = Memory::of(start, motion, end, contacts, cut_short);
     }
 
     /// Remembers that body `b` was not resolved (no proposed move): it stays at `at`.
+    /// [`remember`](Self::remember) for every body `b` for which `each(b)` gives what its
+    /// resolve saw and gave (`(start, motion, end, contacts, cut_short)`), and flags for the
+    /// next step each body that stayed for which `disturbed_next(b)` holds (the others are
+    /// resolved next step whatever their flag); on the threads of the current rayon pool,
+    /// each body's entries written by one task.
+    #[cfg(feature = "parallel")]
+    pub fn remember_each(
+        &mut self,
+        each: impl Fn(usize) -> Option<(Vec2, Vec2, Vec2, usize, bool)> + Sync,
+        disturbed_next: impl Fn(usize) -> bool + Sync,
+    ) {
+        use rayon::prelude::*;
+        self.bodies
+            .par_iter_mut()
+            .zip(self.disturbed_next.par_iter_mut())
+            .enumerate()
+            .with_min_len(1024)
+            .for_each(|(b, (memory, next))| {
+                if let Some((start, motion, end, contacts, cut_short)) = each(b) {
+                    *memory = Memory::of(start, motion, end, contacts, cut_short);
+                }
+                if memory.stayed && !*next {
+                    *next = disturbed_next(b);
+                }
+            });
+    }
+
     pub fn remember_still(&mut self, b: usize, at: Vec2) {
         self.bodies[b] = Memory { end: at, ..UNKNOWN };
     }

@@ -25,6 +25,9 @@ pub(super) struct GridPairs {
     visit: Vec<u32>,
     cells: Vec<u32>,
     staged: Vec<Vec4>,
+    /// The scan on many threads.
+    #[cfg(feature = "parallel")]
+    parts: super::Parts,
 }
 
 impl GridPairs {
@@ -108,17 +111,31 @@ impl GridPairs {
         // Each pair once: a box meets the later boxes of its own cell and all boxes of the
         // "forward" neighbours: the cell to the right (together with the rest of its own
         // cell, one run) and the three cells below (another run).
-        let mut n = pairs.len();
         let (starts, candidates) = (&self.starts, &self.candidates);
-        for (p, &cell) in self.cells_sorted.iter().enumerate() {
-            let cell = cell as usize;
-            let (lower, id) = (lower(candidates.uppers[p]), candidates.ids[p]);
-            let beside = p + 1..starts[cell + 2] as usize;
-            let below = starts[cell + stride - 1] as usize..starts[cell + stride + 2] as usize;
-            candidates.emit(lower, id, beside, pairs, &mut n);
-            candidates.emit(lower, id, below, pairs, &mut n);
+        let cells_sorted = &self.cells_sorted;
+        let scan = |run: std::ops::Range<usize>, pairs: &mut Vec<(u32, u32)>| {
+            let mut n = pairs.len();
+            for (p, &cell) in run.clone().zip(&cells_sorted[run]) {
+                let cell = cell as usize;
+                let (lower, id) = (lower(candidates.uppers[p]), candidates.ids[p]);
+                let beside = p + 1..starts[cell + 2] as usize;
+                let below = starts[cell + stride - 1] as usize..starts[cell + stride + 2] as usize;
+                candidates.emit(lower, id, beside, pairs, &mut n);
+                candidates.emit(lower, id, below, pairs, &mut n);
+            }
+            pairs.truncate(n);
+        };
+        let whole = 0..boxes.len();
+        #[cfg(feature = "parallel")]
+        if super::Parts::worth(boxes.len()) {
+            // Any box may start a run.
+            self.parts.cut(boxes.len(), whole.clone());
+            self.parts.scan(pairs, scan);
+        } else {
+            scan(whole, pairs);
         }
-        pairs.truncate(n);
+        #[cfg(not(feature = "parallel"))]
+        scan(whole, pairs);
         self.visit.clear();
         self.visit
             .extend_from_slice(&self.candidates.ids[..boxes.len()]);

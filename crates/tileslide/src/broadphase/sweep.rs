@@ -46,6 +46,9 @@ pub(super) struct SweepPairs {
     fill: Vec<u32>,
     next: Vec<(u64, u32)>,
     moved: Vec<(u64, u32)>,
+    /// The sweep on many threads.
+    #[cfg(feature = "parallel")]
+    parts: super::Parts,
 }
 
 impl SweepPairs {
@@ -92,12 +95,29 @@ impl SweepPairs {
         }
         // Padding, so that a block never reads past the end (see `skip`).
         self.xs.extend([u32::MAX; BLOCK]);
+        #[cfg(feature = "parallel")]
+        if super::Parts::worth(count) {
+            // A run may start at any band's first box.
+            let mut parts = std::mem::take(&mut self.parts);
+            parts.cut(count, self.band_starts(count));
+            parts.scan(pairs, |run, pairs| self.scan(run, pairs));
+            self.parts = parts;
+            return;
+        }
+        self.scan(0..count, pairs);
+    }
+
+    /// Appends the pairs of the bands at `run` (of the boxes in sweep order; it starts at a
+    /// band's first box and ends at one's last) to `pairs`: within each band, and across it
+    /// and the band above.
+    fn scan(&self, run: Range<usize>, pairs: &mut Vec<(u32, u32)>) {
         let mut n = pairs.len();
-        let mut start = 0;
-        while start < count {
+        let mut start = run.start;
+        while start < run.end {
             let band = self.order[start].0 >> 32;
             let end = start + self.order[start..].partition_point(|&(key, _)| key >> 32 == band);
             self.sweep(start..end, pairs, &mut n);
+            let count = self.order.len();
             if end < count && self.order[end].0 >> 32 == band + 1 {
                 let above = self.order[end..].partition_point(|&(key, _)| key >> 32 == band + 1);
                 self.sweep_across(start..end, end..end + above, pairs, &mut n);
@@ -105,6 +125,21 @@ impl SweepPairs {
             start = end;
         }
         pairs.truncate(n);
+    }
+
+    /// The first box of every band in sweep order, in order.
+    #[cfg(feature = "parallel")]
+    fn band_starts(&self, count: usize) -> impl Iterator<Item = usize> + '_ {
+        let mut start = 0;
+        std::iter::from_fn(move || {
+            if start >= count {
+                return None;
+            }
+            let at = start;
+            let band = self.order[start].0 >> 32;
+            start += self.order[start..].partition_point(|&(key, _)| key >> 32 == band);
+            Some(at)
+        })
     }
 
     /// How many buckets the last sort by band used.

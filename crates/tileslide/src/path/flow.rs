@@ -29,6 +29,14 @@ pub(super) const TO_GOAL: u8 = u8::MAX;
 /// How many next moves an agent looks ahead along its way.
 const LOOKAHEAD: usize = 8;
 
+/// The moves out of (low byte) and into (high byte) node `n` of `nav` open for circles
+/// that need clearance `need`.
+fn open_moves_of(nav: &NavGrid, need: u16, n: usize) -> u16 {
+    let (i, j) = nav.table.lattice.coords(n);
+    let out = open_moves(&nav.table, n, i, j, need);
+    u16::from(out) | u16::from(incoming_moves(&nav.table, n, i, j, need)) << 8
+}
+
 /// How a point reaches the goal of a field.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 enum Entry {
@@ -110,21 +118,54 @@ impl FlowField {
                 }
             }
         }
-        for n in 0..self.open.len() {
-            self.open[n] = if self.distance[n] == UNREACHED {
+        let moves = |n: usize, open: &mut u16| {
+            *open = if self.distance[n] == UNREACHED {
                 0
             } else {
-                self.open_moves(nav, n)
+                open_moves_of(nav, self.need, n)
             };
+        };
+        let mut open = std::mem::take(&mut self.open);
+        #[cfg(feature = "parallel")]
+        {
+            use rayon::prelude::*;
+            // Each node's own: the same on any number of threads.
+            open.par_iter_mut()
+                .enumerate()
+                .with_min_len(4096)
+                .for_each(|(n, open)| moves(n, open));
         }
+        #[cfg(not(feature = "parallel"))]
+        for (n, open) in open.iter_mut().enumerate() {
+            moves(n, open);
+        }
+        self.open = open;
+    }
+
+    /// The fields of several goals, each `(goal, radius)` as [`FlowField::new`] makes it,
+    /// in order. With the `parallel` feature they are built on the threads of the current
+    /// rayon pool (the global pool unless called inside `rayon::ThreadPool::install`), each
+    /// the same field, bit for bit, as `new` builds; without it, one after another.
+    #[must_use]
+    pub fn new_many(
+        nav: &NavGrid,
+        map: &TileMap,
+        goals: &[(Vec2, f32)],
+    ) -> Vec<Result<Self, NavError>> {
+        let build = |&(goal, radius): &(Vec2, f32)| Self::new(nav, map, goal, radius);
+        #[cfg(feature = "parallel")]
+        {
+            use rayon::prelude::*;
+            goals.par_iter().map(build).collect()
+        }
+        #[cfg(not(feature = "parallel"))]
+        goals.iter().map(build).collect()
     }
 
     /// The moves out of (low byte) and into (high byte) node `n` open for the field's
     /// radius on `nav`.
     fn open_moves(&self, nav: &NavGrid, n: usize) -> u16 {
-        let (i, j) = nav.table.lattice.coords(n);
-        let out = open_moves(&nav.table, n, i, j, self.need);
-        u16::from(out) | u16::from(incoming_moves(&nav.table, n, i, j, self.need)) << 8
+        open_moves_of(nav, self.need, n)
     }
 
     /// The goal.

@@ -156,6 +156,9 @@ pub enum Refusal {
 /// Where a `detect` writes what it does: nowhere for plain `detect` (every call compiles
 /// away), into a [`DetectTrace`] for `detect_traced`.
 pub(super) trait HitSink {
+    /// Whether anything is recorded at all (a traced `detect` stays on one thread).
+    #[cfg(feature = "parallel")]
+    fn records(&self) -> bool;
     /// Whether the pair of these owners is recorded; the other calls come only for pairs
     /// it wants.
     fn wants(&self, attacker: Owner, victim: Owner) -> bool;
@@ -169,6 +172,11 @@ pub(super) trait HitSink {
 pub(super) struct NoTrace;
 
 impl HitSink for NoTrace {
+    #[cfg(feature = "parallel")]
+    #[inline(always)]
+    fn records(&self) -> bool {
+        false
+    }
     #[inline(always)]
     fn wants(&self, _: Owner, _: Owner) -> bool {
         false
@@ -186,6 +194,10 @@ pub(super) struct Recorder<'a> {
 }
 
 impl HitSink for Recorder<'_> {
+    #[cfg(feature = "parallel")]
+    fn records(&self) -> bool {
+        true
+    }
     fn wants(&self, attacker: Owner, victim: Owner) -> bool {
         self.trace.wants(attacker, victim)
     }

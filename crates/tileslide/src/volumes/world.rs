@@ -440,11 +440,48 @@ impl HitWorld {
         self.pairs.clear();
         self.finder
             .find(self.broadphase, &self.boxes, &mut self.pairs);
+        #[cfg(feature = "parallel")]
+        if !sink.records()
+            && self.pairs.len() >= 2 * PAIRS_PER_TASK
+            && rayon::current_num_threads() > 1
+        {
+            self.detect_split(rule);
+            return;
+        }
         self.pairs.sort_unstable();
         for k in 0..self.pairs.len() {
             let (i, j) = self.pairs[k];
             self.hit(i, j, rule, sink);
             self.hit(j, i, rule, sink);
+        }
+    }
+
+    /// The untraced `detect_into` with the volumes of every pair tested on the threads of
+    /// the current rayon pool (the `parallel` feature), in both directions; then, in pair
+    /// order on the calling thread, what depends on order: swings that already hit, the
+    /// rule, the events. The tests are pure, so the events are those of one thread, in the
+    /// same order (a pair a swing already hit is tested for nothing).
+    #[cfg(feature = "parallel")]
+    fn detect_split(&mut self, rule: &mut impl HitRule) {
+        use rayon::prelude::*;
+        self.pairs.par_sort_unstable();
+        let this = &*self;
+        let met: Vec<[Option<Meeting>; 2]> = self
+            .pairs
+            .par_iter()
+            .with_min_len(PAIRS_PER_TASK)
+            .map(|&(i, j)| {
+                let mut none = NoTrace;
+                [this.meeting(i, j, &mut none), this.meeting(j, i, &mut none)]
+            })
+            .collect();
+        for (k, met) in met.into_iter().enumerate() {
+            let (i, j) = self.pairs[k];
+            for ((a, v), meeting) in [(i, j), (j, i)].into_iter().zip(met) {
+                if !self.swing_already_hit(a, v, &mut NoTrace) {
+                    self.record(a, v, meeting, rule, &mut NoTrace);
+                }
+            }
         }
     }
 
@@ -463,18 +500,37 @@ impl HitWorld {
     /// `a` attacking `v`: the first attack volume of `a` that meets a vulnerability volume
     /// of `v` accepting one of its types, at the first of those it touches.
     fn hit(&mut self, a: u32, v: u32, rule: &mut impl HitRule, sink: &mut impl HitSink) {
+        if self.swing_already_hit(a, v, sink) {
+            return;
+        }
+        let meeting = self.meeting(a, v, sink);
+        self.record(a, v, meeting, rule, sink);
+    }
+
+    /// Whether `a`'s swing (if it swings) already hit `v`'s owner: then `a` does not attack
+    /// `v` again.
+    fn swing_already_hit(&self, a: u32, v: u32, sink: &mut impl HitSink) -> bool {
+        let (ea, ev) = (&self.entries[a as usize], &self.entries[v as usize]);
+        let Some(swing) = ea.object.swing else {
+            return false;
+        };
+        let hit = self.swung.contains(&(swing, ev.object.owner));
+        let owners = (ea.object.owner, ev.object.owner);
+        if hit && sink.wants(owners.0, owners.1) {
+            let ids = (ObjectId(a), ObjectId(v));
+            sink.outcome(ids, owners, PairOutcome::SwingAlreadyHit { swing });
+        }
+        hit
+    }
+
+    /// The volumes' part of `a` attacking `v`, which reads nothing but the two objects: the
+    /// first attack volume of `a` that meets a vulnerability volume of `v` accepting one of
+    /// its types, and when and where it first touches one; `None` (told to `sink`, with
+    /// why) when none meets.
+    fn meeting(&self, a: u32, v: u32, sink: &mut impl HitSink) -> Option<Meeting> {
         let (ea, ev) = (&self.entries[a as usize], &self.entries[v as usize]);
         let owners = (ea.object.owner, ev.object.owner);
         let traced = sink.wants(owners.0, owners.1);
-        let ids = (ObjectId(a), ObjectId(v));
-        if let Some(swing) = ea.object.swing
-            && self.swung.contains(&(swing, ev.object.owner))
-        {
-            if traced {
-                sink.outcome(ids, owners, PairOutcome::SwingAlreadyHit { swing });
-            }
-            return;
-        }
         // Relative motion: in the victim's frame the attacker moves by the difference.
         let motion = ea.object.motion - ev.object.motion;
         let attacks = &self.attack[ea.attack.0 as usize..ea.attack.1 as usize];
@@ -498,9 +554,10 @@ impl HitWorld {
         });
         let Some((attack, k, dealt)) = found else {
             if traced {
+                let ids = (ObjectId(a), ObjectId(v));
                 sink.outcome(ids, owners, missed(attacks, vulnerable));
             }
-            return;
+            return None;
         };
         let (hit_type, contact) = first_contact(
             ea,
@@ -509,8 +566,31 @@ impl HitWorld {
             (&vulnerable[k], dealt),
             &vulnerable[k + 1..],
         );
+        Some(Meeting {
+            hit_type,
+            t: contact.t,
+            point: contact.point,
+        })
+    }
+
+    /// What follows `a` attacking `v` once its volumes met (or not): the rule's word, the
+    /// swing's memory and the event.
+    fn record(
+        &mut self,
+        a: u32,
+        v: u32,
+        meeting: Option<Meeting>,
+        rule: &mut impl HitRule,
+        sink: &mut impl HitSink,
+    ) {
+        let Some(Meeting { hit_type, t, point }) = meeting else {
+            return;
+        };
+        let (ea, ev) = (&self.entries[a as usize], &self.entries[v as usize]);
+        let owners = (ea.object.owner, ev.object.owner);
+        let ids = (ObjectId(a), ObjectId(v));
         let accepted = rule.accept(&ea.object, &ev.object, hit_type);
-        if traced {
+        if sink.wants(owners.0, owners.1) {
             let event = self.events.len();
             let outcome = if accepted {
                 PairOutcome::Accepted { event }
@@ -530,11 +610,24 @@ impl HitWorld {
             victim_owner: owners.1,
             hit_type,
             accepted,
-            t: contact.t,
-            point: contact.point,
+            t,
+            point,
         });
     }
 }
+
+/// Where an attack met a victim: the type dealt, and when and where they first touch.
+#[derive(Clone, Copy, Debug)]
+struct Meeting {
+    hit_type: HitTypes,
+    t: f32,
+    point: Vec2,
+}
+
+/// Pairs a task of [`HitWorld::detect`] tests at least, with the `parallel` feature (and
+/// fewer than two tasks' worth stay on the calling thread).
+#[cfg(feature = "parallel")]
+const PAIRS_PER_TASK: usize = 512;
 
 /// Why no attack volume of `attacks` met a volume of `vulnerable`.
 fn missed(attacks: &[Volume], vulnerable: &[Volume]) -> PairOutcome {

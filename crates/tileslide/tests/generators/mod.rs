@@ -138,3 +138,26 @@ pub fn small_map_at(
         },
     )
 }
+
+/// Runs `work` in a rayon pool of `threads` threads (one pool per size, made once), so that
+/// with the `parallel` feature the same work can be compared across thread counts; without
+/// it, on the calling thread.
+pub fn on_threads<R: Send>(threads: usize, work: impl FnOnce() -> R + Send) -> R {
+    #[cfg(feature = "parallel")]
+    {
+        use std::sync::OnceLock;
+        static POOLS: [OnceLock<rayon::ThreadPool>; 9] = [const { OnceLock::new() }; 9];
+        let pool = POOLS[threads.clamp(1, 8)].get_or_init(|| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads.clamp(1, 8))
+                .build()
+                .unwrap()
+        });
+        pool.install(work)
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        let _ = threads;
+        work()
+    }
+}

@@ -1,0 +1,287 @@
+//! The resolve on many threads (the `parallel` feature), with the result of one thread, bit
+//! for bit.
+//!
+//! Resolving a body reads the walls near it, its own start and move, and the positions of
+//! its neighbours (the rows of `neighbours`: the bodies whose reach discs touch its own):
+//! in slot order, those in lower slots where they ended, the others where they started.
+//! Nothing else: two bodies that are not neighbours never read each other. So the moving
+//! bodies are put in waves: a body's wave is one past the last wave of its moving
+//! neighbours in lower slots (wave 0 if it has none). Bodies of one wave are never
+//! neighbours, and when a wave runs, each of its bodies' lower neighbours has ended (an
+//! earlier wave) and each higher one has not started (a later wave): it reads exactly what
+//! it reads in slot order. The bodies of a wave are resolved on every thread, each into an
+//! [`Outcome`]; the calling thread then writes each one's end and the report's counts.
+//! What no later body reads (the resolved moves, the settled memory, the flags that disturb
+//! settled bodies next step) is written once every wave has run, again on every thread.
+//!
+//! The walls near every moving circle are gathered first, on every thread, into the same
+//! memory the sequential resolve keeps (`NearWalls::around_all`); the waves only read it.
+//!
+//! There are as many waves as the longest chain of neighbours in increasing slot order.
+//! Slots in no spatial order, as a crowd spawned at random has them, give short chains
+//! (8 or 9 waves a step for the crowd scene's 50,000 circles, 4 or 5 for
+//! 10,000); bodies added one after another along a
+//! packed queue give one body a wave, and the resolve then runs one body at a time, with
+//! the same result, no faster than on one thread.
+
+use glam::Vec2;
+use rayon::prelude::*;
+
+use super::{Resolver, WorkCircle};
+use crate::bodies::body::Body;
+use crate::bodies::config::{ResolveConfig, ResolveReport};
+use crate::bodies::neighbours::Neighbours;
+use crate::bodies::trace::Recorder;
+use crate::tiles::TileMap;
+
+/// Bodies a task resolves at least: a task hand-over costs about as much as resolving a
+/// free body.
+const MIN_BODIES_PER_TASK: usize = 32;
+
+/// Wave of a body that does not move.
+const STILL: u32 = u32::MAX;
+
+/// What resolving one body of a wave found.
+#[derive(Clone, Copy, Debug, Default)]
+struct Outcome {
+    start: Vec2,
+    end: Vec2,
+    contacts: usize,
+    cut_short: bool,
+    /// Skipped as blocked in place again (see `settled`): `end` is its start.
+    stayed: bool,
+}
+
+/// The waves' buffers, kept between resolves.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Waves {
+    /// Per body, its wave ([`STILL`] for a body without a move).
+    wave: Vec<u32>,
+    /// The moving bodies by wave, in slot order within a wave.
+    order: Vec<u32>,
+    /// Per wave, where it starts in `order`; one more entry at the end.
+    starts: Vec<u32>,
+    /// Per wave, the next free place in `order` while filling it.
+    next: Vec<u32>,
+    /// Per circle, its range of `near`'s walls (`(0, 0)` for still bodies).
+    ranges: Vec<(u32, u32)>,
+    /// The outcomes of the wave under way, in its order.
+    outcomes: Vec<Outcome>,
+    /// Per body, its outcome (for moving bodies), and whether it moved.
+    done: Vec<Outcome>,
+    moved: Vec<bool>,
+}
+
+impl Resolver {
+    /// Resolves every body in waves, into `report`; `load`, the neighbours and the memories'
+    /// `begin` have run.
+    ///
+    /// Between waves, the calling thread only writes each body's end and whether it moved;
+    /// what the sequential resolve writes as it goes and later bodies do not read (the
+    /// resolved moves, the settled memory, the flags for the next step) is written at the
+    /// end, on every thread. A body that moved disturbs its neighbours (see `settled`): the
+    /// ones after it in slot order this step, which a body checks at its turn by reading its
+    /// lower neighbours' `moved`, and the ones before it next step, flagged at the end.
+    pub(super) fn resolve_in_waves(
+        &mut self,
+        bodies: &mut [&mut Body],
+        config: &ResolveConfig,
+        map: &TileMap,
+        report: &mut ResolveReport,
+    ) {
+        let gap = config.gap;
+        let n = bodies.len();
+        let mut waves = std::mem::take(&mut self.waves);
+        for (b, &motion) in self.motion.iter().enumerate() {
+            if motion == Vec2::ZERO {
+                self.settled.remember_still(b, self.position[b]);
+            }
+        }
+        let (circles, motion, filter) = (&self.circles, &self.motion, &self.filter);
+        self.near.around_all(
+            &self.reach_discs,
+            |c| {
+                let b = circles[c].body as usize;
+                (motion[b] != Vec2::ZERO).then_some(filter[b].walls)
+            },
+            gap,
+            map,
+            &mut waves.ranges,
+        );
+        waves.schedule(self);
+        waves.moved.clear();
+        waves.moved.resize(n, false);
+        waves.done.resize(n, Outcome::default());
+        for w in 0..waves.starts.len().saturating_sub(1) {
+            let wave = &waves.order[waves.starts[w] as usize..waves.starts[w + 1] as usize];
+            let this = &*self;
+            let (ranges, moved) = (&waves.ranges, &waves.moved);
+            wave.par_iter()
+                .with_min_len(MIN_BODIES_PER_TASK)
+                .map(|&b| this.outcome(b, ranges, moved, config, gap))
+                .collect_into_vec(&mut waves.outcomes);
+            for (&b, outcome) in wave.iter().zip(&waves.outcomes) {
+                let b = b as usize;
+                report.moving += 1;
+                report.contact_count += outcome.contacts;
+                report.cut_short += usize::from(outcome.cut_short);
+                self.position[b] = outcome.end;
+                waves.moved[b] = outcome.end != outcome.start;
+                waves.done[b] = *outcome;
+            }
+            #[cfg(test)]
+            {
+                self.skipped += waves.outcomes.iter().filter(|o| o.stayed).count();
+            }
+        }
+        // What later bodies do not read, for every body at once.
+        let (done, moved, motion) = (&waves.done, &waves.moved, &self.motion);
+        bodies
+            .par_iter_mut()
+            .enumerate()
+            .with_min_len(1024)
+            .for_each(|(b, body)| {
+                if motion[b] != Vec2::ZERO {
+                    let o = &done[b];
+                    body.resolved = if o.stayed {
+                        Vec2::ZERO
+                    } else {
+                        o.end - o.start
+                    };
+                }
+            });
+        let (circles, first, neighbours) = (&self.circles, &self.first_circle, &self.neighbours);
+        self.settled.remember_each(
+            |b| {
+                let o = &done[b];
+                (motion[b] != Vec2::ZERO && !o.stayed).then_some((
+                    o.start,
+                    motion[b],
+                    o.end,
+                    o.contacts,
+                    o.cut_short,
+                ))
+            },
+            |b| neighbour_moved(b, circles, first, neighbours, moved, |a| a > b),
+        );
+        self.waves = waves;
+    }
+
+    /// Resolves body `b` against what stands now, as the sequential resolve does at its
+    /// turn, without writing anything; `moved` tells which bodies of earlier waves moved.
+    fn outcome(
+        &self,
+        b: u32,
+        ranges: &[(u32, u32)],
+        moved: &[bool],
+        config: &ResolveConfig,
+        gap: f32,
+    ) -> Outcome {
+        let bi = b as usize;
+        let start = self.position[bi];
+        if let Some((contacts, cut_short)) = self.settled.kept(bi, start, self.motion[bi]) {
+            // Disturbed when a neighbour resolved before it moved (the sequential resolve
+            // flags it as that neighbour moves).
+            let disturbed = neighbour_moved(
+                bi,
+                &self.circles,
+                &self.first_circle,
+                &self.neighbours,
+                moved,
+                |a| a < bi,
+            );
+            if !disturbed {
+                return Outcome {
+                    start,
+                    end: start,
+                    contacts,
+                    cut_short,
+                    stayed: true,
+                };
+            }
+        }
+        let mut counts = ResolveReport::default();
+        let circles = self.first_circle[bi] as usize..self.first_circle[bi + 1] as usize;
+        let mut sink: Option<&mut Recorder<'_>> = None;
+        let end = self.collide_and_slide(b, &ranges[circles], config, gap, &mut counts, &mut sink);
+        Outcome {
+            start,
+            end,
+            contacts: counts.contact_count,
+            cut_short: counts.cut_short > 0,
+            stayed: false,
+        }
+    }
+}
+
+/// Whether a neighbour of body `b` for which `which` holds moved.
+fn neighbour_moved(
+    b: usize,
+    circles: &[WorkCircle],
+    first_circle: &[u32],
+    neighbours: &Neighbours,
+    moved: &[bool],
+    which: impl Fn(usize) -> bool,
+) -> bool {
+    (first_circle[b] as usize..first_circle[b + 1] as usize).any(|c| {
+        neighbours.row(c).iter().any(|&n| {
+            let a = circles[n as usize].body as usize;
+            which(a) && moved[a]
+        })
+    })
+}
+
+impl Waves {
+    /// Puts the moving bodies of `resolver` in waves.
+    fn schedule(&mut self, resolver: &Resolver) {
+        let n = resolver.position.len();
+        self.wave.clear();
+        self.wave.extend(
+            resolver
+                .motion
+                .iter()
+                .map(|&m| if m == Vec2::ZERO { STILL } else { 0 }),
+        );
+        // Counts per wave first, one place to the right: the running sums are the starts.
+        self.starts.clear();
+        self.starts.push(0);
+        for b in 0..n {
+            if self.wave[b] == STILL {
+                continue;
+            }
+            let mut wave = 0;
+            let circles = resolver.first_circle[b] as usize..resolver.first_circle[b + 1] as usize;
+            for c in circles {
+                for &n in resolver.neighbours.row(c) {
+                    let a = resolver.circles[n as usize].body as usize;
+                    let w = self.wave[a];
+                    if a < b && w != STILL {
+                        wave = wave.max(w + 1);
+                    }
+                }
+            }
+            self.wave[b] = wave;
+            let w = wave as usize;
+            if self.starts.len() < w + 2 {
+                self.starts.resize(w + 2, 0);
+            }
+            self.starts[w + 1] += 1;
+        }
+        for w in 1..self.starts.len() {
+            self.starts[w] += self.starts[w - 1];
+        }
+        let total = self.starts.last().copied().unwrap_or(0) as usize;
+        self.order.clear();
+        self.order.resize(total, 0);
+        // Filled in slot order, so each wave's bodies are in slot order.
+        self.next.clear();
+        self.next.extend_from_slice(&self.starts);
+        for b in 0..n {
+            if self.wave[b] != STILL {
+                let slot = &mut self.next[self.wave[b] as usize];
+                self.order[*slot as usize] = b as u32;
+                *slot += 1;
+            }
+        }
+    }
+}
