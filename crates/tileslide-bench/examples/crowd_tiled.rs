@@ -9,9 +9,9 @@
 
 use std::time::Instant;
 
-use glam::Vec2;
 use tileslide::{Bodies, BodyDesc, BodyShape};
-use tileslide_scenes::{CROWD_RADIUS, SolidGrid, SplitMix64, dungeon256, scene_crowd};
+use tileslide_bench::threads::{copies, laid};
+use tileslide_scenes::{CROWD_RADIUS, dungeon256, scene_crowd};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
@@ -28,30 +28,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         return Err(format!("k must be 1 to 8, not {k}").into());
     }
     let tile = dungeon256();
-    let side = tile.width * k;
-    let grid = SolidGrid {
-        width: side,
-        height: tile.height * k,
-        solid: (0..tile.height * k)
-            .flat_map(|y| (0..side).map(move |x| (x, y)))
-            .map(|(x, y)| tile.solid[(y % tile.height) * tile.width + x % tile.width])
-            .collect(),
-    };
+    let grid = laid(&tile, k);
     let map = grid.to_tile_map()?;
-    let scene = scene_crowd(&tile, n);
-    let mut crowd: Vec<(Vec2, Vec2)> = Vec::with_capacity(k * k * n);
-    for copy in 0..k * k {
-        let offset = Vec2::new(
-            ((copy % k) * tile.width) as f32,
-            ((copy / k) * tile.height) as f32,
-        );
-        crowd.extend(scene.iter().map(|b| (b.position + offset, b.velocity)));
-    }
-    let mut rng = SplitMix64::new(0x7115_0000_0000_0005);
-    for i in (1..crowd.len()).rev() {
-        let j = usize::try_from(rng.below(i as u64 + 1))?;
-        crowd.swap(i, j);
-    }
+    let crowd = copies(&tile, &scene_crowd(&tile, n), k);
     let mut bodies = Bodies::new();
     let shape = BodyShape::circle(CROWD_RADIUS)?;
     let mut handles = Vec::with_capacity(crowd.len());

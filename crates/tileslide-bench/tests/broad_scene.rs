@@ -4,7 +4,7 @@
 
 use tileslide::broadphase::PairMethod;
 use tileslide_bench::broad::{
-    BroadContender, ParryBvhBroad, RapierBroad, TileslideBroad, run_broad,
+    Box2dTreeBroad, BroadContender, ParryBvhBroad, RapierBroad, TileslideBroad, run_broad,
 };
 use tileslide_scenes::{broad_pairs_reference, scene_broad, update_broad};
 
@@ -40,6 +40,13 @@ fn rapier_broad_phase_finds_exactly_the_reference_pairs() {
     check(&mut peer);
     // Its own pair set is a superset, filtered down by the peer.
     assert!(peer.kept_pairs() >= peer.pair_count());
+}
+
+#[test]
+fn box2d_dynamic_tree_finds_exactly_the_reference_pairs() {
+    let mut peer = Box2dTreeBroad::new();
+    check(&mut peer);
+    assert_eq!(peer.error(), None);
 }
 
 #[test]

@@ -6,14 +6,17 @@ use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
 use tileslide_bench::broad::{BroadResult, contenders, run_broad};
 use tileslide_bench::crowd::{
-    CrowdContender, CrowdResult, ParrySegmentsCrowd, ParryVoxelsCrowd, RapierCrowd, TileslideCrowd,
-    run_crowd,
+    Box2dMoverCrowd, CrowdContender, CrowdResult, ParrySegmentsCrowd, ParryVoxelsCrowd,
+    RapierCrowd, TileslideCrowd, run_crowd,
 };
 use tileslide_bench::paths::{
     PATHS_QUERIES, PATHS_RADII, PathScene, PathsResult, contenders as path_contenders,
     count_mismatches, run_paths,
 };
 use tileslide_bench::rays::{RaysConfig, RaysReport, run_rays};
+use tileslide_bench::threads::{
+    GrowthConfig, GrowthRow, ThreadsConfig, ThreadsReport, on_one_thread, run_growth, run_threads,
+};
 use tileslide_scenes::{
     BROAD_RADIUS, CROWD_RADIUS, CrowdBody, Scene, SolidGrid, dungeon256, scene_crowd,
 };
@@ -22,7 +25,8 @@ use crate::json::number;
 
 #[derive(Subcommand, Debug)]
 pub enum BenchCommand {
-    /// The "rays" scene: 1,000,000 rays on dungeon256 or open256, tileslide vs parry2d.
+    /// The "rays" scene: 1,000,000 rays on dungeon256 or open256, tileslide vs parry2d and
+    /// Box2D.
     Rays {
         /// The map: dungeon256 or open256.
         #[arg(long, default_value = "dungeon256", value_parser = parse_scene)]
@@ -38,7 +42,8 @@ pub enum BenchCommand {
         json: bool,
     },
     /// The "crowd" scene: N circles sliding through dungeon256, tileslide vs parry2d shape
-    /// casts (walls as voxels and as segments) vs rapier2d's character controller.
+    /// casts (walls as voxels and as segments), rapier2d's character controller and Box2D's
+    /// character mover.
     Crowd {
         /// Number of circles (BENCHMARKS.md: 1000, 10000, 50000).
         #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(1..=74_276))]
@@ -51,8 +56,8 @@ pub enum BenchCommand {
         json: bool,
     },
     /// The "broad" scene: N circles bouncing in a square, every pair of overlapping boxes
-    /// each update; tileslide's sweep and prune and grid vs parry2d's Bvh and rapier2d's
-    /// broad phase.
+    /// each update; tileslide's sweep and prune and grid vs parry2d's Bvh, rapier2d's broad
+    /// phase and Box2D's dynamic tree.
     Broad {
         /// Number of circles (BENCHMARKS.md: 100000).
         #[arg(long, default_value_t = 100_000, value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
@@ -60,6 +65,52 @@ pub enum BenchCommand {
         /// Timed updates per contender; the median is reported.
         #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u64).range(1..=10_000))]
         updates: u64,
+        /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
+    /// tileslide alone on one thread and on several (its `parallel` feature), in one run:
+    /// the rays scene cast in one batch, the crowd stepped, the broad scene's pairs; with
+    /// the speed-ups and whether every answer is the same bit for bit.
+    Threads {
+        /// The pool sizes to compare, the first the baseline (comma-separated).
+        #[arg(long, default_value = "1,2", value_delimiter = ',', value_parser = clap::value_parser!(u64).range(1..=256))]
+        threads: Vec<u64>,
+        /// Rays of the rays scene on dungeon256, cast in one batch.
+        #[arg(long, default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
+        rays: u64,
+        /// Circles of the crowd scene.
+        #[arg(long, default_value_t = 50_000, value_parser = clap::value_parser!(u64).range(1..=74_276))]
+        crowd: u64,
+        /// Steps of each crowd run.
+        #[arg(long, default_value_t = 30, value_parser = clap::value_parser!(u64).range(1..=100_000))]
+        steps: u64,
+        /// Circles of the broad scene.
+        #[arg(long, default_value_t = 100_000, value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+        broad: u64,
+        /// Runs of each piece of work per pool size, interleaved; the median is reported.
+        #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u64).range(1..=1000))]
+        passes: u64,
+        /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The crowd at a fixed density as it grows: dungeon256 laid k × k, each copy holding
+    /// the crowd scene's first N circles, on one thread and on several; the cost per body
+    /// and the memory per body.
+    Growth {
+        /// Circles per copy of dungeon256.
+        #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(1..=74_276))]
+        n: u64,
+        /// The layouts, k × k copies each (comma-separated, 1 to 8).
+        #[arg(long, default_value = "1,2,3,4", value_delimiter = ',', value_parser = clap::value_parser!(u64).range(1..=8))]
+        k: Vec<u64>,
+        /// The pool sizes (comma-separated).
+        #[arg(long, default_value = "1,2", value_delimiter = ',', value_parser = clap::value_parser!(u64).range(1..=256))]
+        threads: Vec<u64>,
+        /// Steps per run; the median is reported.
+        #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u64).range(1..=100_000))]
+        steps: u64,
         /// Print one JSON object.
         #[arg(long)]
         json: bool,
@@ -88,7 +139,53 @@ pub fn run(which: BenchCommand) -> Result<()> {
             "warning: this is a debug build; benchmark figures are only meaningful with --release"
         );
     }
+    // The peers run on one thread, so tileslide does too (its `parallel` feature is on in
+    // this build, for `bench threads` and `bench growth`).
+    let which = match which {
+        BenchCommand::Threads {
+            threads,
+            rays,
+            crowd,
+            steps,
+            broad,
+            passes,
+            json,
+        } => {
+            let config = ThreadsConfig {
+                threads: threads.iter().map(|&t| t as usize).collect(),
+                rays: rays as usize,
+                crowd: crowd as usize,
+                crowd_steps: steps as usize,
+                broad: broad as usize,
+                passes: passes as usize,
+                ..ThreadsConfig::default()
+            };
+            return threads_bench(&config, json);
+        }
+        BenchCommand::Growth {
+            n,
+            k,
+            threads,
+            steps,
+            json,
+        } => {
+            let config = GrowthConfig {
+                n: n as usize,
+                ks: k.iter().map(|&k| k as usize).collect(),
+                threads: threads.iter().map(|&t| t as usize).collect(),
+                steps: steps as usize,
+            };
+            return growth(&config, json);
+        }
+        other => other,
+    };
+    on_one_thread(|| single_threaded(which))?
+}
+
+/// The benchmarks against the peers, on the calling thread.
+fn single_threaded(which: BenchCommand) -> Result<()> {
     match which {
+        BenchCommand::Threads { .. } | BenchCommand::Growth { .. } => Ok(()),
         BenchCommand::Crowd { n, steps, json } => crowd(n as usize, steps, json),
         BenchCommand::Broad { n, updates, json } => broad(n as usize, updates as usize, json),
         BenchCommand::Paths { queries, json } => paths(queries as usize, json),
@@ -132,11 +229,12 @@ fn crowd(n: usize, steps: Option<u64>, json: bool) -> Result<()> {
     let steps = steps.map_or(if n >= 50_000 { 30 } else { 100 }, |s| s as usize);
     let grid = dungeon256();
     let bodies = scene_crowd(&grid, n);
-    let contenders: [MakeContender; 4] = [
+    let contenders: [MakeContender; 5] = [
         |g, b, r| Ok(Box::new(TileslideCrowd::new(g, b, r)?)),
         |g, b, r| Ok(Box::new(ParryVoxelsCrowd::new(g, b, r))),
         |g, b, r| Ok(Box::new(ParrySegmentsCrowd::new(g, b, r))),
         |g, b, r| Ok(Box::new(RapierCrowd::new(g, b, r))),
+        |g, b, r| Ok(Box::new(Box2dMoverCrowd::new(g, b, r)?)),
     ];
     let results: Vec<CrowdResult> = with_progress(contenders.to_vec(), |make, bar| {
         let mut contender = make(&grid, &bodies, CROWD_RADIUS)?;
@@ -389,4 +487,163 @@ fn print_ratio<T>(results: &[T], speed: impl Fn(&T) -> f64, name: impl Fn(&T) ->
             name(best)
         );
     }
+}
+
+/// A progress bar counting runs (hidden when stderr is not a terminal).
+fn runs_bar(message: &'static str) -> ProgressBar {
+    let bar = ProgressBar::new(0);
+    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:30}] {pos}/{len} runs") {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar.set_message(message);
+    bar
+}
+
+fn threads_bench(config: &ThreadsConfig, json: bool) -> Result<()> {
+    let bar = runs_bar("bench threads");
+    let report = run_threads(config, |done, total| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    })
+    .map_err(|e| anyhow!("{e}"))?;
+    bar.finish_and_clear();
+    if json {
+        println!("{}", threads_json(&report));
+        return Ok(());
+    }
+    let c = &report.config;
+    println!(
+        "tileslide on pools of {:?} threads, {} passes each: {} rays in one batch, {} crowd circles \
+         ({} steps), {} broad circles ({} updates); medians",
+        c.threads, c.passes, c.rays, c.crowd, c.crowd_steps, c.broad, c.broad_updates
+    );
+    println!(
+        "{:<7} {:>8} {:>12} {:>23} {:>9} {:>18}",
+        "work", "threads", "ms", "(fastest–slowest)", "speed-up", "checksum"
+    );
+    for r in &report.rows {
+        let unit = match r.work {
+            "rays" => "batch",
+            "crowd" => "step",
+            _ => "update",
+        };
+        println!(
+            "{:<7} {:>8} {:>12} {:>23} {:>8.2}× {:>18}",
+            r.work,
+            r.threads,
+            format!("{:.3}/{unit}", r.ms),
+            format!("({:.3}–{:.3})", r.spread_ms.0, r.spread_ms.1),
+            r.speedup,
+            format!("{:016x}", r.checksum)
+        );
+    }
+    println!(
+        "answers identical on every pool: {}; crowd clean on every pool: {}",
+        yes(report.identical),
+        yes(report.crowd_clean)
+    );
+    if !report.identical || !report.crowd_clean {
+        return Err(anyhow!(
+            "the threads changed an answer or the crowd is not clean"
+        ));
+    }
+    Ok(())
+}
+
+fn yes(b: bool) -> &'static str {
+    if b { "yes" } else { "NO" }
+}
+
+fn threads_json(report: &ThreadsReport) -> serde_json::Value {
+    let rows: Vec<_> = report
+        .rows
+        .iter()
+        .map(|r| {
+            json!({
+                "work": r.work,
+                "threads": r.threads,
+                "ms": r.ms,
+                "spread_ms": [r.spread_ms.0, r.spread_ms.1],
+                "speedup": r.speedup,
+                "checksum": format!("{:016x}", r.checksum),
+            })
+        })
+        .collect();
+    json!({
+        "scene": "threads",
+        "threads": report.config.threads,
+        "rays": report.config.rays,
+        "crowd": report.config.crowd,
+        "crowd_steps": report.config.crowd_steps,
+        "broad": report.config.broad,
+        "broad_updates": report.config.broad_updates,
+        "passes": report.config.passes,
+        "identical": report.identical,
+        "crowd_clean": report.crowd_clean,
+        "results": rows,
+    })
+}
+
+fn growth(config: &GrowthConfig, json: bool) -> Result<()> {
+    let bar = runs_bar("bench growth");
+    let rows = run_growth(config, |done, total| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    })
+    .map_err(|e| anyhow!("{e}"))?;
+    bar.finish_and_clear();
+    let identical = rows.iter().all(|r| {
+        rows.iter()
+            .filter(|o| o.k == r.k)
+            .all(|o| o.checksum == r.checksum)
+    });
+    if json {
+        let list: Vec<_> = rows
+            .iter()
+            .map(|r: &GrowthRow| {
+                json!({
+                    "k": r.k,
+                    "bodies": r.bodies,
+                    "threads": r.threads,
+                    "ms_per_step": r.ms_per_step,
+                    "us_per_body": r.us_per_body,
+                    "growth": r.growth,
+                    "bytes_per_body": r.bytes_per_body,
+                    "checksum": format!("{:016x}", r.checksum),
+                })
+            })
+            .collect();
+        println!(
+            "{}",
+            json!({"scene": "growth", "n": config.n, "steps": config.steps, "identical": identical, "results": list})
+        );
+        return Ok(());
+    }
+    println!(
+        "the crowd at the density of {} circles per copy of dungeon256, k × k copies, {} steps, median step",
+        config.n, config.steps
+    );
+    println!(
+        "{:>3} {:>9} {:>8} {:>10} {:>9} {:>8} {:>10} {:>18}",
+        "k", "bodies", "threads", "ms/step", "µs/body", "growth", "B/body", "checksum"
+    );
+    for r in &rows {
+        println!(
+            "{:>3} {:>9} {:>8} {:>10.3} {:>9.4} {:>7.2}× {:>10} {:>18}",
+            r.k,
+            r.bodies,
+            r.threads,
+            r.ms_per_step,
+            r.us_per_body,
+            r.growth,
+            r.bytes_per_body
+                .map_or_else(|| "n/a".to_owned(), |b| format!("{b:.0}")),
+            format!("{:016x}", r.checksum)
+        );
+    }
+    println!("positions identical on every pool: {}", yes(identical));
+    if !identical {
+        return Err(anyhow!("the threads changed the crowd's positions"));
+    }
+    Ok(())
 }

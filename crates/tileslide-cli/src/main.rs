@@ -199,7 +199,7 @@ fn bench_without_peers(args: &[String]) -> anyhow::Result<()> {
         args.join(" ")
     };
     anyhow::bail!(
-        "`tileslide bench` measures tileslide against parry2d, rapier2d and the pathfinding crate in the same run, and this build leaves them out; build it with the `peers` feature:\n  cargo run --release -p tileslide-cli --features peers -- bench {shown}"
+        "`tileslide bench` measures tileslide against parry2d, rapier2d, Box2D and the pathfinding crate in the same run, and this build leaves them out; build it with the `peers` feature:\n  cargo run --release -p tileslide-cli --features peers -- bench {shown}"
     )
 }
 

@@ -28,6 +28,8 @@ fn bench_rays_json_has_every_engine_and_the_fingerprint() {
             "tileslide",
             "parry2d-voxels",
             "parry2d-polyline",
+            "box2d-chains",
+            "box2d-boxes",
             "tileslide-single"
         ]
     );
@@ -35,9 +37,13 @@ fn bench_rays_json_has_every_engine_and_the_fingerprint() {
         assert!(r["mrays_per_s"].as_f64().unwrap() > 0.0);
         assert!(r["hits"].as_u64().unwrap() > 1500);
     }
-    assert_eq!(v["results"][0]["disagreements"], 0);
-    assert_eq!(v["results"][1]["disagreements"], 0);
-    assert_eq!(v["results"][3]["disagreements"], 0);
+    for engine in [0, 1, 3, 4, 5] {
+        assert_eq!(
+            v["results"][engine]["disagreements"], 0,
+            "{}",
+            names[engine]
+        );
+    }
 }
 
 #[test]
@@ -59,7 +65,8 @@ fn bench_crowd_json_lists_every_contender_with_its_audit() {
             "tileslide",
             "parry2d-voxels",
             "parry2d-segments",
-            "rapier2d-kcc"
+            "rapier2d-kcc",
+            "box2d-mover"
         ]
     );
     let ours = &v["results"][0];
@@ -88,7 +95,8 @@ fn bench_broad_json_lists_every_contender_with_the_exact_pair_count() {
             "tileslide-grid",
             "tileslide-sap",
             "parry2d-bvh",
-            "rapier2d-broad"
+            "rapier2d-broad",
+            "box2d-tree"
         ]
     );
     // Every contender finds the same pairs, the brute-force ones.
@@ -112,6 +120,7 @@ fn bench_broad_table_names_the_fastest_tileslide_entry_and_peer() {
         "tileslide-sap",
         "parry2d-bvh",
         "rapier2d-broad",
+        "box2d-tree",
     ] {
         assert!(out.contains(name), "{out}");
     }
@@ -175,6 +184,93 @@ fn bench_paths_json_has_both_contenders_finding_the_same_queries() {
         assert!(
             ours["mean_length"].as_f64().unwrap() <= peer["mean_length"].as_f64().unwrap() + 1e-3,
             "{ours} {peer}"
+        );
+    }
+}
+
+#[test]
+fn bench_threads_json_compares_every_pool_and_finds_the_same_answers() {
+    let o = tileslide(&[
+        "bench",
+        "threads",
+        "--threads",
+        "1,3",
+        "--rays",
+        "20000",
+        "--crowd",
+        "2000",
+        "--steps",
+        "3",
+        "--broad",
+        "9000",
+        "--passes",
+        "1",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["identical"], true);
+    assert_eq!(v["crowd_clean"], true);
+    let rows: Vec<(String, u64)> = v["results"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| {
+            (
+                r["work"].as_str().unwrap().to_string(),
+                r["threads"].as_u64().unwrap(),
+            )
+        })
+        .collect();
+    let expected: Vec<(String, u64)> = ["rays", "crowd", "broad"]
+        .iter()
+        .flat_map(|w| [1, 3].map(|t| (w.to_string(), t)))
+        .collect();
+    assert_eq!(rows, expected);
+    for pair in v["results"].as_array().unwrap().chunks(2) {
+        assert_eq!(pair[0]["checksum"], pair[1]["checksum"], "{pair:?}");
+        assert_eq!(pair[0]["speedup"], 1.0);
+    }
+}
+
+#[test]
+fn bench_growth_table_lists_each_layout_on_each_pool() {
+    let o = tileslide(&[
+        "bench",
+        "growth",
+        "--n",
+        "300",
+        "--k",
+        "1,2",
+        "--threads",
+        "1,2",
+        "--steps",
+        "2",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(
+        out.contains("positions identical on every pool: yes"),
+        "{out}"
+    );
+    for row in ["  1       300        1", "  2      1200        2"] {
+        assert!(out.contains(row), "{row:?} in\n{out}");
+    }
+}
+
+#[test]
+fn bench_threads_and_growth_refuse_zero_threads_and_large_layouts() {
+    for args in [
+        &["bench", "threads", "--threads", "0"][..],
+        &["bench", "growth", "--k", "9"],
+        &["bench", "growth", "--threads", "2,0"],
+    ] {
+        let o = tileslide(args);
+        assert!(!o.status.success(), "{args:?}");
+        assert!(
+            stderr(&o).contains("invalid value"),
+            "{args:?}: {}",
+            stderr(&o)
         );
     }
 }

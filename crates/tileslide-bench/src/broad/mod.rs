@@ -9,7 +9,9 @@
 //! - [`ParryBvhBroad`]: parry2d's `Bvh`, refitted to the new boxes and traversed against itself
 //!   every update;
 //! - [`RapierBroad`]: rapier2d's broad phase (`BroadPhaseBvh`), fed the moved colliders every
-//!   update, its pair events kept as a pair set and filtered down to the exact pairs.
+//!   update, its pair events kept as a pair set and filtered down to the exact pairs;
+//! - [`Box2dTreeBroad`]: Box2D v3's dynamic tree, its fat proxies enlarged and the tree
+//!   partly rebuilt as Box2D's broad phase does, then queried once per circle.
 //!
 //! A pair is two circles whose boxes ([`broad_box`](tileslide_scenes::broad_box): centre ∓
 //! radius, in f32) overlap, touching included. Speed alone means nothing: read `ms_per_update`
@@ -23,10 +25,12 @@
 //!     result.pairs, result.exact);
 //! ```
 
+mod box2d_tree;
 mod parry_bvh;
 mod rapier_broad;
 mod tileslide_broad;
 
+pub use box2d_tree::Box2dTreeBroad;
 pub use parry_bvh::ParryBvhBroad;
 pub use rapier_broad::RapierBroad;
 pub use tileslide_broad::TileslideBroad;
@@ -45,6 +49,7 @@ pub fn contenders() -> Vec<Box<dyn BroadContender>> {
         Box::new(TileslideBroad::new(PairMethod::SweepAndPrune)),
         Box::new(ParryBvhBroad::new()),
         Box::new(RapierBroad::new()),
+        Box::new(Box2dTreeBroad::new()),
     ]
 }
 

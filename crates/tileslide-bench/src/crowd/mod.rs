@@ -8,7 +8,9 @@
 //!
 //! - [`ParryVoxelsCrowd`] and [`ParrySegmentsCrowd`]: parry2d shape casts in a hand-rolled
 //!   slide loop, the walls as `Voxels` or as segments;
-//! - [`RapierCrowd`]: rapier2d's `KinematicCharacterController` on kinematic bodies.
+//! - [`RapierCrowd`]: rapier2d's `KinematicCharacterController` on kinematic bodies;
+//! - [`Box2dMoverCrowd`]: Box2D v3's character mover (collide, solve planes, cast), the walls
+//!   as chain loops and the circles on kinematic bodies.
 //!
 //! Speed alone means nothing here: a contender that lets circles sink into walls or into each
 //! other does less work. Read `ms_per_step` together with the audit and with `mean_travel` (a
@@ -25,11 +27,13 @@
 //! println!("{}: {:.2} ms/step, {:?}", result.name, result.ms_per_step, result.audit);
 //! ```
 
+mod box2d_mover;
 mod neighbour_grid;
 mod parry_slide;
 mod rapier_kcc;
 mod tileslide_crowd;
 
+pub use box2d_mover::Box2dMoverCrowd;
 pub use parry_slide::{ParryCrowd, ParrySegmentsCrowd, ParryVoxelsCrowd};
 pub use rapier_kcc::RapierCrowd;
 pub use tileslide_crowd::{TileslideCrowd, TileslideCrowdError};
@@ -46,6 +50,15 @@ pub(crate) fn test_room() -> SolidGrid {
         "########", "#......#", "#......#", "#......#", "#......#", "#......#", "#......#",
         "########",
     ])
+}
+
+/// A body for the contenders' tests: its start `position` and constant `velocity`.
+#[cfg(test)]
+pub(crate) fn test_body(position: (f32, f32), velocity: (f32, f32)) -> tileslide_scenes::CrowdBody {
+    tileslide_scenes::CrowdBody {
+        position: Vec2::new(position.0, position.1),
+        velocity: Vec2::new(velocity.0, velocity.1),
+    }
 }
 
 /// Something that moves a crowd of circles through a map: tileslide or one of its peers.
@@ -218,5 +231,16 @@ mod tests {
         assert_eq!(result.name, "rapier2d-kcc");
         assert!(result.mean_travel > 0.0, "{result:?}");
         assert!(result.mean_travel <= 10.0 * 0.05 + 1e-3, "{result:?}");
+    }
+
+    #[test]
+    fn box2d_mover_moves_the_crowd() {
+        let result = run_peer(|g, b| Box::new(Box2dMoverCrowd::new(g, b, CROWD_RADIUS).unwrap()));
+        assert_eq!(result.name, "box2d-mover");
+        assert!(result.mean_travel > 0.0, "{result:?}");
+        assert!(result.mean_travel <= 10.0 * 0.05 + 1e-3, "{result:?}");
+        // Whatever it counts, nothing sinks deeper than Box2D's slop of 0.005, give or take.
+        assert!(result.audit.max_overlap < 0.02, "{result:?}");
+        assert!(result.audit.max_penetration < 0.02, "{result:?}");
     }
 }

@@ -220,16 +220,9 @@ impl<W: Shape> CrowdContender for ParryCrowd<W> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::crowd::test_room as room;
+    use crate::crowd::{test_body as body, test_room as room};
     use glam::Vec2;
     use tileslide_scenes::{CROWD_RADIUS, audit_crowd};
-
-    fn body(position: (f32, f32), velocity: (f32, f32)) -> CrowdBody {
-        CrowdBody {
-            position: Vec2::new(position.0, position.1),
-            velocity: Vec2::new(velocity.0, velocity.1),
-        }
-    }
 
     /// Runs both wall variants on the same bodies for `steps` steps.
     fn run_both(bodies: &[CrowdBody], steps: usize) -> Vec<Vec<Vec2>> {

@@ -1,24 +1,27 @@
 //! The ray benchmark: the "rays" scene of BENCHMARKS.md cast on "dungeon256" or "open256"
 //! by tileslide and, in the same process on the same rays, by parry2d's `Voxels` and
-//! `Polyline` shapes.
+//! `Polyline` shapes and by Box2D v3's world ray cast against chain loops or boxes.
 //!
 //! tileslide casts the rays as a game with many rays would, with `TileMap::cast_rays`, in
 //! blocks of [`RAYS_PER_CALL`]; a fourth entry, `tileslide-single`, casts them one
-//! `cast_ray` call at a time (the answers are the same bit for bit). parry2d has no call
-//! for many rays: it casts one at a time.
+//! `cast_ray` call at a time (the answers are the same bit for bit). parry2d and Box2D have no
+//! call for many rays: they cast one at a time.
 //!
 //! Each engine casts every ray once untimed to record its answers (hits, mean hit fraction,
 //! disagreements with tileslide), then `passes` timed passes are run, interleaving the
 //! engines so that machine noise falls on all of them alike; throughput is the median pass.
 //!
 //! Every peer has a `NAME`, a `new` that builds its acceleration structure from the scene (not
-//! timed), and a `cast` that answers one [`SceneRay`] with the distance, in cells, to the first
-//! solid-cell boundary the ray meets within its length.
+//! timed; fallible for the Box2D peers, whose world can be refused), and a `cast` that answers
+//! one [`SceneRay`] with the distance, in cells, to the first solid-cell boundary the ray meets
+//! within its length.
 
+mod box2d_boxes;
+mod box2d_chains;
 mod parry_polyline;
 mod parry_voxels;
 #[cfg(test)]
-mod test_grids;
+pub(crate) mod test_grids;
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -28,6 +31,8 @@ use tileslide::{QueryFilter, Ray, RayHit, TileMap};
 use tileslide_scenes::{Scene, SceneRay, TileMapError, scene_rays};
 
 use crate::parry_vectors::to_parry;
+pub use box2d_boxes::Box2dBoxes;
+pub use box2d_chains::Box2dChains;
 pub use parry_polyline::ParryPolyline;
 pub use parry_voxels::ParryVoxels;
 
@@ -73,8 +78,8 @@ impl Default for RaysConfig {
 /// One engine's figures.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EngineResult {
-    /// Engine name (`tileslide`, `parry2d-voxels`, `parry2d-polyline`,
-    /// `tileslide-single`).
+    /// Engine name (`tileslide`, `parry2d-voxels`, `parry2d-polyline`, `box2d-chains`,
+    /// `box2d-boxes`, `tileslide-single`).
     pub name: &'static str,
     /// Median throughput over the timed passes, in millions of rays per second.
     pub mrays_per_s: f64,
@@ -101,8 +106,8 @@ pub struct RaysReport {
     pub rays: usize,
     /// Timed passes per engine.
     pub passes: usize,
-    /// One entry per engine: tileslide, the two parry2d shapes, then tileslide one ray a
-    /// call.
+    /// One entry per engine: tileslide, the two parry2d shapes, the two Box2D worlds, then
+    /// tileslide one ray a call.
     pub results: Vec<EngineResult>,
 }
 
@@ -122,6 +127,9 @@ pub enum RaysError {
     /// The map could not be built.
     #[error("cannot build the map: {0}")]
     Map(TileMapError),
+    /// Box2D refused a peer's world.
+    #[error("cannot build the Box2D peers: {0}")]
+    Box2d(boxdd::Error),
     /// Zero rays or zero passes.
     #[error("the benchmark needs at least one ray and one pass")]
     Empty,
@@ -150,6 +158,8 @@ pub fn run_rays(
     let map = grid.to_tile_map().map_err(RaysError::Map)?;
     let voxels = ParryVoxels::new(&grid);
     let polyline = ParryPolyline::new(&grid);
+    let chains = Box2dChains::new(&grid).map_err(RaysError::Box2d)?;
+    let boxes = Box2dBoxes::new(&grid).map_err(RaysError::Box2d)?;
     let ours: Vec<Ray> = rays
         .iter()
         .map(|r| Ray {
@@ -164,10 +174,12 @@ pub fn run_rays(
         .zip(&rays)
         .map(|(hit, ray)| hit.map(|h| h.t * ray.length))
         .collect();
-    let engines: [(&'static str, &CastFn); 4] = [
+    let engines: [(&'static str, &CastFn); 6] = [
         ("tileslide", &|i| batch[i]),
         (ParryVoxels::NAME, &|i| voxels.cast(&rays[i])),
         (ParryPolyline::NAME, &|i| polyline.cast(&rays[i])),
+        (Box2dChains::NAME, &|i| chains.cast(&rays[i])),
+        (Box2dBoxes::NAME, &|i| boxes.cast(&rays[i])),
         ("tileslide-single", &|i| {
             cast_tileslide(&map, ours[i]).map(|t| t * rays[i].length)
         }),
@@ -189,6 +201,8 @@ pub fn run_rays(
                 0 => pass_tileslide(&map, &ours, &mut hits),
                 1 => pass_peer(&rays, |r| voxels.cast(r)),
                 2 => pass_peer(&rays, |r| polyline.cast(r)),
+                3 => pass_peer(&rays, |r| chains.cast(r)),
+                4 => pass_peer(&rays, |r| boxes.cast(r)),
                 _ => pass_tileslide_single(&map, &ours),
             };
             slot.push(start.elapsed().as_secs_f64());
@@ -314,17 +328,22 @@ mod tests {
                 "tileslide",
                 "parry2d-voxels",
                 "parry2d-polyline",
+                "box2d-chains",
+                "box2d-boxes",
                 "tileslide-single"
             ]
         );
         let ours = &report.results[0];
         assert_eq!(ours.disagreements, 0);
         // One ray a call gives the same answers.
-        assert_eq!(report.results[3].disagreements, 0);
-        assert_eq!(report.results[3].hits, ours.hits);
+        assert_eq!(report.results[5].disagreements, 0);
+        assert_eq!(report.results[5].hits, ours.hits);
         assert!(ours.hits > 4_000 && ours.mean_t > 0.0 && ours.mean_t <= 1.0);
-        assert_eq!(report.results[1].disagreements, 0);
-        assert_eq!(report.results[1].hits, ours.hits);
+        // The peers agree too: parry's voxels and both Box2D worlds.
+        for peer in [1, 3, 4] {
+            assert_eq!(report.results[peer].disagreements, 0, "{}", names[peer]);
+            assert_eq!(report.results[peer].hits, ours.hits, "{}", names[peer]);
+        }
     }
 
     #[test]

@@ -196,15 +196,27 @@ pub fn check_against_scene(
 
 /// The tests every ray peer passes, as `mod tests` of the peer's file: the hand-made grids'
 /// exact answers, a brute-force reference on random grids and the reference walk on the
-/// dungeon's rays. `$peer` has `new(&SolidGrid)` and `cast(&SceneRay) -> Option<f32>`, and
-/// the invocation stands under `#[cfg(test)]`.
+/// dungeon's rays. `$peer` has `cast(&SceneRay) -> Option<f32>` and is built by `$build`, a
+/// `fn(&SolidGrid) -> $peer` (by default its `new`); the invocation stands under
+/// `#[cfg(test)]`.
 macro_rules! ray_peer_tests {
     ($peer:ty) => {
+        $crate::rays::test_grids::ray_peer_tests!($peer, <$peer>::new);
+    };
+    ($peer:ty, $build:expr) => {
+        // `cfg(test)` again on the module itself, where clippy looks for it (the one on the
+        // invocation is gone once expanded): `$build` may unwrap, as tests do.
+        #[cfg(test)]
         mod tests {
             use super::*;
             use $crate::rays::test_grids::{
                 boxed_8x8, check_against_reference, check_against_scene, lone_cell_8x8, ray,
             };
+
+            fn build(grid: &tileslide_scenes::SolidGrid) -> $peer {
+                let build: fn(&tileslide_scenes::SolidGrid) -> $peer = $build;
+                build(grid)
+            }
 
             fn assert_hit(got: Option<f32>, want: f32) {
                 let got = got.unwrap_or_else(|| panic!("expected a hit at {want}, got a miss"));
@@ -216,7 +228,7 @@ macro_rules! ray_peer_tests {
 
             #[test]
             fn axis_rays_hit_the_faces_of_the_lone_cell() {
-                let peer = <$peer>::new(&boxed_8x8());
+                let peer = build(&boxed_8x8());
                 // Cell (4, 4) covers [4, 5] × [4, 5].
                 assert_hit(peer.cast(&ray((1.5, 4.5), (1.0, 0.0), 10.0)), 2.5);
                 assert_hit(peer.cast(&ray((6.5, 4.5), (-1.0, 0.0), 10.0)), 1.5);
@@ -226,7 +238,7 @@ macro_rules! ray_peer_tests {
 
             #[test]
             fn rays_hit_the_inner_faces_of_the_border() {
-                let peer = <$peer>::new(&boxed_8x8());
+                let peer = build(&boxed_8x8());
                 // The border ring leaves [1, 7] × [1, 7] open.
                 assert_hit(peer.cast(&ray((1.5, 1.5), (-1.0, 0.0), 10.0)), 0.5);
                 assert_hit(peer.cast(&ray((1.5, 2.25), (0.0, -1.0), 10.0)), 1.25);
@@ -236,7 +248,7 @@ macro_rules! ray_peer_tests {
 
             #[test]
             fn a_diagonal_ray_hits_the_side_face_it_reaches_first() {
-                let peer = <$peer>::new(&boxed_8x8());
+                let peer = build(&boxed_8x8());
                 // Along (0.6, 0.8) from (1.5, 1.5): reaches x = 4 at t = 2.5 / 0.6 = 25/6, where
                 // y = 1.5 + 0.8 · 25/6 = 4.833.., inside the left face of cell (4, 4).
                 assert_hit(peer.cast(&ray((1.5, 1.5), (0.6, 0.8), 10.0)), 25.0 / 6.0);
@@ -252,7 +264,7 @@ macro_rules! ray_peer_tests {
 
             #[test]
             fn a_ray_that_stops_short_misses() {
-                let peer = <$peer>::new(&boxed_8x8());
+                let peer = build(&boxed_8x8());
                 assert_eq!(peer.cast(&ray((1.5, 4.5), (1.0, 0.0), 2.0)), None);
                 assert_eq!(peer.cast(&ray((1.5, 1.5), (0.0, 1.0), 5.0)), None);
                 // Just long enough.
@@ -261,7 +273,7 @@ macro_rules! ray_peer_tests {
 
             #[test]
             fn a_ray_that_leaves_the_map_misses() {
-                let peer = <$peer>::new(&lone_cell_8x8());
+                let peer = build(&lone_cell_8x8());
                 assert_eq!(peer.cast(&ray((1.5, 1.5), (1.0, 0.0), 100.0)), None);
                 assert_eq!(peer.cast(&ray((1.5, 4.5), (-1.0, 0.0), 100.0)), None);
                 // Passes above the cell (y = 7.375 at x = 4) and leaves the map.
@@ -274,7 +286,7 @@ macro_rules! ray_peer_tests {
             #[test]
             fn agrees_with_a_brute_force_reference_on_random_grids() {
                 let hits = check_against_reference(|grid, rays| {
-                    let peer = <$peer>::new(grid);
+                    let peer = build(grid);
                     rays.iter().map(|r| peer.cast(r)).collect()
                 });
                 assert!(hits > 1_000, "only {hits} hits: the check is too weak");
@@ -283,7 +295,7 @@ macro_rules! ray_peer_tests {
             #[test]
             fn agrees_with_the_reference_walk_on_the_dungeon_rays() {
                 let grid = tileslide_scenes::dungeon256();
-                let peer = <$peer>::new(&grid);
+                let peer = build(&grid);
                 let hits = check_against_scene(&grid, 20_000, |r| peer.cast(r));
                 // BENCHMARKS.md: 943,906 of 1,000,000 rays hit on dungeon256.
                 assert!((18_500..19_300).contains(&hits), "{hits} hits");

@@ -1,0 +1,545 @@
+//! tileslide on one thread and on several (its `parallel` feature), in the same run: the
+//! "rays" scene cast in one batch, the "crowd" scene stepped, the "broad" scene's pairs found
+//! ([`run_threads`]); and the crowd at a fixed density as it grows, dungeon256 laid `k × k`
+//! ([`run_growth`]).
+//!
+//! Every piece of work runs in a rayon pool of each size in turn, pass after pass, so that
+//! machine noise falls on every size alike, and every run's answers are hashed (FNV-1a 64
+//! over their bits): the hashes must be equal across thread counts, and a report says
+//! whether they are.
+
+use std::time::Instant;
+
+use glam::Vec2;
+use rayon::ThreadPool;
+use tileslide::broadphase::{PairFinder, PairMethod};
+use tileslide::{Aabb, Bodies, BodyDesc, BodyHandle, BodyShape, QueryFilter, Ray, TileMap};
+use tileslide_scenes::{
+    CROWD_RADIUS, Fnv1a, SolidGrid, SplitMix64, TileMapError, audit_crowd, broad_boxes, dungeon256,
+    positions_hash, scene_broad, scene_crowd, scene_rays, update_broad,
+};
+
+/// What [`run_threads`] runs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ThreadsConfig {
+    /// The pool sizes to compare (the first is the baseline of the speed-ups).
+    pub threads: Vec<usize>,
+    /// Rays of the "rays" scene on dungeon256, cast in one batch.
+    pub rays: usize,
+    /// Circles of the "crowd" scene, and the steps each run takes.
+    pub crowd: usize,
+    /// Steps of each crowd run.
+    pub crowd_steps: usize,
+    /// Circles of the "broad" scene, and the updates each run takes.
+    pub broad: usize,
+    /// Updates of each broad run.
+    pub broad_updates: usize,
+    /// Runs of each piece of work per pool size.
+    pub passes: usize,
+}
+
+impl Default for ThreadsConfig {
+    fn default() -> Self {
+        Self {
+            threads: vec![1, 2],
+            rays: 1_000_000,
+            crowd: 50_000,
+            crowd_steps: 30,
+            broad: 100_000,
+            broad_updates: 10,
+            passes: 5,
+        }
+    }
+}
+
+/// One piece of work on one pool size.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ThreadsRow {
+    /// `rays`, `crowd` or `broad`.
+    pub work: &'static str,
+    /// Threads of the pool.
+    pub threads: usize,
+    /// Median time of one unit (a whole batch of rays, a step, an update), in milliseconds.
+    pub ms: f64,
+    /// Fastest and slowest unit, in milliseconds.
+    pub spread_ms: (f64, f64),
+    /// The baseline's median over this one's (the first pool size's row: 1.0).
+    pub speedup: f64,
+    /// FNV-1a 64 of every answer of the first run (hits, final positions, pairs in order).
+    pub checksum: u64,
+}
+
+/// [`run_threads`]'s result.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ThreadsReport {
+    /// The configuration run.
+    pub config: ThreadsConfig,
+    /// Per piece of work, one row per pool size, in the configuration's order.
+    pub rows: Vec<ThreadsRow>,
+    /// Whether every piece of work gave the same checksum on every pool size.
+    pub identical: bool,
+    /// Whether the crowd ended clean (no overlap, no circle in a wall) on every pool size.
+    pub crowd_clean: bool,
+}
+
+/// Why a benchmark could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum ThreadsError {
+    /// No pool sizes, a pool of zero threads, zero passes, or zero work.
+    #[error("{0}")]
+    Config(String),
+    /// A rayon pool could not be made.
+    #[error("cannot make a pool of {threads} threads: {message}")]
+    Pool {
+        /// The pool's size.
+        threads: usize,
+        /// rayon's error.
+        message: String,
+    },
+    /// The map could not be built.
+    #[error("cannot build the map: {0}")]
+    Map(TileMapError),
+    /// tileslide refused a body.
+    #[error("cannot add a body: {0}")]
+    Body(tileslide::BodyError),
+}
+
+/// Runs `work` on a rayon pool of one thread, so that tileslide's `parallel` feature (on in
+/// the benchmark build) splits nothing: how the peers, which run on one thread, are met.
+///
+/// # Errors
+/// The pool cannot be made (the system refuses a thread).
+pub fn on_one_thread<R: Send>(work: impl FnOnce() -> R + Send) -> Result<R, ThreadsError> {
+    let pool = pools(&[1])?.pop();
+    pool.map(|p| p.install(work))
+        .ok_or_else(|| ThreadsError::Config("no pool".into()))
+}
+
+/// Most threads a pool may have here: more is a typing error, not a machine.
+pub const MAX_THREADS: usize = 256;
+
+fn pools(threads: &[usize]) -> Result<Vec<ThreadPool>, ThreadsError> {
+    if threads.is_empty() {
+        return Err(ThreadsError::Config("no thread counts given".into()));
+    }
+    threads
+        .iter()
+        .map(|&t| {
+            if t == 0 || t > MAX_THREADS {
+                return Err(ThreadsError::Config(format!(
+                    "a pool needs 1 to {MAX_THREADS} threads, not {t}"
+                )));
+            }
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(t)
+                .build()
+                .map_err(|e| ThreadsError::Pool {
+                    threads: t,
+                    message: e.to_string(),
+                })
+        })
+        .collect()
+}
+
+/// The median, fastest and slowest of `times` (not empty).
+fn summary(times: &mut [f64]) -> (f64, (f64, f64)) {
+    times.sort_by(f64::total_cmp);
+    (times[times.len() / 2], (times[0], times[times.len() - 1]))
+}
+
+/// Runs the three pieces of work on every pool size; `progress(done, total)` after each run.
+///
+/// # Errors
+/// A bad configuration, a pool that cannot be made, or a scene that cannot be built.
+pub fn run_threads(
+    config: &ThreadsConfig,
+    mut progress: impl FnMut(usize, usize),
+) -> Result<ThreadsReport, ThreadsError> {
+    if config.passes == 0 || config.rays == 0 || config.crowd == 0 || config.broad == 0 {
+        return Err(ThreadsError::Config(
+            "every piece of work needs at least one ray, circle and pass".into(),
+        ));
+    }
+    if config.crowd_steps == 0 || config.broad_updates == 0 {
+        return Err(ThreadsError::Config(
+            "the crowd and the broad scene need at least one step".into(),
+        ));
+    }
+    let pools = pools(&config.threads)?;
+    let grid = dungeon256();
+    let map = grid.to_tile_map().map_err(ThreadsError::Map)?;
+    let rays: Vec<Ray> = scene_rays(&grid, config.rays)
+        .iter()
+        .map(|r| Ray {
+            origin: r.origin,
+            delta: r.dir * r.length,
+        })
+        .collect();
+    let crowd = scene_crowd(&grid, config.crowd);
+    let total = 3 * config.passes * pools.len();
+    let mut done = 0;
+    let n = pools.len();
+    // Per pool: the times, and the first run's checksum.
+    let mut rays_times = vec![Vec::new(); n];
+    let mut crowd_times = vec![Vec::new(); n];
+    let mut broad_times = vec![Vec::new(); n];
+    let mut sums = [vec![None; n], vec![None; n], vec![None; n]];
+    let mut crowd_clean = true;
+    for _ in 0..config.passes {
+        for (p, pool) in pools.iter().enumerate() {
+            let (ms, sum) = pool.install(|| cast(&map, &rays));
+            rays_times[p].push(ms);
+            sums[0][p].get_or_insert(sum);
+            done += 1;
+            progress(done, total);
+            let (times, positions) =
+                pool.install(|| step_crowd(&map, &crowd, config.crowd_steps))?;
+            crowd_times[p].extend(times);
+            crowd_clean &= audit_crowd(&grid, &positions, CROWD_RADIUS).is_clean();
+            sums[1][p].get_or_insert(positions_hash(&positions));
+            done += 1;
+            progress(done, total);
+            let (times, sum) = pool.install(|| find_broad(config.broad, config.broad_updates));
+            broad_times[p].extend(times);
+            sums[2][p].get_or_insert(sum);
+            done += 1;
+            progress(done, total);
+        }
+    }
+    let mut rows = Vec::new();
+    for (work, times, sums) in [
+        ("rays", &mut rays_times, &sums[0]),
+        ("crowd", &mut crowd_times, &sums[1]),
+        ("broad", &mut broad_times, &sums[2]),
+    ] {
+        let medians: Vec<(f64, (f64, f64))> = times.iter_mut().map(|t| summary(t)).collect();
+        for (p, &threads) in config.threads.iter().enumerate() {
+            rows.push(ThreadsRow {
+                work,
+                threads,
+                ms: medians[p].0,
+                spread_ms: medians[p].1,
+                speedup: medians[0].0 / medians[p].0,
+                checksum: sums[p].unwrap_or_default(),
+            });
+        }
+    }
+    let identical = sums.iter().all(|s| s.iter().all(|x| *x == s[0]));
+    Ok(ThreadsReport {
+        config: config.clone(),
+        rows,
+        identical,
+        crowd_clean,
+    })
+}
+
+/// Casts every ray in one batch: the time in milliseconds and the answers' checksum.
+fn cast(map: &TileMap, rays: &[Ray]) -> (f64, u64) {
+    let start = Instant::now();
+    let hits = map.cast_rays(rays, &QueryFilter::default());
+    let ms = start.elapsed().as_secs_f64() * 1e3;
+    let mut hash = Fnv1a::new();
+    for hit in &hits {
+        match hit {
+            Some(h) => {
+                hash.write_f32(h.t);
+                hash.write_f32(h.point.x);
+                hash.write_f32(h.point.y);
+            }
+            None => hash.write_u8(0),
+        }
+    }
+    (ms, hash.finish())
+}
+
+/// Steps the crowd: each step's time in milliseconds, and the final positions.
+fn step_crowd(
+    map: &TileMap,
+    crowd: &[tileslide_scenes::CrowdBody],
+    steps: usize,
+) -> Result<(Vec<f64>, Vec<Vec2>), ThreadsError> {
+    let moves: Vec<(Vec2, Vec2)> = crowd.iter().map(|b| (b.position, b.velocity)).collect();
+    let (mut bodies, handles) = place(&moves)?;
+    let mut times = Vec::with_capacity(steps);
+    for _ in 0..steps {
+        times.push(step(&mut bodies, &handles, map)?);
+    }
+    let positions = positions(&bodies, &handles);
+    Ok((times, positions))
+}
+
+/// A set of circles of the crowd's radius at the given positions; the handles with their
+/// velocities.
+fn place(crowd: &[(Vec2, Vec2)]) -> Result<(Bodies, Vec<(BodyHandle, Vec2)>), ThreadsError> {
+    let mut bodies = Bodies::new();
+    let shape = BodyShape::circle(CROWD_RADIUS).map_err(ThreadsError::Body)?;
+    let mut handles = Vec::with_capacity(crowd.len());
+    for &(position, velocity) in crowd {
+        let handle = bodies
+            .add(BodyDesc::new(position, shape.clone()))
+            .map_err(ThreadsError::Body)?;
+        handles.push((handle, velocity));
+    }
+    Ok((bodies, handles))
+}
+
+/// One step, every body proposing its velocity: its time in milliseconds.
+fn step(
+    bodies: &mut Bodies,
+    handles: &[(BodyHandle, Vec2)],
+    map: &TileMap,
+) -> Result<f64, ThreadsError> {
+    let start = Instant::now();
+    for &(h, v) in handles {
+        bodies.propose(h, v).map_err(ThreadsError::Body)?;
+    }
+    bodies.step(map);
+    Ok(start.elapsed().as_secs_f64() * 1e3)
+}
+
+fn positions(bodies: &Bodies, handles: &[(BodyHandle, Vec2)]) -> Vec<Vec2> {
+    handles
+        .iter()
+        .filter_map(|&(h, _)| bodies.get(h).ok().map(|b| b.position()))
+        .collect()
+}
+
+/// The broad scene's updates with tileslide's uniform grid: each update's time (moving the
+/// circles, their boxes, the pairs) in milliseconds, and the checksum of every update's pairs
+/// in the finder's order.
+fn find_broad(n: usize, updates: usize) -> (Vec<f64>, u64) {
+    let mut circles = scene_broad(n);
+    let mut finder = PairFinder::default();
+    let mut boxes: Vec<Aabb> = Vec::new();
+    let mut pairs = Vec::new();
+    let mut hash = Fnv1a::new();
+    let mut times = Vec::with_capacity(updates);
+    for _ in 0..updates {
+        let start = Instant::now();
+        update_broad(&mut circles);
+        broad_boxes(&circles, &mut boxes);
+        pairs.clear();
+        finder.find(PairMethod::UniformGrid, &boxes, &mut pairs);
+        times.push(start.elapsed().as_secs_f64() * 1e3);
+        for &(i, j) in &pairs {
+            hash.write_u32(i);
+            hash.write_u32(j);
+        }
+    }
+    (times, hash.finish())
+}
+
+/// What [`run_growth`] runs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GrowthConfig {
+    /// Circles per copy of dungeon256 (the first `n` of the crowd scene).
+    pub n: usize,
+    /// The layouts: `k × k` copies each.
+    pub ks: Vec<usize>,
+    /// The pool sizes.
+    pub threads: Vec<usize>,
+    /// Steps per run (the median step is reported).
+    pub steps: usize,
+}
+
+impl Default for GrowthConfig {
+    fn default() -> Self {
+        Self {
+            n: 10_000,
+            ks: vec![1, 2, 3, 4],
+            threads: vec![1, 2],
+            steps: 20,
+        }
+    }
+}
+
+/// One layout on one pool size.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GrowthRow {
+    /// Copies per side.
+    pub k: usize,
+    /// Bodies in all.
+    pub bodies: usize,
+    /// Threads of the pool.
+    pub threads: usize,
+    /// Median step, in milliseconds.
+    pub ms_per_step: f64,
+    /// The median step per body, in microseconds.
+    pub us_per_body: f64,
+    /// This row's cost per body over the first layout's on the same pool size.
+    pub growth: f64,
+    /// What the process's resident memory grew by while the bodies were added and stepped,
+    /// per body, in bytes (`None` where `/proc/self/statm` cannot be read).
+    pub bytes_per_body: Option<f64>,
+    /// FNV-1a 64 of the final positions.
+    pub checksum: u64,
+}
+
+/// Largest `k` [`run_growth`] lays out (8 × 8 copies: 2048 × 2048 cells).
+pub const MAX_K: usize = 8;
+
+/// Runs the crowd at the density of the scene with `n` circles on `k × k` copies of
+/// dungeon256, for each `k` and pool size; `progress(done, total)` after each run.
+///
+/// # Errors
+/// A bad configuration, a pool that cannot be made, or a scene that cannot be built.
+pub fn run_growth(
+    config: &GrowthConfig,
+    mut progress: impl FnMut(usize, usize),
+) -> Result<Vec<GrowthRow>, ThreadsError> {
+    if config.n == 0 || config.steps == 0 || config.ks.is_empty() {
+        return Err(ThreadsError::Config(
+            "growth needs circles, steps and at least one k".into(),
+        ));
+    }
+    if let Some(&k) = config.ks.iter().find(|&&k| k == 0 || k > MAX_K) {
+        return Err(ThreadsError::Config(format!(
+            "k must be 1 to {MAX_K}, not {k}"
+        )));
+    }
+    let pools = pools(&config.threads)?;
+    let tile = dungeon256();
+    let scene = scene_crowd(&tile, config.n);
+    let total = config.ks.len() * pools.len();
+    let mut rows: Vec<GrowthRow> = Vec::new();
+    for &k in &config.ks {
+        let grid = laid(&tile, k);
+        let map = grid.to_tile_map().map_err(ThreadsError::Map)?;
+        let crowd = copies(&tile, &scene, k);
+        for (p, pool) in pools.iter().enumerate() {
+            let before = resident_bytes();
+            let (mut times, checksum, after) = pool.install(|| {
+                let (mut bodies, handles) = place(&crowd)?;
+                let times = (0..config.steps)
+                    .map(|_| step(&mut bodies, &handles, &map))
+                    .collect::<Result<Vec<f64>, _>>()?;
+                let after = resident_bytes();
+                let checksum = positions_hash(&positions(&bodies, &handles));
+                Ok::<_, ThreadsError>((times, checksum, after))
+            })?;
+            let (median, _) = summary(&mut times);
+            let us_per_body = median * 1e3 / crowd.len() as f64;
+            let first = rows
+                .iter()
+                .find(|r| r.threads == config.threads[p])
+                .map_or(us_per_body, |r| r.us_per_body);
+            rows.push(GrowthRow {
+                k,
+                bodies: crowd.len(),
+                threads: config.threads[p],
+                ms_per_step: median,
+                us_per_body,
+                growth: us_per_body / first,
+                bytes_per_body: before
+                    .zip(after)
+                    .map(|(b, a)| a.saturating_sub(b) as f64 / crowd.len() as f64),
+                checksum,
+            });
+            progress(rows.len(), total);
+        }
+    }
+    Ok(rows)
+}
+
+/// `tile` laid `k × k` times side by side.
+#[must_use]
+pub fn laid(tile: &SolidGrid, k: usize) -> SolidGrid {
+    let side = tile.width * k;
+    SolidGrid {
+        width: side,
+        height: tile.height * k,
+        solid: (0..tile.height * k)
+            .flat_map(|y| (0..side).map(move |x| (x, y)))
+            .map(|(x, y)| tile.solid[(y % tile.height) * tile.width + x % tile.width])
+            .collect(),
+    }
+}
+
+/// The scene's circles copied into each of the `k × k` tiles, in a shuffled slot order (a
+/// game adds bodies in no spatial order): positions and velocities.
+#[must_use]
+pub fn copies(
+    tile: &SolidGrid,
+    scene: &[tileslide_scenes::CrowdBody],
+    k: usize,
+) -> Vec<(Vec2, Vec2)> {
+    let mut crowd = Vec::with_capacity(k * k * scene.len());
+    for copy in 0..k * k {
+        let offset = Vec2::new(
+            ((copy % k) * tile.width) as f32,
+            ((copy / k) * tile.height) as f32,
+        );
+        crowd.extend(scene.iter().map(|b| (b.position + offset, b.velocity)));
+    }
+    let mut rng = SplitMix64::new(0x7115_0000_0000_0005);
+    for i in (1..crowd.len()).rev() {
+        let j = rng.below(i as u64 + 1) as usize;
+        crowd.swap(i, j);
+    }
+    crowd
+}
+
+/// The process's resident memory in bytes, from `/proc/self/statm` (Linux), or `None`.
+fn resident_bytes() -> Option<u64> {
+    let statm = std::fs::read_to_string("/proc/self/statm").ok()?;
+    let pages: u64 = statm.split_whitespace().nth(1)?.parse().ok()?;
+    Some(pages * 4096)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_small_run_is_identical_on_every_pool_size() {
+        let config = ThreadsConfig {
+            threads: vec![1, 2, 3],
+            rays: 20_000,
+            crowd: 3_000,
+            crowd_steps: 3,
+            broad: 9_000,
+            broad_updates: 2,
+            passes: 1,
+        };
+        let report = run_threads(&config, |_, _| {}).unwrap();
+        assert_eq!(report.rows.len(), 9);
+        assert!(report.identical, "{:?}", report.rows);
+        assert!(report.crowd_clean);
+        assert_eq!(report.rows[0].speedup, 1.0);
+    }
+
+    #[test]
+    fn growth_lays_copies_and_counts_every_body() {
+        let config = GrowthConfig {
+            n: 500,
+            ks: vec![1, 2],
+            threads: vec![1, 2],
+            steps: 2,
+        };
+        let rows = run_growth(&config, |_, _| {}).unwrap();
+        let bodies: Vec<_> = rows.iter().map(|r| (r.k, r.bodies, r.threads)).collect();
+        assert_eq!(
+            bodies,
+            [(1, 500, 1), (1, 500, 2), (2, 2_000, 1), (2, 2_000, 2)]
+        );
+        assert_eq!(rows[0].checksum, rows[1].checksum);
+        assert_eq!(rows[2].checksum, rows[3].checksum);
+        assert_eq!(rows[0].growth, 1.0);
+    }
+
+    #[test]
+    fn bad_configurations_are_refused_with_what_is_wrong() {
+        let zero = ThreadsConfig {
+            threads: vec![1, 0],
+            ..ThreadsConfig::default()
+        };
+        let err = run_threads(&zero, |_, _| {}).unwrap_err().to_string();
+        assert!(err.contains("not 0"), "{err}");
+        let big = GrowthConfig {
+            ks: vec![9],
+            ..GrowthConfig::default()
+        };
+        let err = run_growth(&big, |_, _| {}).unwrap_err().to_string();
+        assert!(err.contains("k must be 1 to 8, not 9"), "{err}");
+    }
+}
