@@ -26,6 +26,8 @@
 //! all-pairs search would give; the nearest contact is chosen by time and then by index,
 //! so the order changes no result.
 
+use std::ops::Range;
+
 use crate::broadphase::{PairFinder, PairMethod};
 use crate::geometry::{Aabb, Circle};
 
@@ -34,16 +36,26 @@ use crate::geometry::{Aabb, Circle};
 /// step), 0.25 and 0.3 gain about 7 %; a wider margin tests more candidates every step.
 const MARGIN: f32 = 0.25;
 
+/// Circles whose rows one task fills at least (the `parallel` feature): a row costs a few
+/// disc tests.
+#[cfg(feature = "parallel")]
+const CIRCLES_PER_TASK: usize = 4096;
+
 /// Per circle, the circles it may meet (compressed rows), and what they were found for.
 #[derive(Clone, Debug, Default)]
 pub(super) struct Neighbours {
     finder: PairFinder,
-    /// The pairs of grown boxes, and of them the pairs whose reach discs overlap now.
-    candidates: Vec<(u32, u32)>,
+    /// The pairs of grown boxes, as found (a buffer).
     pairs: Vec<(u32, u32)>,
-    /// Row `c` is `list[first[c]..first[c + 1]]`.
+    /// The candidates of circle `c` are `candidates[first[c]..first[c + 1]]`: the circles
+    /// whose grown boxes overlap its own, each pair in both rows.
     first: Vec<u32>,
+    candidates: Vec<u32>,
+    /// Row `c` is `list[first[c]..first[c] + len[c]]`: the candidates whose reach discs
+    /// overlap now, in the candidates' order, each written where the candidates of its row
+    /// start, so rows are filled independently of each other.
     list: Vec<u32>,
+    len: Vec<u32>,
     /// The grown boxes the rows were found for, and with which broadphase; `None` once
     /// forgotten.
     grown: Vec<Aabb>,
@@ -67,14 +79,17 @@ impl Neighbours {
     /// the candidates are found again with `kind` for them grown by a margin, unless every
     /// box is still inside the grown box the candidates were found for. `cell` is the map's
     /// smaller cell side, the unit of the margin.
+    ///
+    /// With the `parallel` feature, the rows are filled on the threads of the current
+    /// rayon pool, each from its own candidates: the same rows on any number of threads.
     pub fn update(
         &mut self,
         kind: PairMethod,
         reach: &[Circle],
         boxes: &[Aabb],
         cell: f32,
-        body_of: impl Fn(u32) -> usize,
-        collides: impl Fn(usize, usize) -> bool,
+        body_of: impl Fn(u32) -> usize + Sync,
+        collides: impl Fn(usize, usize) -> bool + Sync,
     ) {
         let kept = self.found_with == Some(kind)
             && self.grown.len() == boxes.len()
@@ -84,26 +99,35 @@ impl Neighbours {
             self.grown.clear();
             self.grown.extend(boxes.iter().map(|b| b.expand(margin)));
             self.found_with = Some(kind);
-            self.candidates.clear();
-            self.finder.find(kind, &self.grown, &mut self.candidates);
-            self.candidates.retain(|&(i, j)| {
+            self.pairs.clear();
+            self.finder.find(kind, &self.grown, &mut self.pairs);
+            self.pairs.retain(|&(i, j)| {
                 let (a, b) = (body_of(i), body_of(j));
                 a != b && collides(a, b)
             });
+            self.candidate_rows(boxes.len());
         }
-        // The pairs whose discs overlap now, written branch-free (whether a candidate is
-        // kept is a coin toss for the branch predictor).
-        self.pairs.clear();
-        self.pairs.resize(self.candidates.len(), (0, 0));
-        let mut n = 0;
-        for &(i, j) in &self.candidates {
-            self.pairs[n] = (i, j);
-            n += usize::from(reach[i as usize].overlaps(&reach[j as usize]));
-        }
-        self.pairs.truncate(n);
-        // Compressed rows by counting sort: count each circle's pairs, running sums give each
-        // row's end, and filling every row backwards leaves `first[c]` at its start.
         let n = boxes.len();
+        self.list.resize(self.candidates.len(), 0);
+        self.len.resize(n, 0);
+        let from = Candidates {
+            first: &self.first,
+            candidates: &self.candidates,
+            reach,
+        };
+        let (list, len) = (&mut self.list[..], &mut self.len[..]);
+        #[cfg(feature = "parallel")]
+        if n >= 2 * CIRCLES_PER_TASK && rayon::current_num_threads() > 1 {
+            from.fill_split(0..n, list, len);
+            return;
+        }
+        from.fill(0..n, list, len);
+    }
+
+    /// The candidates' rows from the pairs, by counting sort: count each circle's pairs,
+    /// running sums give each row's end, and filling every row backwards leaves `first[c]`
+    /// at its start.
+    fn candidate_rows(&mut self, n: usize) {
         self.first.clear();
         self.first.resize(n + 1, 0);
         for &(i, j) in &self.pairs {
@@ -115,13 +139,13 @@ impl Neighbours {
         }
         let total = if n == 0 { 0 } else { self.first[n - 1] };
         self.first[n] = total;
-        self.list.clear();
-        self.list.resize(total as usize, 0);
+        self.candidates.clear();
+        self.candidates.resize(total as usize, 0);
         for &(i, j) in &self.pairs {
             for (a, b) in [(i, j), (j, i)] {
                 let slot = &mut self.first[a as usize];
                 *slot -= 1;
-                self.list[*slot as usize] = b;
+                self.candidates[*slot as usize] = b;
             }
         }
         // A row keeps the broadphase's order: `first_contact` breaks ties between neighbours
@@ -132,7 +156,54 @@ impl Neighbours {
     /// The circles circle `c` may meet.
     #[inline]
     pub fn row(&self, c: usize) -> &[u32] {
-        &self.list[self.first[c] as usize..self.first[c + 1] as usize]
+        let start = self.first[c] as usize;
+        &self.list[start..start + self.len[c] as usize]
+    }
+}
+
+/// What the rows are filled from: the candidates' rows and the reach discs.
+struct Candidates<'a> {
+    first: &'a [u32],
+    candidates: &'a [u32],
+    reach: &'a [Circle],
+}
+
+impl Candidates<'_> {
+    /// Fills the rows of `circles`: `list` holds the candidates' places from
+    /// `first[circles.start]` on, and `len` the rows' lengths from `circles.start` on.
+    fn fill(&self, circles: Range<usize>, list: &mut [u32], len: &mut [u32]) {
+        let base = self.first[circles.start] as usize;
+        for (c, len) in circles.zip(len) {
+            let (start, end) = (self.first[c] as usize, self.first[c + 1] as usize);
+            let disc = &self.reach[c];
+            let row = &mut list[start - base..end - base];
+            // Written branch-free: whether a candidate is kept is a coin toss for the branch
+            // predictor.
+            let mut kept = 0;
+            for &other in &self.candidates[start..end] {
+                row[kept] = other;
+                kept += usize::from(disc.overlaps(&self.reach[other as usize]));
+            }
+            *len = kept as u32;
+        }
+    }
+
+    /// [`fill`](Self::fill) on the threads of the current rayon pool, in halves down to
+    /// [`CIRCLES_PER_TASK`] circles.
+    #[cfg(feature = "parallel")]
+    fn fill_split(&self, circles: Range<usize>, list: &mut [u32], len: &mut [u32]) {
+        if circles.len() < 2 * CIRCLES_PER_TASK {
+            self.fill(circles, list, len);
+            return;
+        }
+        let mid = circles.start + circles.len() / 2;
+        let low = (self.first[mid] - self.first[circles.start]) as usize;
+        let (list_low, list_high) = list.split_at_mut(low);
+        let (len_low, len_high) = len.split_at_mut(mid - circles.start);
+        rayon::join(
+            || self.fill_split(circles.start..mid, list_low, len_low),
+            || self.fill_split(mid..circles.end, list_high, len_high),
+        );
     }
 }
 
@@ -141,19 +212,24 @@ mod tests {
     use super::*;
     use glam::Vec2;
 
+    /// Numbers in [0, 1) from a linear congruential generator seeded with `seed`.
+    fn uniform(seed: u64) -> impl FnMut() -> f32 {
+        let mut state = seed;
+        move || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (state >> 40) as f32 / (1u64 << 24) as f32
+        }
+    }
+
     /// Discs drifting a little each call, some jumping: the rows always hold exactly the
     /// overlapping pairs of different bodies (circles 2k and 2k + 1 share a body), each in
     /// both rows, whichever broadphase found the candidates.
     #[test]
     fn rows_are_exactly_the_overlapping_pairs_call_after_call() {
         for kind in [PairMethod::UniformGrid, PairMethod::SweepAndPrune] {
-            let mut state = 0x1234_5678_9abc_def0_u64;
-            let mut rand = || {
-                state = state
-                    .wrapping_mul(6_364_136_223_846_793_005)
-                    .wrapping_add(1_442_695_040_888_963_407);
-                (state >> 40) as f32 / (1u64 << 24) as f32
-            };
+            let mut rand = uniform(0x1234_5678_9abc_def0);
             let n = 400;
             let mut centres: Vec<Vec2> = (0..n)
                 .map(|_| Vec2::new(rand() * 20.0, rand() * 20.0))
@@ -187,6 +263,61 @@ mod tests {
                 "{kind:?}: found {rebuilt} times in 30"
             );
         }
+    }
+
+    /// Rows filled on many threads (the `parallel` feature, from 8,192 circles) are the rows
+    /// one thread fills, entry for entry, on pools of 2, 3 and 8 threads; and some of them
+    /// checked against every disc.
+    #[cfg(feature = "parallel")]
+    #[test]
+    fn rows_filled_on_many_threads_are_the_rows_of_one() {
+        let mut rand = uniform(0x0bad_5eed);
+        let n = 20_011;
+        let discs: Vec<Circle> = (0..n)
+            .map(|_| {
+                Circle::new(
+                    Vec2::new(rand() * 120.0, rand() * 120.0),
+                    0.3 + rand() * 0.2,
+                )
+            })
+            .collect();
+        let boxes: Vec<Aabb> = discs.iter().map(Circle::aabb).collect();
+        let rows_on = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let mut neighbours = Neighbours::default();
+            pool.install(|| {
+                neighbours.update(
+                    PairMethod::UniformGrid,
+                    &discs,
+                    &boxes,
+                    1.0,
+                    |i| i as usize,
+                    |_, _| true,
+                );
+            });
+            (0..n)
+                .map(|c| neighbours.row(c).to_vec())
+                .collect::<Vec<_>>()
+        };
+        let one = rows_on(1);
+        for threads in [2, 3, 8] {
+            assert_eq!(rows_on(threads), one, "{threads} threads");
+        }
+        for c in (0..n).step_by(97) {
+            let mut row = one[c].clone();
+            row.sort_unstable();
+            let expected: Vec<u32> = (0..n as u32)
+                .filter(|&j| j as usize != c && discs[c].overlaps(&discs[j as usize]))
+                .collect();
+            assert_eq!(row, expected, "circle {c}");
+        }
+        assert!(
+            one.iter().map(Vec::len).sum::<usize>() > n,
+            "a crowd that meets"
+        );
     }
 
     #[test]

@@ -41,6 +41,10 @@ use crate::tiles::TileMap;
 #[cfg(feature = "parallel")]
 mod waves;
 
+/// Bodies one task copies in at least (the `parallel` feature).
+#[cfg(feature = "parallel")]
+const LOAD_PER_TASK: usize = 4096;
+
 /// Shortest safe part of a move that is taken, as a fraction of the gap (see
 /// `collide_and_slide`).
 const MIN_STEP: f32 = 0.125;
@@ -235,26 +239,80 @@ impl Resolver {
             self.first_circle.push(self.circles.len() as u32);
             self.shapes_known = true;
         }
-        self.position.clear();
-        self.motion.clear();
-        self.filter.clear();
-        self.reach.clear();
-        for body in bodies {
-            self.position.push(body.position);
-            self.motion.push(body.proposed);
-            self.filter.push(body.filter);
+        let n = bodies.len();
+        self.position.resize(n, Vec2::ZERO);
+        self.motion.resize(n, Vec2::ZERO);
+        self.filter.resize(n, BodyFilter::default());
+        self.reach.resize(n, 0.0);
+        let m = self.circles.len();
+        self.reach_discs.resize(m, Circle::new(Vec2::ZERO, 0.0));
+        self.boxes
+            .resize(m, Aabb::from_corners(Vec2::ZERO, Vec2::ZERO));
+        // Each body, then each circle, on its own: on many threads for many bodies.
+        let copy = |body: &Body,
+                    position: &mut Vec2,
+                    motion: &mut Vec2,
+                    filter: &mut BodyFilter,
+                    reach: &mut f32| {
+            *position = body.position;
+            *motion = body.proposed;
+            *filter = body.filter;
             // Everywhere a circle can be during the step: its whole move, grown by the
             // radius and the gap.
-            self.reach.push(body.proposed.length() + gap);
-        }
-        self.reach_discs.clear();
-        let (position, reach) = (&self.position, &self.reach);
-        self.reach_discs.extend(self.circles.iter().map(|c| {
+            *reach = body.proposed.length() + gap;
+        };
+        let disc = |c: &WorkCircle, position: &[Vec2], reach: &[f32]| {
             let b = c.body as usize;
             Circle::new(position[b] + c.offset, c.radius + reach[b])
-        }));
-        self.boxes.clear();
-        self.boxes.extend(self.reach_discs.iter().map(Circle::aabb));
+        };
+        #[cfg(feature = "parallel")]
+        if n >= 2 * LOAD_PER_TASK && rayon::current_num_threads() > 1 {
+            use rayon::prelude::*;
+            (
+                bodies.par_iter(),
+                self.position.par_iter_mut(),
+                self.motion.par_iter_mut(),
+                self.filter.par_iter_mut(),
+                self.reach.par_iter_mut(),
+            )
+                .into_par_iter()
+                .with_min_len(LOAD_PER_TASK)
+                .for_each(|(body, position, motion, filter, reach)| {
+                    copy(body, position, motion, filter, reach);
+                });
+            let (position, reach) = (&self.position[..], &self.reach[..]);
+            (
+                self.circles.par_iter(),
+                self.reach_discs.par_iter_mut(),
+                self.boxes.par_iter_mut(),
+            )
+                .into_par_iter()
+                .with_min_len(LOAD_PER_TASK)
+                .for_each(|(c, d, bounds)| {
+                    *d = disc(c, position, reach);
+                    *bounds = d.aabb();
+                });
+            return;
+        }
+        for ((((body, position), motion), filter), reach) in bodies
+            .iter()
+            .zip(&mut self.position)
+            .zip(&mut self.motion)
+            .zip(&mut self.filter)
+            .zip(&mut self.reach)
+        {
+            copy(body, position, motion, filter, reach);
+        }
+        let (position, reach) = (&self.position[..], &self.reach[..]);
+        for ((c, d), bounds) in self
+            .circles
+            .iter()
+            .zip(&mut self.reach_discs)
+            .zip(&mut self.boxes)
+        {
+            *d = disc(c, position, reach);
+            *bounds = d.aabb();
+        }
     }
 
     /// The circles each circle may meet: pairs of different bodies that collide by filter

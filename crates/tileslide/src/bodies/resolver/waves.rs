@@ -14,8 +14,9 @@
 //! What no later body reads (the resolved moves, the settled memory, the flags that disturb
 //! settled bodies next step) is written once every wave has run, again on every thread.
 //!
-//! The walls near every moving circle are gathered first, on every thread, into the same
-//! memory the sequential resolve keeps (`NearWalls::around_all`); the waves only read it.
+//! The walls near every moving circle are gathered first, on the other threads, into the
+//! same memory the sequential resolve keeps (`NearWalls::around_all`), while the calling
+//! thread schedules the waves; the waves only read it.
 //!
 //! There are as many waves as the longest chain of neighbours in increasing slot order.
 //! Slots in no spatial order, as a crowd spawned at random has them, give short chains
@@ -55,14 +56,7 @@ struct Outcome {
 /// The waves' buffers, kept between resolves.
 #[derive(Clone, Debug, Default)]
 pub(super) struct Waves {
-    /// Per body, its wave ([`STILL`] for a body without a move).
-    wave: Vec<u32>,
-    /// The moving bodies by wave, in slot order within a wave.
-    order: Vec<u32>,
-    /// Per wave, where it starts in `order`; one more entry at the end.
-    starts: Vec<u32>,
-    /// Per wave, the next free place in `order` while filling it.
-    next: Vec<u32>,
+    schedule: Schedule,
     /// Per circle, its range of `near`'s walls (`(0, 0)` for still bodies).
     ranges: Vec<(u32, u32)>,
     /// The outcomes of the wave under way, in its order.
@@ -97,23 +91,40 @@ impl Resolver {
                 self.settled.remember_still(b, self.position[b]);
             }
         }
+        // The walls near each moving circle, and the waves' schedule from the rows: the
+        // schedule runs on this thread (each body's wave follows from those of the bodies
+        // before it) while the other threads gather walls.
         let (circles, motion, filter) = (&self.circles, &self.motion, &self.filter);
-        self.near.around_all(
-            &self.reach_discs,
-            |c| {
-                let b = circles[c].body as usize;
-                (motion[b] != Vec2::ZERO).then_some(filter[b].walls)
+        let shape = Shape {
+            circles,
+            first_circle: &self.first_circle,
+            motion,
+            neighbours: &self.neighbours,
+        };
+        let near = &mut self.near;
+        let reach_discs = &self.reach_discs;
+        let (schedule, ranges) = (&mut waves.schedule, &mut waves.ranges);
+        rayon::join(
+            || schedule.make(&shape),
+            || {
+                near.around_all(
+                    reach_discs,
+                    |c| {
+                        let b = circles[c].body as usize;
+                        (motion[b] != Vec2::ZERO).then_some(filter[b].walls)
+                    },
+                    gap,
+                    map,
+                    ranges,
+                );
             },
-            gap,
-            map,
-            &mut waves.ranges,
         );
-        waves.schedule(self);
         waves.moved.clear();
         waves.moved.resize(n, false);
         waves.done.resize(n, Outcome::default());
-        for w in 0..waves.starts.len().saturating_sub(1) {
-            let wave = &waves.order[waves.starts[w] as usize..waves.starts[w + 1] as usize];
+        let (starts, order) = (&waves.schedule.starts, &waves.schedule.order);
+        for w in 0..starts.len().saturating_sub(1) {
+            let wave = &order[starts[w] as usize..starts[w + 1] as usize];
             let this = &*self;
             let (ranges, moved) = (&waves.ranges, &waves.moved);
             wave.par_iter()
@@ -231,13 +242,34 @@ fn neighbour_moved(
     })
 }
 
-impl Waves {
-    /// Puts the moving bodies of `resolver` in waves.
-    fn schedule(&mut self, resolver: &Resolver) {
-        let n = resolver.position.len();
+/// Which bodies are resolved in which wave.
+#[derive(Clone, Debug, Default)]
+struct Schedule {
+    /// Per body, its wave ([`STILL`] for a body without a move).
+    wave: Vec<u32>,
+    /// The moving bodies by wave, in slot order within a wave.
+    order: Vec<u32>,
+    /// Per wave, where it starts in `order`; one more entry at the end.
+    starts: Vec<u32>,
+    /// Per wave, the next free place in `order` while filling it.
+    next: Vec<u32>,
+}
+
+/// What the schedule reads of the resolver: the bodies' circles, moves and neighbours.
+struct Shape<'a> {
+    circles: &'a [WorkCircle],
+    first_circle: &'a [u32],
+    motion: &'a [Vec2],
+    neighbours: &'a Neighbours,
+}
+
+impl Schedule {
+    /// Puts the moving bodies in waves.
+    fn make(&mut self, shape: &Shape<'_>) {
+        let n = shape.motion.len();
         self.wave.clear();
         self.wave.extend(
-            resolver
+            shape
                 .motion
                 .iter()
                 .map(|&m| if m == Vec2::ZERO { STILL } else { 0 }),
@@ -250,10 +282,10 @@ impl Waves {
                 continue;
             }
             let mut wave = 0;
-            let circles = resolver.first_circle[b] as usize..resolver.first_circle[b + 1] as usize;
+            let circles = shape.first_circle[b] as usize..shape.first_circle[b + 1] as usize;
             for c in circles {
-                for &n in resolver.neighbours.row(c) {
-                    let a = resolver.circles[n as usize].body as usize;
+                for &n in shape.neighbours.row(c) {
+                    let a = shape.circles[n as usize].body as usize;
                     let w = self.wave[a];
                     if a < b && w != STILL {
                         wave = wave.max(w + 1);
