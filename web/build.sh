@@ -64,11 +64,18 @@ size_of() {
 }
 
 # One build each, with the same settings: built together, Cargo would unify their features of
-# the core crate, and the games' (PNG tracing among them) would grow the package.
+# the core crate, and the games' (PNG tracing among them) would grow the package. The games
+# build at the same time as the packages, in a target directory of their own: each build of
+# the core crate runs on one core (one codegen unit), so two at once use both of a
+# two-core machine. Its output is shown once it is done.
+games_target=$target_dir/wasm-games
+mkdir -p "$games_target"
+cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
+    -p tileslide-games-wasm --target-dir "$games_target" "$@" >"$games_target/build.log" 2>&1 &
+games=$!
+trap 'kill "$games" 2>/dev/null || true' EXIT
 cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
     -p tileslide-wasm "$@"
-cargo build --manifest-path "$root/Cargo.toml" --release --target wasm32-unknown-unknown \
-    -p tileslide-games-wasm "$@"
 rm -rf pkg
 # --weak-refs: objects the garbage collector drops free their wasm memory through a
 # FinalizationRegistry, as well as through .free().
@@ -98,7 +105,14 @@ wasm-bindgen --target web --weak-refs --remove-name-section --out-dir pkg/speed 
     "$target_dir/wasm32-unknown-unknown/release/tileslide_wasm.wasm"
 size_of pkg/speed/tileslide_bg.wasm
 
+if ! wait "$games"; then
+    cat "$games_target/build.log" >&2
+    echo "error: the games' build failed (above)" >&2
+    exit 1
+fi
+trap - EXIT
+cat "$games_target/build.log"
 rm -rf games-pkg
 wasm-bindgen --target web --weak-refs --remove-name-section --out-dir games-pkg --out-name tileslide_games \
-    "$target_dir/wasm32-unknown-unknown/release/tileslide_games_wasm.wasm"
+    "$games_target/wasm32-unknown-unknown/release/tileslide_games_wasm.wasm"
 size_of games-pkg/tileslide_games_bg.wasm
