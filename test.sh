@@ -2,12 +2,11 @@
 # Every test of tileslide: the Rust workspace's (with the CLI's peer benchmarks, the core
 # crate's serde round trips and its `parallel` feature, whose tests compare 1, 2, 3 and 8
 # threads, and the Bevy plugin's debug drawing and hot reload), the C
-# API's in C (examples/c) and beside them the Python package's (crates/tileslide-py,
-# pytest), then the web
+# API's in C (examples/c), the Python package's (crates/tileslide-py, pytest), then the web
 # package's (web/: built from crates/tileslide-wasm, tested in Node) and the playground's
 # (web/playground, built with Vite and played in headless Chromium). Installs what the
 # Python and web builds lack (maturin, NumPy and pytest in a virtual environment in
-# target/python/py; the wasm32 target, wasm-bindgen-cli, see web/build.sh; the npm packages of
+# target/py; the wasm32 target, wasm-bindgen-cli, see web/build.sh; the npm packages of
 # web/package-lock.json).
 # Every part runs; the exit status is non-zero if any failed.
 set -uo pipefail
@@ -36,26 +35,12 @@ part() {
 # (.ci/run reads this line: its golden-release step builds with the same features.)
 test_features=tileslide-cli/peers,tileslide/serde,tileslide/parallel,tileslide-bevy/debug,tileslide-bevy/hot_reload
 part rust cargo test --workspace --no-fail-fast --features "$test_features"
-# The Python package's tests (crates/tileslide-py/test.sh: a virtual environment with
-# maturin, NumPy and pytest from PyPI, the wheel built and installed, pytest), built in a
-# target directory of their own (target/python) while the C tests build and run beside
-# them: each builds the core crate with other features than the tests above (and than each
-# other), a long compile on one core. The Python part's output follows the C part's.
-mkdir -p target
-python_start=$SECONDS
-CARGO_TARGET_DIR="$PWD/target/python" crates/tileslide-py/test.sh >target/python-test.log 2>&1 &
-python=$!
 # The C API's tests and example in C, under AddressSanitizer and UndefinedBehaviorSanitizer
 # (the system's C compiler and make; examples/c/Makefile builds the static library first).
 part c make -C examples/c test
-if wait "$python"; then
-    cat target/python-test.log
-    echo "--- test.sh: python ok ($((SECONDS - python_start)) s)"
-else
-    cat target/python-test.log >&2
-    echo "--- test.sh: python FAILED ($((SECONDS - python_start)) s)" >&2
-    status=1
-fi
+# The Python package's tests (crates/tileslide-py/test.sh: a virtual environment in
+# target/py with maturin, NumPy and pytest from PyPI, the wheel built and installed, pytest).
+part python crates/tileslide-py/test.sh
 if ! command -v node >/dev/null 2>&1; then
     echo "error: the web tests need Node.js 20.19 or later (node)" >&2
     exit 1
