@@ -64,6 +64,9 @@ struct WorkCircle {
 #[derive(Clone, Debug, Default)]
 pub(super) struct Resolver {
     circles: Vec<WorkCircle>,
+    /// Per circle, its body (`circles[c].body`), packed for the passes that read only that:
+    /// a fifth of the memory to bring in.
+    circle_body: Vec<u32>,
     /// Per body, its first circle; one more entry at the end.
     first_circle: Vec<u32>,
     position: Vec<Vec2>,
@@ -141,7 +144,7 @@ impl Resolver {
         if change == MapChange::Local {
             for (c, area) in self.boxes.iter().enumerate() {
                 if self.watch.touches(area) {
-                    self.settled.wake(self.circles[c].body as usize);
+                    self.settled.wake(self.circle_body[c] as usize);
                 }
             }
         }
@@ -213,7 +216,7 @@ impl Resolver {
         let circles = self.first_circle[b] as usize..self.first_circle[b + 1] as usize;
         for c in circles {
             for &n in self.neighbours.row(c) {
-                let other = self.circles[n as usize].body as usize;
+                let other = self.circle_body[n as usize] as usize;
                 self.settled.disturb(b, other);
             }
         }
@@ -237,6 +240,8 @@ impl Resolver {
                     }));
             }
             self.first_circle.push(self.circles.len() as u32);
+            self.circle_body.clear();
+            self.circle_body.extend(self.circles.iter().map(|c| c.body));
             self.shapes_known = true;
         }
         let n = bodies.len();
@@ -319,13 +324,13 @@ impl Resolver {
     /// and whose reach discs overlap. A row is read only for a moving body, so the rows may
     /// also pair bodies that both stay.
     fn find_neighbours(&mut self, config: &ResolveConfig, cell: f32) {
-        let (circles, filter) = (&self.circles, &self.filter);
+        let (circle_body, filter) = (&self.circle_body, &self.filter);
         self.neighbours.update(
             config.broadphase,
             &self.reach_discs,
             &self.boxes,
             cell,
-            |i| circles[i as usize].body as usize,
+            |i| circle_body[i as usize] as usize,
             |a, b| filter[a].collides(&filter[b]),
         );
     }

@@ -28,7 +28,7 @@
 use glam::Vec2;
 use rayon::prelude::*;
 
-use super::{Resolver, WorkCircle};
+use super::Resolver;
 use crate::bodies::body::Body;
 use crate::bodies::config::{ResolveConfig, ResolveReport};
 use crate::bodies::neighbours::Neighbours;
@@ -94,9 +94,9 @@ impl Resolver {
         // The walls near each moving circle, and the waves' schedule from the rows: the
         // schedule runs on this thread (each body's wave follows from those of the bodies
         // before it) while the other threads gather walls.
-        let (circles, motion, filter) = (&self.circles, &self.motion, &self.filter);
+        let (circle_body, motion, filter) = (&self.circle_body, &self.motion, &self.filter);
         let shape = Shape {
-            circles,
+            circle_body,
             first_circle: &self.first_circle,
             motion,
             neighbours: &self.neighbours,
@@ -110,7 +110,7 @@ impl Resolver {
                 near.around_all(
                     reach_discs,
                     |c| {
-                        let b = circles[c].body as usize;
+                        let b = circle_body[c] as usize;
                         (motion[b] != Vec2::ZERO).then_some(filter[b].walls)
                     },
                     gap,
@@ -161,7 +161,8 @@ impl Resolver {
                     };
                 }
             });
-        let (circles, first, neighbours) = (&self.circles, &self.first_circle, &self.neighbours);
+        let (circle_body, first, neighbours) =
+            (&self.circle_body, &self.first_circle, &self.neighbours);
         self.settled.remember_each(
             |b| {
                 let o = &done[b];
@@ -173,7 +174,7 @@ impl Resolver {
                     o.cut_short,
                 ))
             },
-            |b| neighbour_moved(b, circles, first, neighbours, moved, |a| a > b),
+            |b| neighbour_moved(b, circle_body, first, neighbours, moved, |a| a > b),
         );
         self.waves = waves;
     }
@@ -195,7 +196,7 @@ impl Resolver {
             // flags it as that neighbour moves).
             let disturbed = neighbour_moved(
                 bi,
-                &self.circles,
+                &self.circle_body,
                 &self.first_circle,
                 &self.neighbours,
                 moved,
@@ -228,7 +229,7 @@ impl Resolver {
 /// Whether a neighbour of body `b` for which `which` holds moved.
 fn neighbour_moved(
     b: usize,
-    circles: &[WorkCircle],
+    circle_body: &[u32],
     first_circle: &[u32],
     neighbours: &Neighbours,
     moved: &[bool],
@@ -236,7 +237,7 @@ fn neighbour_moved(
 ) -> bool {
     (first_circle[b] as usize..first_circle[b + 1] as usize).any(|c| {
         neighbours.row(c).iter().any(|&n| {
-            let a = circles[n as usize].body as usize;
+            let a = circle_body[n as usize] as usize;
             which(a) && moved[a]
         })
     })
@@ -255,9 +256,10 @@ struct Schedule {
     next: Vec<u32>,
 }
 
-/// What the schedule reads of the resolver: the bodies' circles, moves and neighbours.
+/// What the schedule reads of the resolver: the circles' bodies, the bodies' circles, moves
+/// and neighbours.
 struct Shape<'a> {
-    circles: &'a [WorkCircle],
+    circle_body: &'a [u32],
     first_circle: &'a [u32],
     motion: &'a [Vec2],
     neighbours: &'a Neighbours,
@@ -285,7 +287,7 @@ impl Schedule {
             let circles = shape.first_circle[b] as usize..shape.first_circle[b + 1] as usize;
             for c in circles {
                 for &n in shape.neighbours.row(c) {
-                    let a = shape.circles[n as usize].body as usize;
+                    let a = shape.circle_body[n as usize] as usize;
                     let w = self.wave[a];
                     if a < b && w != STILL {
                         wave = wave.max(w + 1);
