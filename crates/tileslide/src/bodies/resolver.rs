@@ -136,11 +136,7 @@ impl Resolver {
     ) -> ResolveReport {
         let gap = config.gap;
         self.load(bodies, gap);
-        self.find_neighbours(config, map.cell_size().min_element());
-        let change = self.watch.update(map);
-        self.near.begin(self.circles.len(), change, &self.watch);
-        self.settled
-            .begin(&self.position, change != MapChange::Everything, config);
+        let change = self.neighbours_and_memories(config, map);
         if change == MapChange::Local {
             for (c, area) in self.boxes.iter().enumerate() {
                 if self.watch.touches(area) {
@@ -180,8 +176,13 @@ impl Resolver {
             sink.begin(b as u32, start, motion);
             let mut ranges = std::mem::take(&mut self.wall_ranges);
             self.walls_near(b, gap, map, &mut ranges);
-            let end =
-                self.collide_and_slide(b as u32, &ranges, config, gap, &mut report, &mut sink);
+            let mover = Mover {
+                body: b as u32,
+                first_circle: self.first_circle[b],
+                start,
+                motion,
+            };
+            let end = self.collide_and_slide(&mover, &ranges, config, gap, &mut report, &mut sink);
             self.wall_ranges = ranges;
             self.position[b] = end;
             sink.end(b as u32, end);
@@ -320,19 +321,47 @@ impl Resolver {
         }
     }
 
-    /// The circles each circle may meet: pairs of different bodies that collide by filter
-    /// and whose reach discs overlap. A row is read only for a moving body, so the rows may
-    /// also pair bodies that both stay.
-    fn find_neighbours(&mut self, config: &ResolveConfig, cell: f32) {
-        let (circle_body, filter) = (&self.circle_body, &self.filter);
-        self.neighbours.update(
-            config.broadphase,
-            &self.reach_discs,
-            &self.boxes,
-            cell,
-            |i| circle_body[i as usize] as usize,
-            |a, b| filter[a].collides(&filter[b]),
-        );
+    /// Finds the circles each circle may meet: pairs of different bodies that collide by
+    /// filter and whose reach discs overlap (a row is read only for a moving body, so the
+    /// rows may also pair bodies that both stay). Beside it, on another thread when there
+    /// is one (the two read and write different things), tells the memories what changed
+    /// on the map since the last resolve and starts them; returns that change.
+    fn neighbours_and_memories(&mut self, config: &ResolveConfig, map: &TileMap) -> MapChange {
+        let Self {
+            circles,
+            circle_body,
+            position,
+            filter,
+            reach_discs,
+            boxes,
+            neighbours,
+            near,
+            watch,
+            settled,
+            ..
+        } = self;
+        let mut find = || {
+            neighbours.update(
+                config.broadphase,
+                reach_discs,
+                boxes,
+                map.cell_size().min_element(),
+                |i| circle_body[i as usize] as usize,
+                |a, b| filter[a].collides(&filter[b]),
+            );
+        };
+        let mut begin = || {
+            let change = watch.update(map);
+            near.begin(circles.len(), change, watch);
+            settled.begin(position, change != MapChange::Everything, config);
+            change
+        };
+        #[cfg(feature = "parallel")]
+        if rayon::current_num_threads() > 1 {
+            return rayon::join(find, begin).1;
+        }
+        find();
+        begin()
     }
 
     /// The walls near each circle of body `b`, into `ranges` (one range of `near` per
@@ -346,22 +375,22 @@ impl Resolver {
         }
     }
 
-    /// Where body `b` ends when it moves by its proposed move with collide and slide from
+    /// Where `mover` ends when it moves by its proposed move with collide and slide from
     /// where it stands, against the walls at `ranges` of `near` (one range per circle) and
     /// its neighbours where they stand.
     fn collide_and_slide<S: Sink>(
         &self,
-        b: u32,
+        mover: &Mover,
         ranges: &[(u32, u32)],
         config: &ResolveConfig,
         gap: f32,
         report: &mut ResolveReport,
         sink: &mut S,
     ) -> Vec2 {
-        let bi = b as usize;
-        let first = self.first_circle[bi] as usize;
-        let mut position = self.position[bi];
-        let mut remaining = self.motion[bi];
+        let b = mover.body;
+        let first = mover.first_circle as usize;
+        let mut position = mover.start;
+        let mut remaining = mover.motion;
         // The contact the remaining motion slides along (none for the move as proposed).
         let mut along: Option<Along> = None;
         for pass in 0..=config.passes {
@@ -370,7 +399,7 @@ impl Resolver {
             }
             sink.pass(pass, position, remaining);
             let Some((hit, obstacle, id)) =
-                self.first_contact(b, position, ranges, remaining, gap, sink)
+                self.first_contact(mover, position, ranges, remaining, gap, sink)
             else {
                 sink.free();
                 return off_contact(position, remaining, along);
@@ -440,18 +469,17 @@ impl Resolver {
         position
     }
 
-    /// The first contact of body `b` moving by `motion` from `origin`, against the walls
-    /// at `ranges` and its neighbours where they are now.
+    /// The first contact of `mover` moving by `motion` from `origin`, against the walls at
+    /// `ranges` (one per circle) and its neighbours where they are now.
     fn first_contact<S: Sink>(
         &self,
-        b: u32,
+        mover: &Mover,
         origin: Vec2,
         ranges: &[(u32, u32)],
         motion: Vec2,
         gap: f32,
         sink: &mut S,
     ) -> Option<(SweepHit, Obstacle, S::Id)> {
-        let bi = b as usize;
         // Obstacles farther than the move's length plus the contact radius are out of reach:
         // the cheap test that lets a free body skip almost every sweep.
         let reach = motion.length();
@@ -461,11 +489,8 @@ impl Resolver {
                 best = Some((hit, obstacle, id));
             }
         };
-        let first = self.first_circle[bi] as usize;
-        for (k, c) in self.circles[first..self.first_circle[bi + 1] as usize]
-            .iter()
-            .enumerate()
-        {
+        let first = mover.first_circle as usize;
+        for (k, c) in self.circles[first..first + ranges.len()].iter().enumerate() {
             let center = origin + c.offset;
             let range = ranges[k];
             for (w, wall) in (range.0..).zip(self.near.walls(range)) {
@@ -521,6 +546,17 @@ impl Resolver {
         }
         best
     }
+}
+
+/// A body about to be resolved: what its sweeps read of it.
+#[derive(Clone, Copy, Debug, Default)]
+struct Mover {
+    body: u32,
+    /// Its first circle (its others follow).
+    first_circle: u32,
+    /// Where it stands, and its proposed move.
+    start: Vec2,
+    motion: Vec2,
 }
 
 /// The contact a slide goes along: its normal, and for a wall the circle that touches it.

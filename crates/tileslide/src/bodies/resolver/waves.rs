@@ -28,10 +28,13 @@
 use glam::Vec2;
 use rayon::prelude::*;
 
-use super::Resolver;
+use std::ops::Range;
+
+use super::{Mover, Resolver};
 use crate::bodies::body::Body;
 use crate::bodies::config::{ResolveConfig, ResolveReport};
 use crate::bodies::neighbours::Neighbours;
+use crate::bodies::settled::Settled;
 use crate::bodies::trace::Recorder;
 use crate::tiles::TileMap;
 
@@ -98,8 +101,10 @@ impl Resolver {
         let shape = Shape {
             circle_body,
             first_circle: &self.first_circle,
+            position: &self.position,
             motion,
             neighbours: &self.neighbours,
+            settled: &self.settled,
         };
         let near = &mut self.near;
         let reach_discs = &self.reach_discs;
@@ -122,17 +127,17 @@ impl Resolver {
         waves.moved.clear();
         waves.moved.resize(n, false);
         waves.done.resize(n, Outcome::default());
-        let (starts, order) = (&waves.schedule.starts, &waves.schedule.order);
+        let (starts, jobs) = (&waves.schedule.starts, &waves.schedule.jobs);
         for w in 0..starts.len().saturating_sub(1) {
-            let wave = &order[starts[w] as usize..starts[w + 1] as usize];
+            let wave = &jobs[starts[w] as usize..starts[w + 1] as usize];
             let this = &*self;
             let (ranges, moved) = (&waves.ranges, &waves.moved);
             wave.par_iter()
                 .with_min_len(MIN_BODIES_PER_TASK)
-                .map(|&b| this.outcome(b, ranges, moved, config, gap))
+                .map(|job| this.outcome(job, ranges, moved, config, gap))
                 .collect_into_vec(&mut waves.outcomes);
-            for (&b, outcome) in wave.iter().zip(&waves.outcomes) {
-                let b = b as usize;
+            for (job, outcome) in wave.iter().zip(&waves.outcomes) {
+                let b = job.mover.body as usize;
                 report.moving += 1;
                 report.contact_count += outcome.contacts;
                 report.cut_short += usize::from(outcome.cut_short);
@@ -174,48 +179,55 @@ impl Resolver {
                     o.cut_short,
                 ))
             },
-            |b| neighbour_moved(b, circle_body, first, neighbours, moved, |a| a > b),
+            |b| {
+                let circles = first[b] as usize..first[b + 1] as usize;
+                neighbour_moved(circles, circle_body, neighbours, moved, |a| a > b)
+            },
         );
         self.waves = waves;
     }
 
-    /// Resolves body `b` against what stands now, as the sequential resolve does at its
+    /// Resolves `job`'s body against what stands now, as the sequential resolve does at its
     /// turn, without writing anything; `moved` tells which bodies of earlier waves moved.
     fn outcome(
         &self,
-        b: u32,
+        job: &Job,
         ranges: &[(u32, u32)],
         moved: &[bool],
         config: &ResolveConfig,
         gap: f32,
     ) -> Outcome {
-        let bi = b as usize;
-        let start = self.position[bi];
-        if let Some((contacts, cut_short)) = self.settled.kept(bi, start, self.motion[bi]) {
+        let Job {
+            ref mover,
+            circles_end,
+            kept,
+        } = *job;
+        let (b, start) = (mover.body as usize, mover.start);
+        let circles = mover.first_circle as usize..circles_end as usize;
+        if let Some((contacts, cut_short)) = kept {
             // Disturbed when a neighbour resolved before it moved (the sequential resolve
             // flags it as that neighbour moves).
             let disturbed = neighbour_moved(
-                bi,
+                circles.clone(),
                 &self.circle_body,
-                &self.first_circle,
                 &self.neighbours,
                 moved,
-                |a| a < bi,
+                |a| a < b,
             );
             if !disturbed {
                 return Outcome {
                     start,
                     end: start,
-                    contacts,
+                    contacts: contacts as usize,
                     cut_short,
                     stayed: true,
                 };
             }
         }
         let mut counts = ResolveReport::default();
-        let circles = self.first_circle[bi] as usize..self.first_circle[bi + 1] as usize;
         let mut sink: Option<&mut Recorder<'_>> = None;
-        let end = self.collide_and_slide(b, &ranges[circles], config, gap, &mut counts, &mut sink);
+        let end =
+            self.collide_and_slide(mover, &ranges[circles], config, gap, &mut counts, &mut sink);
         Outcome {
             start,
             end,
@@ -226,21 +238,33 @@ impl Resolver {
     }
 }
 
-/// Whether a neighbour of body `b` for which `which` holds moved.
+/// Whether a neighbour of a body's `circles`, in a body for which `which` holds, moved.
 fn neighbour_moved(
-    b: usize,
+    mut circles: Range<usize>,
     circle_body: &[u32],
-    first_circle: &[u32],
     neighbours: &Neighbours,
     moved: &[bool],
     which: impl Fn(usize) -> bool,
 ) -> bool {
-    (first_circle[b] as usize..first_circle[b + 1] as usize).any(|c| {
+    circles.any(|c| {
         neighbours.row(c).iter().any(|&n| {
             let a = circle_body[n as usize] as usize;
             which(a) && moved[a]
         })
     })
+}
+
+/// A moving body, with what resolving it reads of its own: copied by the schedule, in slot
+/// order into each wave's run, so that a wave reads its bodies' starts, moves and memories
+/// front to back rather than a few entries per cache line of every per-body array.
+#[derive(Clone, Copy, Debug, Default)]
+struct Job {
+    mover: Mover,
+    /// One past its last circle.
+    circles_end: u32,
+    /// If the settled memory keeps it where it is unless a lower neighbour moves: its last
+    /// resolve's contacts, and whether it was cut short.
+    kept: Option<(u32, bool)>,
 }
 
 /// Which bodies are resolved in which wave.
@@ -249,20 +273,22 @@ struct Schedule {
     /// Per body, its wave ([`STILL`] for a body without a move).
     wave: Vec<u32>,
     /// The moving bodies by wave, in slot order within a wave.
-    order: Vec<u32>,
-    /// Per wave, where it starts in `order`; one more entry at the end.
+    jobs: Vec<Job>,
+    /// Per wave, where it starts in `jobs`; one more entry at the end.
     starts: Vec<u32>,
-    /// Per wave, the next free place in `order` while filling it.
+    /// Per wave, the next free place in `jobs` while filling it.
     next: Vec<u32>,
 }
 
-/// What the schedule reads of the resolver: the circles' bodies, the bodies' circles, moves
-/// and neighbours.
+/// What the schedule reads of the resolver: the circles' bodies, the bodies' circles,
+/// positions, moves and neighbours, and the settled memory.
 struct Shape<'a> {
     circle_body: &'a [u32],
     first_circle: &'a [u32],
+    position: &'a [Vec2],
     motion: &'a [Vec2],
     neighbours: &'a Neighbours,
+    settled: &'a Settled,
 }
 
 impl Schedule {
@@ -305,15 +331,29 @@ impl Schedule {
             self.starts[w] += self.starts[w - 1];
         }
         let total = self.starts.last().copied().unwrap_or(0) as usize;
-        self.order.clear();
-        self.order.resize(total, 0);
-        // Filled in slot order, so each wave's bodies are in slot order.
+        self.jobs.clear();
+        self.jobs.resize(total, Job::default());
+        // Filled in slot order, so each wave's bodies are in slot order (and each per-body
+        // array is read front to back).
         self.next.clear();
         self.next.extend_from_slice(&self.starts);
         for b in 0..n {
             if self.wave[b] != STILL {
                 let slot = &mut self.next[self.wave[b] as usize];
-                self.order[*slot as usize] = b as u32;
+                let (start, motion) = (shape.position[b], shape.motion[b]);
+                let kept = shape.settled.kept(b, start, motion);
+                self.jobs[*slot as usize] = Job {
+                    mover: Mover {
+                        body: b as u32,
+                        first_circle: shape.first_circle[b],
+                        start,
+                        motion,
+                    },
+                    circles_end: shape.first_circle[b + 1],
+                    kept: kept.map(|(contacts, cut_short)| {
+                        (u32::try_from(contacts).unwrap_or(u32::MAX), cut_short)
+                    }),
+                };
                 *slot += 1;
             }
         }
