@@ -60,6 +60,9 @@ pub(super) struct Neighbours {
     /// forgotten.
     grown: Vec<Aabb>,
     found_with: Option<PairMethod>,
+    /// How many times the candidates were found (so that what is built from them can tell
+    /// when to build again).
+    searches: u64,
 }
 
 impl Neighbours {
@@ -106,6 +109,7 @@ impl Neighbours {
                 a != b && collides(a, b)
             });
             self.candidate_rows(boxes.len());
+            self.searches += 1;
         }
         let n = boxes.len();
         self.list.resize(self.candidates.len(), 0);
@@ -151,6 +155,21 @@ impl Neighbours {
         // A row keeps the broadphase's order: `first_contact` breaks ties between neighbours
         // by index, so the result does not depend on it (and sorting every row cost a
         // mispredicted branch or two per circle in a dense crowd).
+    }
+
+    /// The candidates of circle `c`: a superset of its row, unchanged until the candidates
+    /// are found again (see [`searches`](Self::searches)).
+    #[cfg(feature = "parallel")]
+    #[inline]
+    pub fn candidates(&self, c: usize) -> &[u32] {
+        &self.candidates[self.first[c] as usize..self.first[c + 1] as usize]
+    }
+
+    /// How many times the candidates were found so far: the candidates are the same as
+    /// long as this is.
+    #[cfg(feature = "parallel")]
+    pub fn searches(&self) -> u64 {
+        self.searches
     }
 
     /// The circles circle `c` may meet.
@@ -208,12 +227,12 @@ impl Candidates<'_> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use glam::Vec2;
 
     /// Numbers in [0, 1) from a linear congruential generator seeded with `seed`.
-    fn uniform(seed: u64) -> impl FnMut() -> f32 {
+    pub(in crate::bodies) fn uniform(seed: u64) -> impl FnMut() -> f32 {
         let mut state = seed;
         move || {
             state = state

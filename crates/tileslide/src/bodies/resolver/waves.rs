@@ -4,26 +4,30 @@
 //! Resolving a body reads the walls near it, its own start and move, and the positions of
 //! its neighbours (the rows of `neighbours`: the bodies whose reach discs touch its own):
 //! in slot order, those in lower slots where they ended, the others where they started.
-//! Nothing else: two bodies that are not neighbours never read each other. So the moving
-//! bodies are put in waves: a body's wave is one past the last wave of its moving
-//! neighbours in lower slots (wave 0 if it has none). Bodies of one wave are never
-//! neighbours, and when a wave runs, each of its bodies' lower neighbours has ended (an
-//! earlier wave) and each higher one has not started (a later wave): it reads exactly what
-//! it reads in slot order. The bodies of a wave are resolved on every thread, each into an
-//! [`Outcome`]; the calling thread then writes each one's end and the report's counts.
-//! What no later body reads (the resolved moves, the settled memory, the flags that disturb
-//! settled bodies next step) is written once every wave has run, again on every thread.
+//! Nothing else: two bodies that are not neighbours never read each other. So the bodies
+//! are put in waves: a body's wave is one past the last wave of its candidates in lower
+//! slots (wave 0 if it has none), the candidates being the superset of its rows that the
+//! neighbours keep for several steps. Bodies of one wave are never neighbours, and when a
+//! wave runs, each of its bodies' lower neighbours has ended (an earlier wave) and each
+//! higher one has not started (a later wave): it reads exactly what it reads in slot order.
+//! The moving bodies of a wave are resolved on every thread, each into an [`Outcome`]; the
+//! calling thread then writes each one's end and the report's counts. What no later body
+//! reads (the resolved moves, the settled memory, the flags that disturb settled bodies
+//! next step) is written once every wave has run, again on every thread.
 //!
-//! The walls near every moving circle are gathered first, on the other threads, into the
-//! same memory the sequential resolve keeps (`NearWalls::around_all`), while the calling
-//! thread schedules the waves; the waves only read it.
+//! Made from the candidates rather than the rows, and for every body whether it moves or
+//! not, the schedule holds for every step until the candidates are found again (about
+//! every fifth step in the crowd scene), so it is made only then; it has more waves than
+//! the rows would give, as the candidates chain further. The walls near every moving
+//! circle are gathered first, on the other threads, into the same memory the sequential
+//! resolve keeps (`NearWalls::around_all`), while the calling thread makes the schedule
+//! when it is due; the waves only read it.
 //!
-//! There are as many waves as the longest chain of neighbours in increasing slot order.
+//! There are as many waves as the longest chain of candidates in increasing slot order.
 //! Slots in no spatial order, as a crowd spawned at random has them, give short chains
-//! (8 or 9 waves a step for the crowd scene's 50,000 circles, 4 or 5 for
-//! 10,000); bodies added one after another along a
-//! packed queue give one body a wave, and the resolve then runs one body at a time, with
-//! the same result, no faster than on one thread.
+//! (14 to 21 waves for the crowd scene's 50,000 circles, 6 to 8 for 10,000); bodies added
+//! one after another along a packed queue give one body a wave, and the resolve then runs
+//! one body at a time, with the same result, no faster than on one thread.
 
 use glam::Vec2;
 use rayon::prelude::*;
@@ -34,16 +38,12 @@ use super::{Mover, Resolver};
 use crate::bodies::body::Body;
 use crate::bodies::config::{ResolveConfig, ResolveReport};
 use crate::bodies::neighbours::Neighbours;
-use crate::bodies::settled::Settled;
 use crate::bodies::trace::Recorder;
 use crate::tiles::TileMap;
 
 /// Bodies a task resolves at least: a task hand-over costs about as much as resolving a
 /// free body.
 const MIN_BODIES_PER_TASK: usize = 32;
-
-/// Wave of a body that does not move.
-const STILL: u32 = u32::MAX;
 
 /// What resolving one body of a wave found.
 #[derive(Clone, Copy, Debug, Default)]
@@ -62,8 +62,8 @@ pub(super) struct Waves {
     schedule: Schedule,
     /// Per circle, its range of `near`'s walls (`(0, 0)` for still bodies).
     ranges: Vec<(u32, u32)>,
-    /// The outcomes of the wave under way, in its order.
-    outcomes: Vec<Outcome>,
+    /// The outcomes of the wave under way, in its order (`None` for still bodies).
+    outcomes: Vec<Option<Outcome>>,
     /// Per body, its outcome (for moving bodies), and whether it moved.
     done: Vec<Outcome>,
     moved: Vec<bool>,
@@ -94,17 +94,14 @@ impl Resolver {
                 self.settled.remember_still(b, self.position[b]);
             }
         }
-        // The walls near each moving circle, and the waves' schedule from the rows: the
-        // schedule runs on this thread (each body's wave follows from those of the bodies
-        // before it) while the other threads gather walls.
+        // The walls near each moving circle, and the waves' schedule when the candidates
+        // were found again: the schedule runs on this thread (each body's wave follows from
+        // those of the bodies before it) while the other threads gather walls.
         let (circle_body, motion, filter) = (&self.circle_body, &self.motion, &self.filter);
         let shape = Shape {
             circle_body,
             first_circle: &self.first_circle,
-            position: &self.position,
-            motion,
             neighbours: &self.neighbours,
-            settled: &self.settled,
         };
         let near = &mut self.near;
         let reach_discs = &self.reach_discs;
@@ -127,17 +124,19 @@ impl Resolver {
         waves.moved.clear();
         waves.moved.resize(n, false);
         waves.done.resize(n, Outcome::default());
-        let (starts, jobs) = (&waves.schedule.starts, &waves.schedule.jobs);
+        let (starts, order) = (&waves.schedule.starts, &waves.schedule.order);
         for w in 0..starts.len().saturating_sub(1) {
-            let wave = &jobs[starts[w] as usize..starts[w + 1] as usize];
+            let wave = &order[starts[w] as usize..starts[w + 1] as usize];
             let this = &*self;
             let (ranges, moved) = (&waves.ranges, &waves.moved);
             wave.par_iter()
                 .with_min_len(MIN_BODIES_PER_TASK)
-                .map(|job| this.outcome(job, ranges, moved, config, gap))
+                .map(|&b| this.outcome(b, ranges, moved, config, gap))
                 .collect_into_vec(&mut waves.outcomes);
-            for (job, outcome) in wave.iter().zip(&waves.outcomes) {
-                let b = job.mover.body as usize;
+            for (&b, outcome) in wave.iter().zip(&waves.outcomes) {
+                let (b, Some(outcome)) = (b as usize, outcome) else {
+                    continue;
+                };
                 report.moving += 1;
                 report.contact_count += outcome.contacts;
                 report.cut_short += usize::from(outcome.cut_short);
@@ -147,7 +146,7 @@ impl Resolver {
             }
             #[cfg(test)]
             {
-                self.skipped += waves.outcomes.iter().filter(|o| o.stayed).count();
+                self.skipped += waves.outcomes.iter().flatten().filter(|o| o.stayed).count();
             }
         }
         // What later bodies do not read, for every body at once.
@@ -187,24 +186,25 @@ impl Resolver {
         self.waves = waves;
     }
 
-    /// Resolves `job`'s body against what stands now, as the sequential resolve does at its
-    /// turn, without writing anything; `moved` tells which bodies of earlier waves moved.
+    /// Resolves body `b` against what stands now, as the sequential resolve does at its
+    /// turn, without writing anything (`None` for a body without a move); `moved` tells
+    /// which bodies of earlier waves moved.
     fn outcome(
         &self,
-        job: &Job,
+        b: u32,
         ranges: &[(u32, u32)],
         moved: &[bool],
         config: &ResolveConfig,
         gap: f32,
-    ) -> Outcome {
-        let Job {
-            ref mover,
-            circles_end,
-            kept,
-        } = *job;
-        let (b, start) = (mover.body as usize, mover.start);
-        let circles = mover.first_circle as usize..circles_end as usize;
-        if let Some((contacts, cut_short)) = kept {
+    ) -> Option<Outcome> {
+        let bi = b as usize;
+        let motion = self.motion[bi];
+        if motion == Vec2::ZERO {
+            return None;
+        }
+        let start = self.position[bi];
+        let circles = self.first_circle[bi] as usize..self.first_circle[bi + 1] as usize;
+        if let Some((contacts, cut_short)) = self.settled.kept(bi, start, motion) {
             // Disturbed when a neighbour resolved before it moved (the sequential resolve
             // flags it as that neighbour moves).
             let disturbed = neighbour_moved(
@@ -212,29 +212,41 @@ impl Resolver {
                 &self.circle_body,
                 &self.neighbours,
                 moved,
-                |a| a < b,
+                |a| a < bi,
             );
             if !disturbed {
-                return Outcome {
+                return Some(Outcome {
                     start,
                     end: start,
-                    contacts: contacts as usize,
+                    contacts,
                     cut_short,
                     stayed: true,
-                };
+                });
             }
         }
         let mut counts = ResolveReport::default();
         let mut sink: Option<&mut Recorder<'_>> = None;
-        let end =
-            self.collide_and_slide(mover, &ranges[circles], config, gap, &mut counts, &mut sink);
-        Outcome {
+        let mover = Mover {
+            body: b,
+            first_circle: circles.start as u32,
+            start,
+            motion,
+        };
+        let end = self.collide_and_slide(
+            &mover,
+            &ranges[circles],
+            config,
+            gap,
+            &mut counts,
+            &mut sink,
+        );
+        Some(Outcome {
             start,
             end,
             contacts: counts.contact_count,
             cut_short: counts.cut_short > 0,
             stayed: false,
-        }
+        })
     }
 }
 
@@ -254,69 +266,53 @@ fn neighbour_moved(
     })
 }
 
-/// A moving body, with what resolving it reads of its own: copied by the schedule, in slot
-/// order into each wave's run, so that a wave reads its bodies' starts, moves and memories
-/// front to back rather than a few entries per cache line of every per-body array.
-#[derive(Clone, Copy, Debug, Default)]
-struct Job {
-    mover: Mover,
-    /// One past its last circle.
-    circles_end: u32,
-    /// If the settled memory keeps it where it is unless a lower neighbour moves: its last
-    /// resolve's contacts, and whether it was cut short.
-    kept: Option<(u32, bool)>,
-}
-
-/// Which bodies are resolved in which wave.
+/// Which bodies are resolved in which wave: made from the neighbours' candidates, a
+/// superset of every row until they are found again, so one schedule serves every step
+/// until then, whichever bodies move.
 #[derive(Clone, Debug, Default)]
 struct Schedule {
-    /// Per body, its wave ([`STILL`] for a body without a move).
+    /// Per body, its wave.
     wave: Vec<u32>,
-    /// The moving bodies by wave, in slot order within a wave.
-    jobs: Vec<Job>,
-    /// Per wave, where it starts in `jobs`; one more entry at the end.
+    /// The bodies by wave, in slot order within a wave.
+    order: Vec<u32>,
+    /// Per wave, where it starts in `order`; one more entry at the end.
     starts: Vec<u32>,
-    /// Per wave, the next free place in `jobs` while filling it.
+    /// Per wave, the next free place in `order` while filling it.
     next: Vec<u32>,
+    /// The candidates' search the schedule was made for (see [`Neighbours::searches`]).
+    made_for: Option<u64>,
 }
 
-/// What the schedule reads of the resolver: the circles' bodies, the bodies' circles,
-/// positions, moves and neighbours, and the settled memory.
+/// What the schedule reads of the resolver: the circles' bodies, the bodies' circles and
+/// the neighbours' candidates.
 struct Shape<'a> {
     circle_body: &'a [u32],
     first_circle: &'a [u32],
-    position: &'a [Vec2],
-    motion: &'a [Vec2],
     neighbours: &'a Neighbours,
-    settled: &'a Settled,
 }
 
 impl Schedule {
-    /// Puts the moving bodies in waves.
+    /// Puts the bodies in waves, unless the candidates are those it was made for.
     fn make(&mut self, shape: &Shape<'_>) {
-        let n = shape.motion.len();
+        let n = shape.first_circle.len().saturating_sub(1);
+        let searches = shape.neighbours.searches();
+        if self.made_for == Some(searches) && self.wave.len() == n {
+            return;
+        }
+        self.made_for = Some(searches);
         self.wave.clear();
-        self.wave.extend(
-            shape
-                .motion
-                .iter()
-                .map(|&m| if m == Vec2::ZERO { STILL } else { 0 }),
-        );
+        self.wave.resize(n, 0);
         // Counts per wave first, one place to the right: the running sums are the starts.
         self.starts.clear();
         self.starts.push(0);
         for b in 0..n {
-            if self.wave[b] == STILL {
-                continue;
-            }
             let mut wave = 0;
             let circles = shape.first_circle[b] as usize..shape.first_circle[b + 1] as usize;
             for c in circles {
-                for &n in shape.neighbours.row(c) {
+                for &n in shape.neighbours.candidates(c) {
                     let a = shape.circle_body[n as usize] as usize;
-                    let w = self.wave[a];
-                    if a < b && w != STILL {
-                        wave = wave.max(w + 1);
+                    if a < b {
+                        wave = wave.max(self.wave[a] + 1);
                     }
                 }
             }
@@ -330,32 +326,93 @@ impl Schedule {
         for w in 1..self.starts.len() {
             self.starts[w] += self.starts[w - 1];
         }
-        let total = self.starts.last().copied().unwrap_or(0) as usize;
-        self.jobs.clear();
-        self.jobs.resize(total, Job::default());
-        // Filled in slot order, so each wave's bodies are in slot order (and each per-body
-        // array is read front to back).
+        self.order.clear();
+        self.order.resize(n, 0);
+        // Filled in slot order, so each wave's bodies are in slot order.
         self.next.clear();
         self.next.extend_from_slice(&self.starts);
         for b in 0..n {
-            if self.wave[b] != STILL {
-                let slot = &mut self.next[self.wave[b] as usize];
-                let (start, motion) = (shape.position[b], shape.motion[b]);
-                let kept = shape.settled.kept(b, start, motion);
-                self.jobs[*slot as usize] = Job {
-                    mover: Mover {
-                        body: b as u32,
-                        first_circle: shape.first_circle[b],
-                        start,
-                        motion,
-                    },
-                    circles_end: shape.first_circle[b + 1],
-                    kept: kept.map(|(contacts, cut_short)| {
-                        (u32::try_from(contacts).unwrap_or(u32::MAX), cut_short)
-                    }),
-                };
-                *slot += 1;
+            let slot = &mut self.next[self.wave[b] as usize];
+            self.order[*slot as usize] = b as u32;
+            *slot += 1;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bodies::neighbours::tests::uniform;
+    use crate::io::ascii;
+    use crate::{BodyDesc, BodyShape};
+
+    /// 900 discs at random in a walled 32 × 32 room, each with a velocity of its own (under
+    /// 0.09 cells a step) and still at random one step in four, stepped on two threads: after every
+    /// resolve, whether its schedule was made for it or kept from an earlier step, no two
+    /// neighbours share a wave and every body's lower neighbours come in earlier waves.
+    #[test]
+    fn a_kept_schedule_still_puts_lower_neighbours_first_and_neighbours_apart() {
+        let text: Vec<String> = (0..32)
+            .map(|y| {
+                (0..32)
+                    .map(|x| if x % 31 == 0 || y % 31 == 0 { '#' } else { '.' })
+                    .collect()
+            })
+            .collect();
+        let map = ascii::parse(&text.join("\n"), "room.txt", 1.0).unwrap_or_else(|e| panic!("{e}"));
+        let mut rand = uniform(0x5eed_0f0a_07e5);
+        let shape = BodyShape::circle(0.3).unwrap_or_else(|e| panic!("{e}"));
+        let mut bodies: Vec<Body> = (0..900)
+            .map(|_| {
+                let at = Vec2::new(1.5 + 29.0 * rand(), 1.5 + 29.0 * rand());
+                Body::new(BodyDesc::new(at, shape.clone()))
+            })
+            .collect();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(2)
+            .build()
+            .unwrap_or_else(|e| panic!("{e}"));
+        let mut resolver = Resolver::default();
+        let config = ResolveConfig::default();
+        let (mut made, mut kept) = (0, 0);
+        let mut last = None;
+        let velocity: Vec<Vec2> = (0..bodies.len())
+            .map(|_| Vec2::new(rand() - 0.5, rand() - 0.5) * 0.12)
+            .collect();
+        for step in 0..40 {
+            for (body, &v) in bodies.iter_mut().zip(&velocity) {
+                body.proposed = if rand() < 0.25 { Vec2::ZERO } else { v };
+            }
+            let mut refs: Vec<&mut Body> = bodies.iter_mut().collect();
+            pool.install(|| resolver.resolve(&mut refs, &config, &map));
+            let schedule = &resolver.waves.schedule;
+            if schedule.made_for == last {
+                kept += 1;
+            } else {
+                made += 1;
+            }
+            last = schedule.made_for;
+            let wave = &schedule.wave;
+            for b in 0..bodies.len() {
+                let circles =
+                    resolver.first_circle[b] as usize..resolver.first_circle[b + 1] as usize;
+                for c in circles {
+                    for &n in resolver.neighbours.row(c) {
+                        let a = resolver.circle_body[n as usize] as usize;
+                        assert_ne!(wave[a], wave[b], "step {step}: neighbours {a} and {b}");
+                        if a < b {
+                            assert!(wave[a] < wave[b], "step {step}: {a} after {b}");
+                        }
+                    }
+                }
+            }
+            for body in &mut bodies {
+                body.position += body.resolved;
             }
         }
+        assert!(
+            made >= 2 && kept >= 10,
+            "made {made} times, kept {kept} times"
+        );
     }
 }
