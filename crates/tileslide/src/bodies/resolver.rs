@@ -549,7 +549,7 @@ impl Resolver {
 }
 
 /// A body about to be resolved: what its sweeps read of it.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 struct Mover {
     body: u32,
     /// Its first circle (its others follow).

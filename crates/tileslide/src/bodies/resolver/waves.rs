@@ -29,10 +29,10 @@
 //! one after another along a packed queue give one body a wave, and the resolve then runs
 //! one body at a time, with the same result, no faster than on one thread.
 
+use std::ops::Range;
+
 use glam::Vec2;
 use rayon::prelude::*;
-
-use std::ops::Range;
 
 use super::{Mover, Resolver};
 use crate::bodies::body::Body;
@@ -228,7 +228,7 @@ impl Resolver {
         let mut sink: Option<&mut Recorder<'_>> = None;
         let mover = Mover {
             body: b,
-            first_circle: circles.start as u32,
+            first_circle: self.first_circle[bi],
             start,
             motion,
         };
@@ -309,8 +309,8 @@ impl Schedule {
             let mut wave = 0;
             let circles = shape.first_circle[b] as usize..shape.first_circle[b + 1] as usize;
             for c in circles {
-                for &n in shape.neighbours.candidates(c) {
-                    let a = shape.circle_body[n as usize] as usize;
+                for &other in shape.neighbours.candidates(c) {
+                    let a = shape.circle_body[other as usize] as usize;
                     if a < b {
                         wave = wave.max(self.wave[a] + 1);
                     }
