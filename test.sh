@@ -36,8 +36,12 @@ part() {
 test_features=tileslide-cli/peers,tileslide/serde,tileslide/parallel,tileslide-bevy/debug,tileslide-bevy/hot_reload
 part rust cargo test --workspace --no-fail-fast --features "$test_features"
 # The C API's tests and example in C, under AddressSanitizer and UndefinedBehaviorSanitizer
-# (the system's C compiler and make; examples/c/Makefile builds the static library first).
-part c make -C examples/c test
+# (the system's C compiler and make), against the C library of the Rust tests' build: the
+# libraries and tests of the whole workspace with the same features, which Cargo finds built
+# (the C library's own `cargo build -p tileslide-capi` would build the core crate again,
+# with fewer features, for about a minute).
+part c make -C examples/c test \
+    CAPI_CARGO_ARGS="--workspace --lib --tests --features $test_features"
 # The Python package's tests (crates/tileslide-py/test.sh: a virtual environment in
 # target/py with maturin, NumPy and pytest from PyPI, the wheel built and installed, pytest).
 part python crates/tileslide-py/test.sh

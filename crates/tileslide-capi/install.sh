@@ -6,6 +6,10 @@
 #   cc app.c $(PKG_CONFIG_PATH=PREFIX/lib/pkgconfig pkg-config --cflags --libs tileslide)
 #
 # usage: crates/tileslide-capi/install.sh PREFIX [--debug]
+#
+# CAPI_CARGO_ARGS, when set, replaces `-p tileslide-capi` as what cargo builds: ./test.sh
+# sets it to the workspace's test build, whose library (the same code, with the features the
+# test build turns on) is then already built.
 set -eu
 
 if [ $# -lt 1 ]; then
@@ -21,10 +25,12 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 mkdir -p "$prefix"
 prefix=$(cd "$prefix" && pwd)
 
+# Word-split on purpose: a list of cargo arguments.
+# shellcheck disable=SC2086
 if [ "$profile" = release ]; then
-    cargo build --manifest-path "$root/Cargo.toml" --release -p tileslide-capi
+    cargo build --manifest-path "$root/Cargo.toml" --release ${CAPI_CARGO_ARGS:--p tileslide-capi}
 else
-    cargo build --manifest-path "$root/Cargo.toml" -p tileslide-capi
+    cargo build --manifest-path "$root/Cargo.toml" ${CAPI_CARGO_ARGS:--p tileslide-capi}
 fi
 target_dir=$(cargo metadata --manifest-path "$root/Cargo.toml" --format-version 1 --no-deps \
     | sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')
