@@ -94,6 +94,8 @@ pub mod io;
 pub mod limits;
 mod owner;
 mod path;
+#[cfg(feature = "parallel")]
+mod prefetch;
 mod query;
 mod snapshot;
 mod tiles;

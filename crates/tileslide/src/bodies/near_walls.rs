@@ -169,6 +169,16 @@ impl NearWalls {
         }));
     }
 
+    /// Asks the processor to bring the walls of `range` into its caches (see
+    /// [`prefetch`](crate::prefetch)).
+    #[cfg(feature = "parallel")]
+    pub fn prefetch(&self, (start, end): (u32, u32)) {
+        let per_line = (64 / std::mem::size_of::<Capsule>()).max(1);
+        for k in (start as usize..end as usize).step_by(per_line) {
+            crate::prefetch::prefetch(&self.pool, k);
+        }
+    }
+
     /// The walls at a range [`Self::around`] returned.
     #[inline]
     pub fn walls(&self, (start, end): (u32, u32)) -> &[Capsule] {

@@ -172,6 +172,23 @@ impl Neighbours {
         self.searches
     }
 
+    /// Asks the processor to bring circle `c`'s row's place and length into its caches
+    /// (see [`prefetch`](crate::prefetch)).
+    #[cfg(feature = "parallel")]
+    pub fn prefetch_row_place(&self, c: usize) {
+        crate::prefetch::prefetch(&self.first, c);
+        crate::prefetch::prefetch(&self.len, c);
+    }
+
+    /// Asks the processor to bring circle `c`'s row into its caches (its first entries: a
+    /// row is a few entries long).
+    #[cfg(feature = "parallel")]
+    pub fn prefetch_row(&self, c: usize) {
+        if let Some(&start) = self.first.get(c) {
+            crate::prefetch::prefetch(&self.list, start as usize);
+        }
+    }
+
     /// The circles circle `c` may meet.
     #[inline]
     pub fn row(&self, c: usize) -> &[u32] {

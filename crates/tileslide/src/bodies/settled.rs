@@ -120,6 +120,14 @@ impl Settled {
         kept.is_some()
     }
 
+    /// Asks the processor to bring body `b`'s memory into its caches (see
+    /// [`prefetch`](crate::prefetch)).
+    #[cfg(feature = "parallel")]
+    pub fn prefetch(&self, b: usize) {
+        crate::prefetch::prefetch(&self.bodies, b);
+        crate::prefetch::prefetch(&self.disturbed, b);
+    }
+
     /// Whether body `b` stays as [`stays`](Self::stays) tells, without counting it: if so,
     /// its last resolve's contacts and whether it was cut short.
     pub fn kept(&self, b: usize, start: Vec2, motion: Vec2) -> Option<(usize, bool)> {
