@@ -172,8 +172,8 @@ impl TileMap {
         filter: &QueryFilter,
         out: &mut Vec<Option<RayHit>>,
     ) {
-        out.clear();
         if !self.batch_walks(filter) {
+            out.clear();
             #[cfg(feature = "parallel")]
             if rays.len() >= 2 * RAYS_PER_TASK && rayon::current_num_threads() > 1 {
                 use rayon::prelude::*;
@@ -186,6 +186,11 @@ impl TileMap {
             out.extend(rays.iter().map(|&ray| self.cast_ray(ray, filter)));
             return;
         }
+        // The answers' slots: a reused buffer is only cut or grown here, and each block
+        // of answers is cleared by the task that answers it (below), in its cache and on
+        // its thread, not all of it on the calling thread first (a million answers are
+        // tens of megabytes).
+        out.truncate(rays.len());
         out.resize(rays.len(), None);
         #[cfg(feature = "parallel")]
         if rays.len() >= 2 * RAYS_PER_TASK && rayon::current_num_threads() > 1 {
@@ -200,8 +205,11 @@ impl TileMap {
         self.walk_fastest(rays, filter, out);
     }
 
-    /// [`walk`](Self::walk) on the widest instruction set this processor has.
+    /// [`walk`](Self::walk) on the widest instruction set this processor has, `out` cleared
+    /// first.
     fn walk_fastest(&self, rays: &[Ray], filter: &QueryFilter, out: &mut [Option<RayHit>]) {
+        // A miss is answered by leaving its slot as it is.
+        out.fill(None);
         #[cfg(target_arch = "x86_64")]
         if has_avx2() {
             // SAFETY: `walk_avx2` is `walk` compiled for AVX2 (with BMI1, BMI2, LZCNT and
@@ -282,7 +290,7 @@ impl TileMap {
                 while stopped != 0 {
                     let k = stopped.trailing_zeros() as usize;
                     stopped &= stopped - 1;
-                    // A miss is answered already: `out` starts as `None`.
+                    // A miss is answered already: `out` starts as `None` (`walk_fastest`).
                     let status = group.status[k];
                     let ray = group.ray[k];
                     if let (true, Some(&r), Some(slot)) = (
