@@ -80,6 +80,56 @@ pub struct ThreadsReport {
     pub identical: bool,
     /// Whether the crowd ended clean (no overlap, no circle in a wall) on every pool size.
     pub crowd_clean: bool,
+    /// The share of the machine's CPU time that its host took while the runs ran (see
+    /// [`CpuTicks::steal_percent`]), in percent; `None` where `/proc/stat` cannot be read.
+    pub host_steal_percent: Option<f64>,
+}
+
+/// The machine's CPU time so far, in clock ticks, from the first line of `/proc/stat`
+/// (Linux): what its processors spent busy (user, nice, system, irq and softirq time) and
+/// what a virtual machine's host took from them (steal time).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CpuTicks {
+    /// Busy time.
+    pub busy: u64,
+    /// Steal time.
+    pub steal: u64,
+}
+
+impl CpuTicks {
+    /// The ticks so far, or `None` where `/proc/stat` cannot be read.
+    #[must_use]
+    pub fn now() -> Option<Self> {
+        Self::parse(&std::fs::read_to_string("/proc/stat").ok()?)
+    }
+
+    /// The ticks of the `cpu` line of a `/proc/stat` text, or `None` if it has none.
+    #[must_use]
+    pub fn parse(stat: &str) -> Option<Self> {
+        let line = stat.lines().find(|l| l.starts_with("cpu "))?;
+        let v: Vec<u64> = line
+            .split_whitespace()
+            .skip(1)
+            .map(|x| x.parse().ok())
+            .collect::<Option<_>>()?;
+        let field = |k: usize| v.get(k).copied();
+        Some(Self {
+            busy: field(0)? + field(1)? + field(2)? + field(5)? + field(6)?,
+            steal: field(7)?,
+        })
+    }
+
+    /// Of the CPU time the machine's threads ran or were kept from running by the host
+    /// between `self` and `later`, the share the host kept, in percent (`None` when no time
+    /// passed). On a shared virtual machine, a run with much steal time is slower by about
+    /// that much, and more so with more threads: its figures say less.
+    #[must_use]
+    pub fn steal_percent(self, later: Self) -> Option<f64> {
+        let busy = later.busy.checked_sub(self.busy)?;
+        let steal = later.steal.checked_sub(self.steal)?;
+        let total = busy + steal;
+        (total > 0).then(|| 100.0 * steal as f64 / total as f64)
+    }
 }
 
 /// Why a benchmark could not run.
@@ -188,6 +238,7 @@ pub fn run_threads(
     // The answers' buffer, reused from pass to pass as a game reuses its own (a fresh one
     // is 40 MB of page faults).
     let mut hits = Vec::new();
+    let ticks = CpuTicks::now();
     for _ in 0..config.passes {
         for (p, pool) in pools.iter().enumerate() {
             let (ms, sum) = pool.install(|| cast(&map, &rays, &mut hits));
@@ -228,11 +279,15 @@ pub fn run_threads(
         }
     }
     let identical = sums.iter().all(|s| s.iter().all(|x| *x == s[0]));
+    let host_steal_percent = ticks
+        .zip(CpuTicks::now())
+        .and_then(|(before, after)| before.steal_percent(after));
     Ok(ThreadsReport {
         config: config.clone(),
         rows,
         identical,
         crowd_clean,
+        host_steal_percent,
     })
 }
 
@@ -493,6 +548,34 @@ fn resident_bytes() -> Option<u64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The `cpu` line's busy fields (user, nice, system, irq, softirq) and steal, whatever
+    /// the lines around it; the steal share of busy plus steal between two readings.
+    #[test]
+    fn cpu_ticks_read_busy_and_steal_time_from_proc_stat() {
+        let stat = "cpu  100 5 20 900 7 3 2 30 0 0\ncpu0 50 2 10 450 3 1 1 15 0 0\nintr 1 2\n";
+        let before = CpuTicks::parse(stat).unwrap();
+        assert_eq!(
+            before,
+            CpuTicks {
+                busy: 130,
+                steal: 30
+            }
+        );
+        let after = CpuTicks::parse("cpu  190 5 30 950 7 3 2 70 0 0\n").unwrap();
+        assert_eq!(
+            after,
+            CpuTicks {
+                busy: 230,
+                steal: 70
+            }
+        );
+        let share = before.steal_percent(after).unwrap();
+        assert!((share - 100.0 * 40.0 / 140.0).abs() < 1e-9, "{share}");
+        assert_eq!(before.steal_percent(before), None);
+        assert_eq!(CpuTicks::parse("intr 1 2\n"), None);
+        assert_eq!(CpuTicks::parse("cpu  1 2 3\n"), None);
+    }
 
     #[test]
     fn a_small_run_is_identical_on_every_pool_size() {

@@ -542,6 +542,13 @@ fn threads_bench(config: &ThreadsConfig, json: bool) -> Result<()> {
         yes(report.identical),
         yes(report.crowd_clean)
     );
+    match report.host_steal_percent {
+        Some(steal) => println!(
+            "host steal time over the runs: {steal:.1} % of the CPU time used or taken \
+             (/proc/stat; on a shared virtual machine, read the speed-ups of a run with little)"
+        ),
+        None => println!("host steal time over the runs: n/a (no /proc/stat)"),
+    }
     if !report.identical || !report.crowd_clean {
         return Err(anyhow!(
             "the threads changed an answer or the crowd is not clean"
@@ -580,6 +587,7 @@ fn threads_json(report: &ThreadsReport) -> serde_json::Value {
         "passes": report.config.passes,
         "identical": report.identical,
         "crowd_clean": report.crowd_clean,
+        "host_steal_percent": report.host_steal_percent,
         "results": rows,
     })
 }

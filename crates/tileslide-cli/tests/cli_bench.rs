@@ -211,6 +211,14 @@ fn bench_threads_json_compares_every_pool_and_finds_the_same_answers() {
     let v: Value = serde_json::from_str(stdout(&o).trim()).unwrap();
     assert_eq!(v["identical"], true);
     assert_eq!(v["crowd_clean"], true);
+    // The host's share of the CPU time, read from /proc/stat on Linux.
+    let steal = &v["host_steal_percent"];
+    if cfg!(target_os = "linux") {
+        let steal = steal.as_f64().unwrap_or_else(|| panic!("{steal}"));
+        assert!((0.0..=100.0).contains(&steal), "{steal}");
+    } else {
+        assert!(steal.is_null(), "{steal}");
+    }
     let rows: Vec<(String, u64)> = v["results"]
         .as_array()
         .unwrap()
