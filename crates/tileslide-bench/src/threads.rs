@@ -397,8 +397,12 @@ pub struct GrowthConfig {
     pub ks: Vec<usize>,
     /// The pool sizes.
     pub threads: Vec<usize>,
-    /// Steps per run (the median step is reported).
+    /// Steps per run.
     pub steps: usize,
+    /// Runs of each layout on each pool, interleaved (every layout and pool once, then
+    /// again): the median step is over every step of every pass, so a burst of noise on a
+    /// shared machine falls on all the layouts alike rather than on one.
+    pub passes: usize,
 }
 
 impl Default for GrowthConfig {
@@ -408,8 +412,19 @@ impl Default for GrowthConfig {
             ks: vec![1, 2, 3, 4],
             threads: vec![1, 2],
             steps: 20,
+            passes: 3,
         }
     }
+}
+
+/// What [`run_growth`] measured.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GrowthReport {
+    /// One row per layout and pool size, layouts in the order given.
+    pub rows: Vec<GrowthRow>,
+    /// The share of the machine's CPU time that its host took while the runs ran (see
+    /// [`CpuTicks::steal_percent`]), in percent; `None` where `/proc/stat` cannot be read.
+    pub host_steal_percent: Option<f64>,
 }
 
 /// One layout on one pool size.
@@ -421,14 +436,16 @@ pub struct GrowthRow {
     pub bodies: usize,
     /// Threads of the pool.
     pub threads: usize,
-    /// Median step, in milliseconds.
+    /// Median step over every pass, in milliseconds.
     pub ms_per_step: f64,
+    /// The fastest and the slowest pass's median step, in milliseconds.
+    pub ms_range: (f64, f64),
     /// The median step per body, in microseconds.
     pub us_per_body: f64,
     /// This row's cost per body over the first layout's on the same pool size.
     pub growth: f64,
-    /// What the process's resident memory grew by while the bodies were added and stepped,
-    /// per body, in bytes (`None` where `/proc/self/statm` cannot be read).
+    /// What the process's resident memory grew by while the bodies were added and stepped in
+    /// the first pass, per body, in bytes (`None` where `/proc/self/statm` cannot be read).
     pub bytes_per_body: Option<f64>,
     /// FNV-1a 64 of the final positions.
     pub checksum: u64,
@@ -438,17 +455,19 @@ pub struct GrowthRow {
 pub const MAX_K: usize = 8;
 
 /// Runs the crowd at the density of the scene with `n` circles on `k × k` copies of
-/// dungeon256, for each `k` and pool size; `progress(done, total)` after each run.
+/// dungeon256, for each `k` and pool size, `passes` times over; `progress(done, total)`
+/// after each run.
 ///
 /// # Errors
-/// A bad configuration, a pool that cannot be made, or a scene that cannot be built.
+/// A bad configuration, a pool that cannot be made, a scene that cannot be built, or a run
+/// whose final positions differ from the first pass's (which would be a bug).
 pub fn run_growth(
     config: &GrowthConfig,
     mut progress: impl FnMut(usize, usize),
-) -> Result<Vec<GrowthRow>, ThreadsError> {
-    if config.n == 0 || config.steps == 0 || config.ks.is_empty() {
+) -> Result<GrowthReport, ThreadsError> {
+    if config.n == 0 || config.steps == 0 || config.passes == 0 || config.ks.is_empty() {
         return Err(ThreadsError::Config(
-            "growth needs circles, steps and at least one k".into(),
+            "growth needs circles, steps, passes and at least one k".into(),
         ));
     }
     if let Some(&k) = config.ks.iter().find(|&&k| k == 0 || k > MAX_K) {
@@ -459,45 +478,85 @@ pub fn run_growth(
     let pools = pools(&config.threads)?;
     let tile = dungeon256();
     let scene = scene_crowd(&tile, config.n);
-    let total = config.ks.len() * pools.len();
-    let mut rows: Vec<GrowthRow> = Vec::new();
-    for &k in &config.ks {
-        let grid = laid(&tile, k);
-        let map = grid.to_tile_map().map_err(ThreadsError::Map)?;
-        let crowd = copies(&tile, &scene, k);
-        for (p, pool) in pools.iter().enumerate() {
-            let before = resident_bytes();
-            let (mut times, checksum, after) = pool.install(|| {
-                let (mut bodies, handles) = place(&crowd)?;
-                let times = (0..config.steps)
-                    .map(|_| step(&mut bodies, &handles, &map))
-                    .collect::<Result<Vec<f64>, _>>()?;
-                let after = resident_bytes();
-                let checksum = positions_hash(&positions(&bodies, &handles));
-                Ok::<_, ThreadsError>((times, checksum, after))
-            })?;
-            let (median, _) = summary(&mut times);
-            let us_per_body = median * 1e3 / crowd.len() as f64;
-            let first = rows
-                .iter()
-                .find(|r| r.threads == config.threads[p])
-                .map_or(us_per_body, |r| r.us_per_body);
-            rows.push(GrowthRow {
-                k,
-                bodies: crowd.len(),
-                threads: config.threads[p],
-                ms_per_step: median,
-                us_per_body,
-                growth: us_per_body / first,
-                bytes_per_body: before
+    let layouts = config
+        .ks
+        .iter()
+        .map(|&k| {
+            let map = laid(&tile, k).to_tile_map().map_err(ThreadsError::Map)?;
+            Ok((map, copies(&tile, &scene, k)))
+        })
+        .collect::<Result<Vec<_>, ThreadsError>>()?;
+    let runs = layouts.len() * pools.len();
+    // Per run (layout, then pool): every step's time, each pass's median, the memory per
+    // body and the checksum of the first pass.
+    let mut times: Vec<Vec<f64>> = vec![Vec::new(); runs];
+    let mut medians: Vec<Vec<f64>> = vec![Vec::new(); runs];
+    let mut first: Vec<(Option<f64>, u64)> = Vec::with_capacity(runs);
+    let ticks = CpuTicks::now();
+    for pass in 0..config.passes {
+        for (l, (map, crowd)) in layouts.iter().enumerate() {
+            for (p, pool) in pools.iter().enumerate() {
+                let run = l * pools.len() + p;
+                let before = resident_bytes();
+                let (mut steps, checksum, after) = pool.install(|| {
+                    let (mut bodies, handles) = place(crowd)?;
+                    let steps = (0..config.steps)
+                        .map(|_| step(&mut bodies, &handles, map))
+                        .collect::<Result<Vec<f64>, _>>()?;
+                    let after = resident_bytes();
+                    let checksum = positions_hash(&positions(&bodies, &handles));
+                    Ok::<_, ThreadsError>((steps, checksum, after))
+                })?;
+                let bytes = before
                     .zip(after)
-                    .map(|(b, a)| a.saturating_sub(b) as f64 / crowd.len() as f64),
-                checksum,
-            });
-            progress(rows.len(), total);
+                    .map(|(b, a)| a.saturating_sub(b) as f64 / crowd.len() as f64);
+                if pass == 0 {
+                    first.push((bytes, checksum));
+                } else if first[run].1 != checksum {
+                    return Err(ThreadsError::Config(format!(
+                        "k = {} on {} threads ended elsewhere in pass {} than in the first",
+                        config.ks[l],
+                        config.threads[p],
+                        pass + 1
+                    )));
+                }
+                times[run].extend_from_slice(&steps);
+                medians[run].push(summary(&mut steps).0);
+                progress(pass * runs + run + 1, config.passes * runs);
+            }
         }
     }
-    Ok(rows)
+    let host_steal_percent = ticks
+        .zip(CpuTicks::now())
+        .and_then(|(before, after)| before.steal_percent(after));
+    let mut rows: Vec<GrowthRow> = Vec::with_capacity(runs);
+    let each = times.iter_mut().zip(&mut medians).zip(first);
+    for (run, ((times, medians), (bytes_per_body, checksum))) in each.enumerate() {
+        let (l, p) = (run / pools.len(), run % pools.len());
+        let bodies = layouts[l].1.len();
+        let (median, _) = summary(times);
+        let (_, ms_range) = summary(medians);
+        let us_per_body = median * 1e3 / bodies as f64;
+        let base = rows
+            .iter()
+            .find(|r| r.threads == config.threads[p])
+            .map_or(us_per_body, |r| r.us_per_body);
+        rows.push(GrowthRow {
+            k: config.ks[l],
+            bodies,
+            threads: config.threads[p],
+            ms_per_step: median,
+            ms_range,
+            us_per_body,
+            growth: us_per_body / base,
+            bytes_per_body,
+            checksum,
+        });
+    }
+    Ok(GrowthReport {
+        rows,
+        host_steal_percent,
+    })
 }
 
 /// `tile` laid `k × k` times side by side.
@@ -602,8 +661,9 @@ mod tests {
             ks: vec![1, 2],
             threads: vec![1, 2],
             steps: 2,
+            passes: 2,
         };
-        let rows = run_growth(&config, |_, _| {}).unwrap();
+        let rows = run_growth(&config, |_, _| {}).unwrap().rows;
         let bodies: Vec<_> = rows.iter().map(|r| (r.k, r.bodies, r.threads)).collect();
         assert_eq!(
             bodies,

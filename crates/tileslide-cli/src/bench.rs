@@ -108,9 +108,13 @@ pub enum BenchCommand {
         /// The pool sizes (comma-separated).
         #[arg(long, default_value = "1,2", value_delimiter = ',', value_parser = clap::value_parser!(u64).range(1..=256))]
         threads: Vec<u64>,
-        /// Steps per run; the median is reported.
+        /// Steps per run.
         #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u64).range(1..=100_000))]
         steps: u64,
+        /// Runs of each layout on each pool size, interleaved; the median step over all of
+        /// them is reported.
+        #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u64).range(1..=1000))]
+        passes: u64,
         /// Print one JSON object.
         #[arg(long)]
         json: bool,
@@ -167,6 +171,7 @@ pub fn run(which: BenchCommand) -> Result<()> {
             k,
             threads,
             steps,
+            passes,
             json,
         } => {
             let config = GrowthConfig {
@@ -174,6 +179,7 @@ pub fn run(which: BenchCommand) -> Result<()> {
                 ks: k.iter().map(|&k| k as usize).collect(),
                 threads: threads.iter().map(|&t| t as usize).collect(),
                 steps: steps as usize,
+                passes: passes as usize,
             };
             return growth(&config, json);
         }
@@ -542,13 +548,7 @@ fn threads_bench(config: &ThreadsConfig, json: bool) -> Result<()> {
         yes(report.identical),
         yes(report.crowd_clean)
     );
-    match report.host_steal_percent {
-        Some(steal) => println!(
-            "host steal time over the runs: {steal:.1} % of the CPU time used or taken \
-             (/proc/stat; on a shared virtual machine, read the speed-ups of a run with little)"
-        ),
-        None => println!("host steal time over the runs: n/a (no /proc/stat)"),
-    }
+    print_steal(report.host_steal_percent);
     if !report.identical || !report.crowd_clean {
         return Err(anyhow!(
             "the threads changed an answer or the crowd is not clean"
@@ -592,14 +592,26 @@ fn threads_json(report: &ThreadsReport) -> serde_json::Value {
     })
 }
 
+/// The host's steal time over a bench's runs, as `bench threads` and `bench growth` print it.
+fn print_steal(percent: Option<f64>) {
+    match percent {
+        Some(steal) => println!(
+            "host steal time over the runs: {steal:.1} % of the CPU time used or taken \
+             (/proc/stat; on a shared virtual machine, read the figures of a run with little)"
+        ),
+        None => println!("host steal time over the runs: n/a (no /proc/stat)"),
+    }
+}
+
 fn growth(config: &GrowthConfig, json: bool) -> Result<()> {
     let bar = runs_bar("bench growth");
-    let rows = run_growth(config, |done, total| {
+    let report = run_growth(config, |done, total| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     })
     .map_err(|e| anyhow!("{e}"))?;
     bar.finish_and_clear();
+    let rows = &report.rows;
     let identical = rows.iter().all(|r| {
         rows.iter()
             .filter(|o| o.k == r.k)
@@ -614,6 +626,8 @@ fn growth(config: &GrowthConfig, json: bool) -> Result<()> {
                     "bodies": r.bodies,
                     "threads": r.threads,
                     "ms_per_step": r.ms_per_step,
+                    "ms_fastest_pass": r.ms_range.0,
+                    "ms_slowest_pass": r.ms_range.1,
                     "us_per_body": r.us_per_body,
                     "growth": r.growth,
                     "bytes_per_body": r.bytes_per_body,
@@ -623,25 +637,42 @@ fn growth(config: &GrowthConfig, json: bool) -> Result<()> {
             .collect();
         println!(
             "{}",
-            json!({"scene": "growth", "n": config.n, "steps": config.steps, "identical": identical, "results": list})
+            json!({
+                "scene": "growth",
+                "n": config.n,
+                "steps": config.steps,
+                "passes": config.passes,
+                "identical": identical,
+                "host_steal_percent": report.host_steal_percent,
+                "results": list,
+            })
         );
         return Ok(());
     }
     println!(
-        "the crowd at the density of {} circles per copy of dungeon256, k × k copies, {} steps, median step",
-        config.n, config.steps
+        "the crowd at the density of {} circles per copy of dungeon256, k × k copies, {} steps × {} passes interleaved, median step",
+        config.n, config.steps, config.passes
     );
     println!(
-        "{:>3} {:>9} {:>8} {:>10} {:>9} {:>8} {:>10} {:>18}",
-        "k", "bodies", "threads", "ms/step", "µs/body", "growth", "B/body", "checksum"
+        "{:>3} {:>9} {:>8} {:>10} {:>21} {:>9} {:>8} {:>10} {:>18}",
+        "k",
+        "bodies",
+        "threads",
+        "ms/step",
+        "(passes' medians)",
+        "µs/body",
+        "growth",
+        "B/body",
+        "checksum"
     );
-    for r in &rows {
+    for r in rows {
         println!(
-            "{:>3} {:>9} {:>8} {:>10.3} {:>9.4} {:>7.2}× {:>10} {:>18}",
+            "{:>3} {:>9} {:>8} {:>10.3} {:>21} {:>9.4} {:>7.2}× {:>10} {:>18}",
             r.k,
             r.bodies,
             r.threads,
             r.ms_per_step,
+            format!("({:.3}–{:.3})", r.ms_range.0, r.ms_range.1),
             r.us_per_body,
             r.growth,
             r.bytes_per_body
@@ -650,6 +681,7 @@ fn growth(config: &GrowthConfig, json: bool) -> Result<()> {
         );
     }
     println!("positions identical on every pool: {}", yes(identical));
+    print_steal(report.host_steal_percent);
     if !identical {
         return Err(anyhow!("the threads changed the crowd's positions"));
     }

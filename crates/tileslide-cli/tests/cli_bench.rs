@@ -254,6 +254,8 @@ fn bench_growth_table_lists_each_layout_on_each_pool() {
         "1,2",
         "--steps",
         "2",
+        "--passes",
+        "2",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let out = stdout(&o);
@@ -261,9 +263,47 @@ fn bench_growth_table_lists_each_layout_on_each_pool() {
         out.contains("positions identical on every pool: yes"),
         "{out}"
     );
+    assert!(out.contains("2 steps × 2 passes interleaved"), "{out}");
     for row in ["  1       300        1", "  2      1200        2"] {
         assert!(out.contains(row), "{row:?} in\n{out}");
     }
+}
+
+#[test]
+fn bench_growth_json_gives_each_run_its_passes_range_and_the_steal_time() {
+    let o = tileslide(&[
+        "bench",
+        "growth",
+        "--n",
+        "200",
+        "--k",
+        "1,2",
+        "--threads",
+        "1",
+        "--steps",
+        "2",
+        "--passes",
+        "3",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["passes"], 3);
+    assert_eq!(v["identical"], true);
+    assert!(v["host_steal_percent"].is_number() || v["host_steal_percent"].is_null());
+    let results = v["results"].as_array().unwrap();
+    assert_eq!(results.len(), 2);
+    for r in results {
+        let (fast, median, slow) = (
+            r["ms_fastest_pass"].as_f64().unwrap(),
+            r["ms_per_step"].as_f64().unwrap(),
+            r["ms_slowest_pass"].as_f64().unwrap(),
+        );
+        assert!(fast <= slow && fast > 0.0, "{r}");
+        assert!(median > 0.0, "{r}");
+    }
+    assert_eq!(results[0]["growth"], 1.0);
+    assert_eq!(results[1]["bodies"], 800);
 }
 
 #[test]
@@ -272,6 +312,7 @@ fn bench_threads_and_growth_refuse_zero_threads_and_large_layouts() {
         &["bench", "threads", "--threads", "0"][..],
         &["bench", "growth", "--k", "9"],
         &["bench", "growth", "--threads", "2,0"],
+        &["bench", "growth", "--passes", "0"],
     ] {
         let o = tileslide(args);
         assert!(!o.status.success(), "{args:?}");
