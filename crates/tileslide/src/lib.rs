@@ -94,7 +94,6 @@ pub mod io;
 pub mod limits;
 mod owner;
 mod path;
-#[cfg(feature = "parallel")]
 mod prefetch;
 mod query;
 mod snapshot;

@@ -1,12 +1,14 @@
-//! Asking the processor to bring memory into its caches before it is read (the `parallel`
-//! feature's resolve in waves).
+//! Asking the processor to bring memory into its caches before it is read.
 //!
-//! A wave's bodies are every fifteenth or so in slot order, so the per-body and per-circle
-//! arrays a resolve reads are a cache line a body instead of a line per eight bodies, and
-//! the rows and walls lists, laid out in slot order, are jumps too: the cache simulation of a
-//! crowd of 50,000 counts a sixth more misses than for the same bodies resolved in slot
-//! order, and the waves took a third longer on one thread. Asking for the next bodies' lines
-//! while the present one resolves takes back about half of that (docs/parallel.md).
+//! A resolve reads, for each body, its neighbours' circles and positions, and slot order is
+//! no spatial order (a game adds bodies as they come), so those are anywhere in the
+//! per-body arrays: once the arrays outgrow the caches, every neighbour is a wait for
+//! memory, and the resolve asks for the neighbours of the bodies a few slots on while the
+//! present one resolves (`Resolver::prefetch_neighbours`: the crowd of 50,000 a fifth
+//! faster on one thread). Filling the neighbours' rows does the same for the candidates'
+//! discs. The `parallel` feature's waves need it more: a wave's bodies are every fifteenth
+//! or so in slot order, so even a body's own entries are a cache line each, and the rows
+//! and walls lists, laid out in slot order, are jumps too (docs/parallel.md).
 
 /// Asks the processor to bring `items[index]` into its caches; nothing when `index` is
 /// past the end, or on processors other than x86-64.

@@ -45,6 +45,10 @@ mod waves;
 #[cfg(feature = "parallel")]
 const LOAD_PER_TASK: usize = 4096;
 
+/// How many bodies ahead the resolve in slot order asks for the neighbours' circles, and
+/// then for their positions (see `Resolver::prefetch_neighbours`).
+const NEIGHBOURS_AHEAD: [usize; 2] = [8, 3];
+
 /// Shortest safe part of a move that is taken, as a fraction of the gap (see
 /// `collide_and_slide`).
 const MIN_STEP: f32 = 0.125;
@@ -157,6 +161,7 @@ impl Resolver {
             return report;
         }
         for (b, body) in bodies.iter_mut().enumerate() {
+            self.prefetch_neighbours(b);
             let (start, motion) = (self.position[b], self.motion[b]);
             if motion == Vec2::ZERO {
                 sink.still(b as u32, start);
@@ -210,6 +215,60 @@ impl Resolver {
         self.settled.forget();
         self.neighbours.forget();
         self.shapes_known = false;
+    }
+
+    /// In the resolve in slot order, before body `b`: asks the processor for what the
+    /// bodies a little further on will read of their neighbours, which are anywhere in the
+    /// per-body arrays (slot order is not spatial order; the rows themselves are in slot
+    /// order, and the hardware brings those). Two stages, as the second needs what the
+    /// first asked for: the neighbours' circles for body `b + NEIGHBOURS_AHEAD[0]`, then
+    /// their bodies' positions and disturbed flags for body `b + NEIGHBOURS_AHEAD[1]`.
+    /// Bodies without a move are left out: they read nothing.
+    #[inline]
+    fn prefetch_neighbours(&self, b: usize) {
+        let [far, near] = NEIGHBOURS_AHEAD;
+        if b + far < self.position.len() {
+            self.prefetch_neighbour_circles(b + far);
+        }
+        if b + near < self.position.len() {
+            self.prefetch_neighbour_positions(b + near, |other| {
+                self.settled.prefetch_flags(other);
+            });
+        }
+    }
+
+    /// Asks the processor for the circles of body `b`'s neighbours (nothing for a body
+    /// without a move).
+    #[inline]
+    fn prefetch_neighbour_circles(&self, b: usize) {
+        if self.motion[b] == Vec2::ZERO {
+            return;
+        }
+        for c in self.first_circle[b]..self.first_circle[b + 1] {
+            for &m in self.neighbours.row(c as usize) {
+                crate::prefetch::prefetch(&self.circles, m as usize);
+                crate::prefetch::prefetch(&self.circle_body, m as usize);
+            }
+        }
+    }
+
+    /// Asks the processor for the positions of body `b`'s neighbours' bodies, and for
+    /// whatever else `also` asks for of each (nothing for a body without a move). Reads the
+    /// neighbours' bodies: call it once [`prefetch_neighbour_circles`] has asked for them.
+    ///
+    /// [`prefetch_neighbour_circles`]: Self::prefetch_neighbour_circles
+    #[inline]
+    fn prefetch_neighbour_positions(&self, b: usize, also: impl Fn(usize)) {
+        if self.motion[b] == Vec2::ZERO {
+            return;
+        }
+        for c in self.first_circle[b]..self.first_circle[b + 1] {
+            for &m in self.neighbours.row(c as usize) {
+                let other = self.circle_body[m as usize] as usize;
+                crate::prefetch::prefetch(&self.position, other);
+                also(other);
+            }
+        }
     }
 
     /// Body `b` moved: flags the bodies whose reach discs touch its own as disturbed.

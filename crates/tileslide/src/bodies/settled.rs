@@ -128,6 +128,13 @@ impl Settled {
         crate::prefetch::prefetch(&self.disturbed, b);
     }
 
+    /// Asks the processor to bring body `b`'s disturbed flags into its caches: a body that
+    /// moves sets its neighbours' flags.
+    pub fn prefetch_flags(&self, b: usize) {
+        crate::prefetch::prefetch(&self.disturbed, b);
+        crate::prefetch::prefetch(&self.disturbed_next, b);
+    }
+
     /// Whether body `b` stays as [`stays`](Self::stays) tells, without counting it: if so,
     /// its last resolve's contacts and whether it was cut short.
     pub fn kept(&self, b: usize, start: Vec2, motion: Vec2) -> Option<(usize, bool)> {

@@ -48,12 +48,14 @@ const MIN_BODIES_PER_TASK: usize = 32;
 
 /// How many bodies ahead in its wave a task asks for a body's own entries (its start, move,
 /// first circle and settled memory), for its circles' (their walls' range, shape and row's
-/// place), and for its circles' walls and rows, which need those read first. A body left
-/// settled takes a few dozen nanoseconds, a moving one a microsecond or more: far enough
-/// ahead for a run of settled bodies. Measured on the crowd of 50,000 on two threads: the
-/// step 9 % faster (docs/parallel.md); 16, 4, 2 and 8, 4, 2 did no better within this
-/// machine's noise.
-const AHEAD: [usize; 3] = [32, 8, 2];
+/// place), for its circles' walls and rows, which need those read first, for its
+/// neighbours' circles, which need the rows, and for its neighbours' positions and whether
+/// they moved, which need the circles. A body left settled takes a few dozen nanoseconds, a
+/// moving one a microsecond or more: far enough ahead for a run of settled bodies. Measured
+/// on the crowd of 50,000 on two threads (docs/parallel.md): the first three stages made
+/// the step 9 % faster, the neighbours' two another 10 %; 32, 16, 8, 4, 2 and 32, 12, 6,
+/// 3, 1 did no better within this machine's noise.
+const AHEAD: [usize; 5] = [32, 8, 4, 2, 1];
 
 /// What resolving one body of a wave found.
 #[derive(Clone, Copy, Debug)]
@@ -148,7 +150,7 @@ impl Resolver {
                 .enumerate()
                 .with_min_len(MIN_BODIES_PER_TASK)
                 .for_each(|(k, (outcome, &b))| {
-                    this.prefetch_ahead(wave, k, ranges);
+                    this.prefetch_ahead(wave, k, ranges, moved);
                     *outcome = this.outcome(b, ranges, moved, config, gap);
                 });
             for (&b, outcome) in wave.iter().zip(&*outcomes) {
@@ -206,8 +208,8 @@ impl Resolver {
 
     /// Asks the processor for what the bodies after the `k`th of `wave` will read (see
     /// [`AHEAD`]): the wave's bodies are far apart in slot order, so each one's entries are
-    /// on cache lines of their own.
-    fn prefetch_ahead(&self, wave: &[u32], k: usize, ranges: &[(u32, u32)]) {
+    /// on cache lines of their own, and so are its neighbours'.
+    fn prefetch_ahead(&self, wave: &[u32], k: usize, ranges: &[(u32, u32)], moved: &[bool]) {
         use crate::prefetch::prefetch;
         if let Some(&b) = wave.get(k + AHEAD[0]) {
             let b = b as usize;
@@ -228,6 +230,12 @@ impl Resolver {
                 self.near.prefetch(range);
             }
             self.neighbours.prefetch_row(c);
+        }
+        if let Some(&b) = wave.get(k + AHEAD[3]) {
+            self.prefetch_neighbour_circles(b as usize);
+        }
+        if let Some(&b) = wave.get(k + AHEAD[4]) {
+            self.prefetch_neighbour_positions(b as usize, |other| prefetch(moved, other));
         }
     }
 
