@@ -119,6 +119,15 @@ impl CpuTicks {
         })
     }
 
+    /// [`steal_percent`](Self::steal_percent) from `start` (as [`now`](Self::now) read it
+    /// then) to now; `None` when either reading is missing.
+    #[must_use]
+    pub fn steal_percent_since(start: Option<Self>) -> Option<f64> {
+        start
+            .zip(Self::now())
+            .and_then(|(before, after)| before.steal_percent(after))
+    }
+
     /// Of the CPU time the machine's threads ran or were kept from running by the host
     /// between `self` and `later`, the share the host kept, in percent (`None` when no time
     /// passed). On a shared virtual machine, a run with much steal time is slower by about
@@ -279,9 +288,7 @@ pub fn run_threads(
         }
     }
     let identical = sums.iter().all(|s| s.iter().all(|x| *x == s[0]));
-    let host_steal_percent = ticks
-        .zip(CpuTicks::now())
-        .and_then(|(before, after)| before.steal_percent(after));
+    let host_steal_percent = CpuTicks::steal_percent_since(ticks);
     Ok(ThreadsReport {
         config: config.clone(),
         rows,
@@ -526,9 +533,7 @@ pub fn run_growth(
             }
         }
     }
-    let host_steal_percent = ticks
-        .zip(CpuTicks::now())
-        .and_then(|(before, after)| before.steal_percent(after));
+    let host_steal_percent = CpuTicks::steal_percent_since(ticks);
     let mut rows: Vec<GrowthRow> = Vec::with_capacity(runs);
     let each = times.iter_mut().zip(&mut medians).zip(first);
     for (run, ((times, medians), (bytes_per_body, checksum))) in each.enumerate() {
