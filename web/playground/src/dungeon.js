@@ -348,6 +348,7 @@ async function start() {
       if (!game.state.over) game.step();
     },
     draw,
+    view,
     stepsPerSecond: STEPS_PER_SECOND,
     paused: () => state.paused,
     speed: () => state.speed,

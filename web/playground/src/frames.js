@@ -66,11 +66,13 @@ function mean(times) {
  * Runs `step()` `stepsPerSecond` times a second of page time (at most `maxSteps` a frame, so a
  * slow frame slows the game rather than snowballing) and `draw()` once a frame, from
  * requestAnimationFrame. `paused()` stops the steps, not the drawing; `speed()` multiplies
- * the steps. Errors stop the loop and go to `onError`.
+ * the steps. Errors stop the loop and go to `onError`. With `view`, a resize of its canvas
+ * draws at once too (the resize cleared it).
  */
 export function runFrames({
   step,
   draw,
+  view = null,
   stepsPerSecond = 60,
   maxSteps = 8,
   paused = () => false,
@@ -80,6 +82,21 @@ export function runFrames({
   const times = new FrameTimes();
   let owed = 0;
   let before = performance.now();
+  let stopped = false;
+  const fail = (error) => {
+    stopped = true;
+    onError(error);
+  };
+  if (view) {
+    view.onResize = () => {
+      if (stopped) return;
+      try {
+        draw();
+      } catch (error) {
+        fail(error);
+      }
+    };
+  }
   function frame(now) {
     try {
       const start = performance.now();
@@ -97,7 +114,7 @@ export function runFrames({
       times.add(end - start, drawStart - start, steps, end - drawStart);
       requestAnimationFrame(frame);
     } catch (error) {
-      onError(error);
+      fail(error);
     }
   }
   requestAnimationFrame(frame);

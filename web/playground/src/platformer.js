@@ -257,6 +257,7 @@ async function start() {
       if (!game.state.over) game.step({ ...held });
     },
     draw,
+    view,
     stepsPerSecond: STEPS_PER_SECOND,
     onError: showError,
   });

@@ -563,6 +563,7 @@ async function start() {
   frames = runFrames({
     step: () => crowd.step(),
     draw,
+    view,
     // One step a frame, whatever the frame costs: the sandbox has no clock to keep, and a
     // slow frame (10,000 bodies) that ran the steps it owes would only be slower.
     maxSteps: 1,

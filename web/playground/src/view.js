@@ -18,6 +18,8 @@ export class View {
     this.oy = 0;
     this.dpr = 1;
     this.sy = 1; // -1 when the world's y axis points up (a Replica Island level)
+    /** Called after a resize has cleared the canvas, to draw it again at once. */
+    this.onResize = null;
     new ResizeObserver(() => this.resize()).observe(canvas);
     this.resize();
   }
@@ -30,15 +32,22 @@ export class View {
     this.fit();
   }
 
-  /** Matches the canvas's pixels to its size on the page. */
+  /** Matches the canvas's pixels to its size on the page. Setting a canvas's size clears
+   * it, even to the size it has, so the size is set only when it changes, and `onResize`
+   * draws the canvas again before the browser shows it: otherwise it would stay empty
+   * until the next animation frame. */
   resize() {
     this.dpr = window.devicePixelRatio || 1;
     const cssWidth = this.canvas.clientWidth || 800;
     const cssHeight = Math.round(cssWidth / this.aspect);
-    this.canvas.style.height = `${cssHeight}px`;
-    this.canvas.width = Math.round(cssWidth * this.dpr);
-    this.canvas.height = Math.round(cssHeight * this.dpr);
+    const width = Math.round(cssWidth * this.dpr);
+    const height = Math.round(cssHeight * this.dpr);
+    if (this.canvas.style.height !== `${cssHeight}px`) this.canvas.style.height = `${cssHeight}px`;
+    if (width === this.canvas.width && height === this.canvas.height) return;
+    this.canvas.width = width;
+    this.canvas.height = height;
     this.fit();
+    this.onResize?.();
   }
 
   fit() {

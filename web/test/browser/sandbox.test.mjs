@@ -40,6 +40,39 @@ test("a square painted with the mouse is in the map and on the canvas", async ()
   assert.deepEqual(session.errors, []);
 });
 
+test("a canvas resized by the page is drawn again before the browser shows it", async () => {
+  // The square painted above, read once more in the moment after the canvas changed size:
+  // its ResizeObserver runs after the frame's drawing, and setting a canvas's size clears
+  // it, so the page draws it again there, not a frame later.
+  const centre = [10.5, 8.5];
+  const readAfterResize = (width) =>
+    session.page.evaluate(
+      ([x, y, width]) =>
+        new Promise((resolve) => {
+          const canvas = document.getElementById("canvas");
+          canvas.style.width = width;
+          requestAnimationFrame(() =>
+            setTimeout(() => {
+              const { x: px, y: py } = window.__tileslide.pixelAt(x, y);
+              resolve({
+                size: [canvas.width, canvas.height],
+                color: Array.from(canvas.getContext("2d").getImageData(px, py, 1, 1).data),
+              });
+            }, 0),
+          );
+        }),
+      [...centre, width],
+    );
+  const before = await stateOf(session.page);
+  const narrow = await readAfterResize("80%");
+  const wide = await readAfterResize("");
+  assert.ok(narrow.size[0] < wide.size[0], `the canvas narrowed: ${narrow.size} then ${wide.size}`);
+  assert.deepEqual(narrow.color, rgba("#4a3b2c"), "drawn at once when narrowed");
+  assert.deepEqual(wide.color, rgba("#4a3b2c"), "drawn at once when widened again");
+  assert.equal((await stateOf(session.page)).width, before.width);
+  assert.deepEqual(session.errors, []);
+});
+
 test("a square painted beside another hides the seam between them", async () => {
   const HIDDEN = 3; // DebugKind.HiddenSegment
   const ACTIVE = 0; // DebugKind.ActiveSegment
