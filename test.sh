@@ -35,6 +35,16 @@ part() {
 # (.ci/run reads this line: its golden-release step builds with the same features.)
 test_features=tileslide-cli/peers,tileslide/serde,tileslide/parallel,tileslide-bevy/debug,tileslide-bevy/hot_reload
 part rust cargo test --workspace --no-fail-fast --features "$test_features"
+# The programs the Python and web tests run for the native answers they compare with (the
+# scenes' exports, the reference picture): built with the same features, so Cargo links
+# them against the libraries it has just built (`cargo run -p …` from those tests would
+# build the core crate again for each, with fewer features: half a minute apiece), and
+# handed to the tests through TILESLIDE_PROGRAMS. Without it they use `cargo run`.
+programs=${CARGO_TARGET_DIR:-target}/debug
+case $programs in /*) ;; *) programs=$PWD/$programs ;; esac
+if part programs cargo build --workspace --bins --examples --tests --features "$test_features"; then
+    export TILESLIDE_PROGRAMS=$programs
+fi
 # The C API's tests and example in C, under AddressSanitizer and UndefinedBehaviorSanitizer
 # (the system's C compiler and make), against the C library of the Rust tests' build: the
 # libraries and tests of the whole workspace with the same features, which Cargo finds built

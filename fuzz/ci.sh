@@ -8,10 +8,11 @@
 #
 # CI builds without a sanitizer and with 16 codegen units, for build time: the targets are
 # safe Rust over the library, whose unsafe blocks are a call (the AVX2 ray batch, which the
-# `casts` target reaches) and a hint (the resolver's prefetch, on threads only); a longer
+# `casts` target reaches) and a hint (the resolver's prefetch); a longer
 # campaign (docs/fuzzing.md) runs with AddressSanitizer. With FUZZ_DEV=1 (as .ci/run sets
 # it) the targets are built without optimisation: in about 60 s rather than 150 on two
-# cores, for runs of a few seconds that try fewer inputs.
+# cores, for runs of a few seconds that try fewer inputs. With FUZZ_BUILD_ONLY=1 it builds
+# the targets and stops (.ci/run builds them so beside its other steps).
 set -eu
 
 cd "$(dirname "$0")"
@@ -34,6 +35,9 @@ else
     set -- -O -a -s none
 fi
 cargo +nightly fuzz build "$@" --codegen-units 16
+if [ "${FUZZ_BUILD_ONLY:-0}" = 1 ]; then
+    exit 0
+fi
 
 logs=../target/fuzz-logs
 rm -rf "$logs"

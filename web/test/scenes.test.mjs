@@ -21,7 +21,13 @@ const RAYS_CHECKSUM = "2d2187acd2742f7e";
 const GOLDEN = "527eda9698ab4a5d";
 
 const dir = mkdtempSync(join(tmpdir(), "tileslide-scenes-"));
-execFileSync("cargo", ["run", "--quiet", "-p", "tileslide-web-bench", "--", "export", dir], {
+// Through `cargo run`, or the program built in TILESLIDE_PROGRAMS (a cargo profile's folder:
+// test.sh sets it to the one its Rust tests built the program in).
+const programs = process.env.TILESLIDE_PROGRAMS;
+const [command, args] = programs
+  ? [join(programs, "tileslide-web-bench"), []]
+  : ["cargo", ["run", "--quiet", "-p", "tileslide-web-bench", "--"]];
+execFileSync(command, [...args, "export", dir], {
   cwd: here("../.."),
   stdio: ["ignore", "ignore", "inherit"],
 });

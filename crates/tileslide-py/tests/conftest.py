@@ -1,9 +1,11 @@
 """Shared fixtures: the standard scenes and the Rust core's answers on them.
 
-The scenes are written by `cargo run -p tileslide-scenes --example export` (once per
-test session, into the cargo target directory, always anew), so every agreement test
-compares with the core's own answers from the same checkout; the character runs, path
-queries and hit volumes scene likewise by `--example export_systems`.
+The scenes are written by tileslide-scenes' example `export` (once per test session, into
+the cargo target directory, always anew), so every agreement test compares with the core's
+own answers from the same checkout; the character runs, path queries and hit volumes scene
+likewise by its example `export_systems`. Each example runs through `cargo run`, or, when
+TILESLIDE_PROGRAMS names a folder of built programs (test.sh sets it to the one its Rust
+tests built them in), from there.
 """
 
 import json
@@ -38,14 +40,21 @@ class Scenes:
         self.crowd_end = np.fromfile(folder / "crowd_end.f32", dtype="<f4").reshape(-1, 2)
 
 
+def run_example(name: str, *args: str) -> None:
+    """Runs tileslide-scenes' example `name` with `args`: the one built in TILESLIDE_PROGRAMS
+    (a cargo profile's folder, which holds the examples in `examples/`) when that is set,
+    else through `cargo run`."""
+    programs = os.environ.get("TILESLIDE_PROGRAMS")
+    if programs:
+        command = [str(Path(programs) / "examples" / name)]
+    else:
+        command = ["cargo", "run", "--quiet", "-p", "tileslide-scenes", "--example", name, "--"]
+    subprocess.run(command + list(args), cwd=ROOT, check=True)
+
+
 def export_scenes(rays: int) -> Scenes:
     folder = target_dir() / "scenes" / str(rays)
-    subprocess.run(
-        ["cargo", "run", "--quiet", "-p", "tileslide-scenes", "--example", "export", "--"]
-        + [str(folder), str(rays)],
-        cwd=ROOT,
-        check=True,
-    )
+    run_example("export", str(folder), str(rays))
     return Scenes(folder)
 
 
@@ -84,12 +93,7 @@ class Systems:
 @pytest.fixture(scope="session")
 def systems() -> Systems:
     folder = target_dir() / "scenes" / "systems"
-    subprocess.run(
-        ["cargo", "run", "--quiet", "-p", "tileslide-scenes", "--example", "export_systems"]
-        + ["--", str(folder)],
-        cwd=ROOT,
-        check=True,
-    )
+    run_example("export_systems", str(folder))
     return Systems(folder)
 
 

@@ -2,14 +2,13 @@
 and PNG tile sheets; maps laid out from tile arrays and edited cell by cell."""
 
 import math
-import subprocess
 import struct
 
 import numpy as np
 import pytest
 
 import tileslide
-from conftest import MAPS, ROOT, run_crowd, target_dir
+from conftest import MAPS, run_crowd, run_example, target_dir
 
 ROOM = "#####\n#...#\n#...#\n#####\n"
 
@@ -21,12 +20,7 @@ def png_size(data: bytes):
 
 def test_the_crowd_picture_equals_the_rust_renderers_byte_for_byte(scenes, tmp_path):
     reference = target_dir() / "scenes" / "crowd.png"
-    subprocess.run(
-        ["cargo", "run", "--quiet", "-p", "tileslide-scenes", "--example", "picture", "--"]
-        + [str(reference)],
-        cwd=ROOT,
-        check=True,
-    )
+    run_example("picture", str(reference))
     m = tileslide.TileMap.from_ascii(scenes.map_text)
     bodies, ids = run_crowd(scenes, m)
     out = tmp_path / "crowd.png"
