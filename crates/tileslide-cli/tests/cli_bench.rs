@@ -30,14 +30,15 @@ fn bench_rays_json_has_every_engine_and_the_fingerprint() {
             "parry2d-polyline",
             "box2d-chains",
             "box2d-boxes",
-            "tileslide-single"
+            "tileslide-single",
+            "tileslide-portable"
         ]
     );
     for r in v["results"].as_array().unwrap() {
         assert!(r["mrays_per_s"].as_f64().unwrap() > 0.0);
         assert!(r["hits"].as_u64().unwrap() > 1500);
     }
-    for engine in [0, 1, 3, 4, 5] {
+    for engine in [0, 1, 3, 4, 5, 6] {
         assert_eq!(
             v["results"][engine]["disagreements"], 0,
             "{}",

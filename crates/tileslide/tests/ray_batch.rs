@@ -4,7 +4,8 @@
 //! and lattice points, rays along an axis, through corners, from outside the map, zero
 //! length, NaN and infinite), under every kind of filter and with temporary segments.
 //! Both instruction sets of the batch are checked: `cast_rays` (AVX2 where the processor
-//! has it) and `cast_rays_portable`. `ray_vs_brute_force.rs` proves `cast_ray` itself
+//! has it), `cast_rays_portable`, and on an AVX2 processor the AVX2 walk with the other
+//! processor family's steps between refills (`cast_rays_avx2_other_family`). `ray_vs_brute_force.rs` proves `cast_ray` itself
 //! right; this file ties the batch to it.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -93,12 +94,17 @@ proptest! {
         // is checked too, so that both instruction sets are proven on such machines.
         let batch = map.cast_rays(&rays, &filter);
         let portable = map.cast_rays_portable(&rays, &filter);
+        // And the AVX2 walk with the other processor family's steps between refills.
+        let other = map.cast_rays_avx2_other_family(&rays, &filter);
         prop_assert_eq!(batch.len(), rays.len());
         prop_assert_eq!(portable.len(), rays.len());
-        for ((ray, answer), portable) in rays.iter().zip(&batch).zip(&portable) {
+        for (i, ((ray, answer), portable)) in rays.iter().zip(&batch).zip(&portable).enumerate() {
             let single = map.cast_ray(*ray, &filter);
             prop_assert_eq!(bits(answer), bits(&single), "ray {:?}", ray);
             prop_assert_eq!(bits(portable), bits(&single), "portable, ray {:?}", ray);
+            if let Some(other) = &other {
+                prop_assert_eq!(bits(&other[i]), bits(&single), "other family's AVX2, ray {:?}", ray);
+            }
         }
     }
 }
@@ -160,11 +166,19 @@ fn many_rays_fill_many_lanes_and_the_buffer_is_reused() {
     let hits = out.iter().filter(|h| h.is_some()).count();
     assert!(hits > 4_000, "{hits} hits");
     let portable = map.cast_rays_portable(&rays, &filter);
-    for ((ray, answer), portable) in rays.iter().zip(&out).zip(&portable) {
+    let other = map.cast_rays_avx2_other_family(&rays, &filter);
+    for (i, ((ray, answer), portable)) in rays.iter().zip(&out).zip(&portable).enumerate() {
         let single = bits(&map.cast_ray(*ray, &filter));
         assert_eq!(bits(answer), single);
         assert_eq!(bits(portable), single);
+        if let Some(other) = &other {
+            assert_eq!(bits(&other[i]), single);
+        }
     }
+    // The portable walk into a reused buffer: cleared, then as long as its rays.
+    let mut reused = vec![None; 7];
+    map.cast_rays_portable_into(&rays[..100], &filter, &mut reused);
+    assert_eq!(reused, portable[..100]);
     map.cast_rays_into(&rays[..3], &filter, &mut out);
     assert_eq!(out.len(), 3);
     map.cast_rays_into(&[], &filter, &mut out);

@@ -3,9 +3,12 @@
 //! `Polyline` shapes and by Box2D v3's world ray cast against chain loops or boxes.
 //!
 //! tileslide casts the rays as a game with many rays would, with `TileMap::cast_rays`, in
-//! blocks of [`RAYS_PER_CALL`]; a fourth entry, `tileslide-single`, casts them one
-//! `cast_ray` call at a time (the answers are the same bit for bit). parry2d and Box2D have no
-//! call for many rays: they cast one at a time.
+//! blocks of [`RAYS_PER_CALL`]; two more entries cast the same rays other ways, with the same
+//! answers bit for bit: `tileslide-single`, one `cast_ray` call at a time, and
+//! `tileslide-portable`, `cast_rays`'s batch walk built for x86-64's baseline instruction set
+//! (SSE2) rather than the AVX2 it takes where the processor has it, so that one run shows
+//! what each instruction set gives on its processor. parry2d and Box2D have no call for many
+//! rays: they cast one at a time.
 //!
 //! Each engine casts every ray once untimed to record its answers (hits, mean hit fraction,
 //! disagreements with tileslide), then `passes` timed passes are run, interleaving the
@@ -79,7 +82,7 @@ impl Default for RaysConfig {
 #[derive(Clone, Debug, PartialEq)]
 pub struct EngineResult {
     /// Engine name (`tileslide`, `parry2d-voxels`, `parry2d-polyline`, `box2d-chains`,
-    /// `box2d-boxes`, `tileslide-single`).
+    /// `box2d-boxes`, `tileslide-single`, `tileslide-portable`).
     pub name: &'static str,
     /// Median throughput over the timed passes, in millions of rays per second.
     pub mrays_per_s: f64,
@@ -107,7 +110,7 @@ pub struct RaysReport {
     /// Timed passes per engine.
     pub passes: usize,
     /// One entry per engine: tileslide, the two parry2d shapes, the two Box2D worlds, then
-    /// tileslide one ray a call.
+    /// tileslide one ray a call and tileslide's portable batch walk.
     pub results: Vec<EngineResult>,
 }
 
@@ -174,7 +177,8 @@ pub fn run_rays(
         .zip(&rays)
         .map(|(hit, ray)| hit.map(|h| h.t * ray.length))
         .collect();
-    let engines: [(&'static str, &CastFn); 6] = [
+    let portable = map.cast_rays_portable(&ours, &QueryFilter::default());
+    let engines: [(&'static str, &CastFn); 7] = [
         ("tileslide", &|i| batch[i]),
         (ParryVoxels::NAME, &|i| voxels.cast(&rays[i])),
         (ParryPolyline::NAME, &|i| polyline.cast(&rays[i])),
@@ -182,6 +186,9 @@ pub fn run_rays(
         (Box2dBoxes::NAME, &|i| boxes.cast(&rays[i])),
         ("tileslide-single", &|i| {
             cast_tileslide(&map, ours[i]).map(|t| t * rays[i].length)
+        }),
+        ("tileslide-portable", &|i| {
+            portable[i].map(|h| h.t * rays[i].length)
         }),
     ];
     let answers: Vec<Vec<Option<f32>>> = engines
@@ -194,16 +201,20 @@ pub fn run_rays(
     let total = config.passes * engines.len();
     let mut times = vec![Vec::with_capacity(config.passes); engines.len()];
     let mut hits = Vec::with_capacity(RAYS_PER_CALL);
+    let filter = QueryFilter::default();
     for pass in 0..config.passes {
         for (engine, slot) in times.iter_mut().enumerate() {
             let start = Instant::now();
             let checksum = match engine {
-                0 => pass_tileslide(&map, &ours, &mut hits),
+                0 => pass_tileslide(&ours, &mut hits, |b, h| map.cast_rays_into(b, &filter, h)),
                 1 => pass_peer(&rays, |r| voxels.cast(r)),
                 2 => pass_peer(&rays, |r| polyline.cast(r)),
                 3 => pass_peer(&rays, |r| chains.cast(r)),
                 4 => pass_peer(&rays, |r| boxes.cast(r)),
-                _ => pass_tileslide_single(&map, &ours),
+                5 => pass_tileslide_single(&map, &ours),
+                _ => pass_tileslide(&ours, &mut hits, |b, h| {
+                    map.cast_rays_portable_into(b, &filter, h);
+                }),
             };
             slot.push(start.elapsed().as_secs_f64());
             black_box(checksum);
@@ -231,12 +242,17 @@ fn cast_tileslide(map: &TileMap, ray: Ray) -> Option<f32> {
     map.cast_ray(ray, &QueryFilter::default()).map(|h| h.t)
 }
 
+/// A pass of a tileslide batch call (`cast_rays_into` or the portable walk's), one block of
+/// [`RAYS_PER_CALL`] rays a call.
 #[inline(never)]
-fn pass_tileslide(map: &TileMap, rays: &[Ray], hits: &mut Vec<Option<RayHit>>) -> f32 {
-    let filter = QueryFilter::default();
+fn pass_tileslide(
+    rays: &[Ray],
+    hits: &mut Vec<Option<RayHit>>,
+    cast: impl Fn(&[Ray], &mut Vec<Option<RayHit>>),
+) -> f32 {
     let mut sum = 0.0;
     for block in rays.chunks(RAYS_PER_CALL) {
-        map.cast_rays_into(block, &filter, hits);
+        cast(block, hits);
         sum += hits.iter().flatten().map(|h| h.t).sum::<f32>();
     }
     sum
@@ -330,14 +346,17 @@ mod tests {
                 "parry2d-polyline",
                 "box2d-chains",
                 "box2d-boxes",
-                "tileslide-single"
+                "tileslide-single",
+                "tileslide-portable"
             ]
         );
         let ours = &report.results[0];
         assert_eq!(ours.disagreements, 0);
-        // One ray a call gives the same answers.
-        assert_eq!(report.results[5].disagreements, 0);
-        assert_eq!(report.results[5].hits, ours.hits);
+        // One ray a call and the portable batch walk give the same answers.
+        for other in [5, 6] {
+            assert_eq!(report.results[other].disagreements, 0, "{}", names[other]);
+            assert_eq!(report.results[other].hits, ours.hits, "{}", names[other]);
+        }
         assert!(ours.hits > 4_000 && ours.mean_t > 0.0 && ours.mean_t <= 1.0);
         // The peers agree too: parry's voxels and both Box2D worlds.
         for peer in [1, 3, 4] {
