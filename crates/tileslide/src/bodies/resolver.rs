@@ -140,26 +140,27 @@ impl Resolver {
     ) -> ResolveReport {
         let gap = config.gap;
         self.load(bodies, gap);
-        let change = self.neighbours_and_memories(config, map);
-        if change == MapChange::Local {
-            for (c, area) in self.boxes.iter().enumerate() {
-                if self.watch.touches(area) {
-                    self.settled.wake(self.circle_body[c] as usize);
-                }
-            }
-        }
         let mut report = ResolveReport::default();
         #[cfg(test)]
         {
             self.skipped = 0;
         }
-        // On many threads, in waves of bodies that do not meet (see `waves`): the same
+        // On many threads, in waves of bodies that do not meet (see `waves`), which finds
+        // the neighbours and starts the memories itself, beside other work: the same
         // result. A traced resolve stays on the calling thread, in slot order.
         #[cfg(feature = "parallel")]
         if sink.is_none() && rayon::current_num_threads() > 1 {
             self.resolve_in_waves(bodies, config, map, &mut report);
             return report;
         }
+        let change = self.neighbours_and_memories(config, map);
+        wake_where_changed(
+            &mut self.settled,
+            &self.watch,
+            change,
+            &self.boxes,
+            &self.circle_body,
+        );
         for (b, body) in bodies.iter_mut().enumerate() {
             self.prefetch_neighbours(b);
             let (start, motion) = (self.position[b], self.motion[b]);
@@ -382,45 +383,31 @@ impl Resolver {
 
     /// Finds the circles each circle may meet: pairs of different bodies that collide by
     /// filter and whose reach discs overlap (a row is read only for a moving body, so the
-    /// rows may also pair bodies that both stay). Beside it, on another thread when there
-    /// is one (the two read and write different things), tells the memories what changed
-    /// on the map since the last resolve and starts them; returns that change.
+    /// rows may also pair bodies that both stay). Then tells the memories what changed on
+    /// the map since the last resolve and starts them; returns that change. (The waves do
+    /// the same work, side by side: see `resolve_in_waves`.)
     fn neighbours_and_memories(&mut self, config: &ResolveConfig, map: &TileMap) -> MapChange {
-        let Self {
-            circles,
-            circle_body,
-            position,
-            filter,
-            reach_discs,
-            boxes,
-            neighbours,
-            near,
-            watch,
-            settled,
-            ..
-        } = self;
-        let mut find = || {
-            neighbours.update(
-                config.broadphase,
-                reach_discs,
-                boxes,
-                map.cell_size().min_element(),
-                |i| circle_body[i as usize] as usize,
-                |a, b| filter[a].collides(&filter[b]),
-            );
-        };
-        let mut begin = || {
-            let change = watch.update(map);
-            near.begin(circles.len(), change, watch);
-            settled.begin(position, change != MapChange::Everything, config);
-            change
-        };
-        #[cfg(feature = "parallel")]
-        if rayon::current_num_threads() > 1 {
-            return rayon::join(find, begin).1;
-        }
-        find();
-        begin()
+        find_neighbours(
+            &mut self.neighbours,
+            config,
+            map,
+            &self.reach_discs,
+            &self.boxes,
+            &self.circle_body,
+            &self.filter,
+        );
+        let change = self.map_changes(map);
+        self.settled
+            .begin(&self.position, change != MapChange::Everything, config);
+        change
+    }
+
+    /// What changed on the map since the last resolve, told to the walls kept near each
+    /// circle (which drop what the change touches).
+    fn map_changes(&mut self, map: &TileMap) -> MapChange {
+        let change = self.watch.update(map);
+        self.near.begin(self.circles.len(), change, &self.watch);
+        change
     }
 
     /// The walls near each circle of body `b`, into `ranges` (one range of `near` per
@@ -631,6 +618,45 @@ struct Touch {
     segment: Segment,
     offset: Vec2,
     radius: f32,
+}
+
+/// The circles each circle may meet ([`Neighbours::update`]), for the resolve's bodies.
+pub(super) fn find_neighbours(
+    neighbours: &mut Neighbours,
+    config: &ResolveConfig,
+    map: &TileMap,
+    reach_discs: &[Circle],
+    boxes: &[Aabb],
+    circle_body: &[u32],
+    filter: &[BodyFilter],
+) {
+    neighbours.update(
+        config.broadphase,
+        reach_discs,
+        boxes,
+        map.cell_size().min_element(),
+        |i| circle_body[i as usize] as usize,
+        |a, b| filter[a].collides(&filter[b]),
+    );
+}
+
+/// After a local change of the map, wakes the settled bodies with a circle whose box
+/// `watch` finds the change touches.
+pub(super) fn wake_where_changed(
+    settled: &mut Settled,
+    watch: &MapWatch,
+    change: MapChange,
+    boxes: &[Aabb],
+    circle_body: &[u32],
+) {
+    if change != MapChange::Local {
+        return;
+    }
+    for (c, area) in boxes.iter().enumerate() {
+        if watch.touches(area) {
+            settled.wake(circle_body[c] as usize);
+        }
+    }
 }
 
 /// Where a step from `from` ends, when it slides along the contact `along`: at

@@ -35,9 +35,10 @@ use std::ops::Range;
 use glam::Vec2;
 use rayon::prelude::*;
 
-use super::{Mover, Resolver};
+use super::{Mover, Resolver, find_neighbours, wake_where_changed};
 use crate::bodies::body::Body;
 use crate::bodies::config::{ResolveConfig, ResolveReport};
+use crate::bodies::map_watch::MapChange;
 use crate::bodies::neighbours::Neighbours;
 use crate::bodies::trace::Recorder;
 use crate::tiles::TileMap;
@@ -81,8 +82,14 @@ pub(super) struct Waves {
 }
 
 impl Resolver {
-    /// Resolves every body in waves, into `report`; `load`, the neighbours and the memories'
-    /// `begin` have run.
+    /// Resolves every body in waves, into `report`; `load` has run.
+    ///
+    /// First, side by side on the pool's threads, three pieces of work that read and write
+    /// different things: finding the neighbours, then the waves' schedule when the
+    /// candidates were found again (each body's wave follows from those of the bodies
+    /// before it, so the schedule is one thread's work); the walls near each moving
+    /// circle; the memories' start. The sequential resolve does the same work with the
+    /// same inputs, the walls as each body comes.
     ///
     /// Between waves, the calling thread only writes each body's end and whether it moved;
     /// what the sequential resolve writes as it goes and later bodies do not read (the
@@ -101,38 +108,62 @@ impl Resolver {
         let gap = config.gap;
         let n = bodies.len();
         let mut waves = std::mem::take(&mut self.waves);
-        for (b, &motion) in self.motion.iter().enumerate() {
-            if motion == Vec2::ZERO {
-                self.settled.remember_still(b, self.position[b]);
-            }
-        }
-        // The walls near each moving circle, and the waves' schedule when the candidates
-        // were found again: the schedule runs on this thread (each body's wave follows from
-        // those of the bodies before it) while the other threads gather walls.
-        let (circle_body, motion, filter) = (&self.circle_body, &self.motion, &self.filter);
-        let shape = Shape {
+        let change = self.map_changes(map);
+        let Self {
             circle_body,
-            first_circle: &self.first_circle,
-            neighbours: &self.neighbours,
-        };
-        let near = &mut self.near;
-        let reach_discs = &self.reach_discs;
+            first_circle,
+            position,
+            motion,
+            filter,
+            reach_discs,
+            boxes,
+            neighbours,
+            near,
+            watch,
+            settled,
+            ..
+        } = self;
         let (schedule, ranges) = (&mut waves.schedule, &mut waves.ranges);
-        rayon::join(
-            || schedule.make(&shape),
-            || {
-                near.around_all(
-                    reach_discs,
-                    |c| {
-                        let b = circle_body[c] as usize;
-                        (motion[b] != Vec2::ZERO).then_some(filter[b].walls)
-                    },
-                    gap,
-                    map,
-                    ranges,
-                );
-            },
-        );
+        let (circle_body, motion, filter) = (&*circle_body, &*motion, &*filter);
+        let (reach_discs, boxes) = (&*reach_discs, &*boxes);
+        let neighbours_and_schedule = || {
+            find_neighbours(
+                neighbours,
+                config,
+                map,
+                reach_discs,
+                boxes,
+                circle_body,
+                filter,
+            );
+            schedule.make(&Shape {
+                circle_body,
+                first_circle,
+                neighbours,
+            });
+        };
+        let walls = || {
+            near.around_all(
+                reach_discs,
+                |c| {
+                    let b = circle_body[c] as usize;
+                    (motion[b] != Vec2::ZERO).then_some(filter[b].walls)
+                },
+                gap,
+                map,
+                ranges,
+            );
+        };
+        let memories = || {
+            settled.begin(position, change != MapChange::Everything, config);
+            wake_where_changed(settled, watch, change, boxes, circle_body);
+            for (b, &motion) in motion.iter().enumerate() {
+                if motion == Vec2::ZERO {
+                    settled.remember_still(b, position[b]);
+                }
+            }
+        };
+        rayon::join(neighbours_and_schedule, || rayon::join(walls, memories));
         waves.moved.clear();
         waves.moved.resize(n, false);
         waves.outcomes.clear();
