@@ -5,8 +5,8 @@
 //! length, NaN and infinite), under every kind of filter and with temporary segments.
 //! Both instruction sets of the batch are checked: `cast_rays` (AVX2 where the processor
 //! has it), `cast_rays_portable`, and on an AVX2 processor the AVX2 walk with the other
-//! processor family's steps between refills (`cast_rays_avx2_other_family`). `ray_vs_brute_force.rs` proves `cast_ray` itself
-//! right; this file ties the batch to it.
+//! processor family's steps between refills (`cast_rays_avx2_other_family`).
+//! `ray_vs_brute_force.rs` proves `cast_ray` itself right; this file ties the batch to it.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -103,7 +103,7 @@ proptest! {
             prop_assert_eq!(bits(answer), bits(&single), "ray {:?}", ray);
             prop_assert_eq!(bits(portable), bits(&single), "portable, ray {:?}", ray);
             if let Some(other) = &other {
-                prop_assert_eq!(bits(&other[i]), bits(&single), "other family's AVX2, ray {:?}", ray);
+                prop_assert_eq!(bits(&other[i]), bits(&single), "other AVX2, ray {:?}", ray);
             }
         }
     }

@@ -7,10 +7,11 @@
 //! together turns the decision into a select and the independent rays into parallel work:
 //! rays are set up [`LANES`] at a time (`WalkStart::lane`, the scalar walk's own arithmetic
 //! without its early returns), a few groups of lanes are stepped side by side with no branch
-//! per step, and every few steps (two or three, by instruction set and processor) each lane whose ray has
-//! finished is answered and given the next ray, so that lanes idle little while rays
-//! remain. This is the persistent-threads organisation of GPU ray tracers (Aila and Laine, "Understanding the Efficiency of Ray
-//! Traversal on GPUs", HPG 2009) at the scale of one CPU core.
+//! per step, and every few steps (two or three, by instruction set and processor) each
+//! lane whose ray has finished is answered and given the next ray, so that lanes idle
+//! little while rays remain. This is the persistent-threads organisation of GPU ray tracers
+//! (Aila and Laine, "Understanding the Efficiency of Ray Traversal on GPUs", HPG 2009) at
+//! the scale of one CPU core.
 //!
 //! Only the rays the fast walk decides alone are finished here: face hits (exact `t` from the
 //! cell's geometry, as in `cast_ray`) and misses. A ray that starts on a grid line or outside
