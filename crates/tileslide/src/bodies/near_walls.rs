@@ -51,6 +51,9 @@ enum Near {
 pub(super) struct NearWalls {
     near: Vec<Near>,
     pool: Vec<Capsule>,
+    /// Capsules of the pool some circle lists (the lists' lengths summed), kept as lists
+    /// change so that `begin` need not count them.
+    live: usize,
 }
 
 impl NearWalls {
@@ -59,6 +62,10 @@ impl NearWalls {
     /// drops the pool's unlisted capsules once they outnumber the listed ones. Call before a
     /// resolve.
     pub fn begin(&mut self, n: usize, change: MapChange, watch: &MapWatch) {
+        if self.near.len() > n {
+            let dropped: usize = self.near[n..].iter().map(|&near| length(near)).sum();
+            self.live -= dropped;
+        }
         self.near.resize(n, Near::Unknown);
         match change {
             MapChange::Unchanged => {}
@@ -67,21 +74,21 @@ impl NearWalls {
                     if let Near::Listed { area, .. } = near
                         && watch.touches(&area.aabb())
                     {
+                        self.live -= length(*near);
                         *near = Near::Unknown;
                     }
                 }
             }
-            MapChange::Everything => self.near.fill(Near::Unknown),
+            MapChange::Everything => {
+                self.near.fill(Near::Unknown);
+                self.live = 0;
+            }
         }
-        // Capsules of the pool still listed by some circle.
-        let live: usize = self
-            .near
-            .iter()
-            .map(|near| match near {
-                Near::Listed { start, end, .. } => (end - start) as usize,
-                _ => 0,
-            })
-            .sum();
+        let live = self.live;
+        debug_assert_eq!(
+            live,
+            self.near.iter().map(|&near| length(near)).sum::<usize>()
+        );
         if self.pool.len() > 2 * live + 4096 {
             let mut pool = Vec::with_capacity(2 * live + 4096);
             for near in &mut self.near {
@@ -113,8 +120,16 @@ impl NearWalls {
         if let Some(range) = serves(self.near[c], reach, mask, slack) {
             return range;
         }
-        self.near[c] = gather(reach, mask, map, &mut self.pool);
-        listed(self.near[c])
+        let list = gather(reach, mask, map, &mut self.pool);
+        self.list(c, list);
+        listed(list)
+    }
+
+    /// Makes `list` circle `c`'s list.
+    #[inline]
+    fn list(&mut self, c: usize, list: Near) {
+        self.live = self.live + length(list) - length(self.near[c]);
+        self.near[c] = list;
     }
 
     /// [`around`](Self::around) for every circle `c` for which `mask_of(c)` gives a mask,
@@ -159,14 +174,17 @@ impl NearWalls {
                 if let Near::Listed { start, end, .. } = &mut list {
                     (*start, *end) = (*start + offset, *end + offset);
                 }
-                self.near[c as usize] = list;
+                self.list(c as usize, list);
             }
         }
         ranges.clear();
-        ranges.extend((0..reach.len()).map(|c| match wanted(c) {
-            Some(_) => listed(self.near[c]),
-            None => (0, 0),
-        }));
+        let near = &self.near;
+        ranges.par_extend((0..reach.len()).into_par_iter().with_min_len(4096).map(
+            |c| match wanted(c) {
+                Some(_) => listed(near[c]),
+                None => (0, 0),
+            },
+        ));
     }
 
     /// Asks the processor to bring the walls of `range` into its caches (see
@@ -204,6 +222,12 @@ fn serves(near: Near, reach: &Circle, mask: SegmentFlags, slack: f32) -> Option<
         } if kept == mask && inside(reach, slack, &area) => Some((start, end)),
         _ => None,
     }
+}
+
+/// How many capsules a list holds.
+fn length(near: Near) -> usize {
+    let (start, end) = listed(near);
+    (end - start) as usize
 }
 
 /// The range of a list (`(0, 0)` for none).

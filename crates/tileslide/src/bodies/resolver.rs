@@ -188,7 +188,9 @@ impl Resolver {
                 start,
                 motion,
             };
-            let end = self.collide_and_slide(&mover, &ranges, config, gap, &mut report, &mut sink);
+            let stand = &self.position[..];
+            let end =
+                self.collide_and_slide(&mover, stand, &ranges, config, gap, &mut report, &mut sink);
             self.wall_ranges = ranges;
             self.position[b] = end;
             sink.end(b as u32, end);
@@ -232,7 +234,7 @@ impl Resolver {
             self.prefetch_neighbour_circles(b + far);
         }
         if b + near < self.position.len() {
-            self.prefetch_neighbour_positions(b + near, |other| {
+            self.prefetch_neighbour_positions(b + near, &self.position, |other| {
                 self.settled.prefetch_flags(other);
             });
         }
@@ -253,20 +255,21 @@ impl Resolver {
         }
     }
 
-    /// Asks the processor for the positions of body `b`'s neighbours' bodies, and for
-    /// whatever else `also` asks for of each (nothing for a body without a move). Reads the
-    /// neighbours' bodies: call it once [`prefetch_neighbour_circles`] has asked for them.
+    /// Asks the processor for the positions of body `b`'s neighbours' bodies (their entries
+    /// of `positions`, one per body), and for whatever else `also` asks for of each (nothing
+    /// for a body without a move). Reads the neighbours' bodies: call it once
+    /// [`prefetch_neighbour_circles`] has asked for them.
     ///
     /// [`prefetch_neighbour_circles`]: Self::prefetch_neighbour_circles
     #[inline]
-    fn prefetch_neighbour_positions(&self, b: usize, also: impl Fn(usize)) {
+    fn prefetch_neighbour_positions<T>(&self, b: usize, positions: &[T], also: impl Fn(usize)) {
         if self.motion[b] == Vec2::ZERO {
             return;
         }
         for c in self.first_circle[b]..self.first_circle[b + 1] {
             for &m in self.neighbours.row(c as usize) {
                 let other = self.circle_body[m as usize] as usize;
-                crate::prefetch::prefetch(&self.position, other);
+                crate::prefetch::prefetch(positions, other);
                 also(other);
             }
         }
@@ -423,10 +426,12 @@ impl Resolver {
 
     /// Where `mover` ends when it moves by its proposed move with collide and slide from
     /// where it stands, against the walls at `ranges` of `near` (one range per circle) and
-    /// its neighbours where they stand.
-    fn collide_and_slide<S: Sink>(
+    /// its neighbours where `stand` has them.
+    #[allow(clippy::too_many_arguments)]
+    fn collide_and_slide<S: Sink, P: Stand + ?Sized>(
         &self,
         mover: &Mover,
+        stand: &P,
         ranges: &[(u32, u32)],
         config: &ResolveConfig,
         gap: f32,
@@ -445,7 +450,7 @@ impl Resolver {
             }
             sink.pass(pass, position, remaining);
             let Some((hit, obstacle, id)) =
-                self.first_contact(mover, position, ranges, remaining, gap, sink)
+                self.first_contact(mover, stand, position, ranges, remaining, gap, sink)
             else {
                 sink.free();
                 return off_contact(position, remaining, along);
@@ -516,10 +521,12 @@ impl Resolver {
     }
 
     /// The first contact of `mover` moving by `motion` from `origin`, against the walls at
-    /// `ranges` (one per circle) and its neighbours where they are now.
-    fn first_contact<S: Sink>(
+    /// `ranges` (one per circle) and its neighbours where `stand` has them.
+    #[allow(clippy::too_many_arguments)]
+    fn first_contact<S: Sink, P: Stand + ?Sized>(
         &self,
         mover: &Mover,
+        stand: &P,
         origin: Vec2,
         ranges: &[(u32, u32)],
         motion: Vec2,
@@ -566,7 +573,7 @@ impl Resolver {
             let mut nearest: Option<(SweepHit, u32, S::Id)> = None;
             for &n in neighbours {
                 let other = &self.circles[n as usize];
-                let at = self.position[other.body as usize] + other.offset;
+                let at = stand.at(other.body as usize) + other.offset;
                 let distance2 = center.distance_squared(at);
                 let radius = band(distance2, c.radius + other.radius, gap);
                 if distance2 > (radius + reach) * (radius + reach) {
@@ -591,6 +598,22 @@ impl Resolver {
             }
         }
         best
+    }
+}
+
+/// Where the bodies stand while one is resolved: the ones resolved before it where they
+/// ended, the others where they started.
+trait Stand {
+    /// Where body `b` stands.
+    fn at(&self, b: usize) -> Vec2;
+}
+
+/// The resolve in slot order keeps them in `position`, each body's end written over its
+/// start as it is resolved.
+impl Stand for [Vec2] {
+    #[inline]
+    fn at(&self, b: usize) -> Vec2 {
+        self[b]
     }
 }
 

@@ -13,6 +13,11 @@ use crate::geometry::in_range;
 use crate::owner::Owner;
 use crate::tiles::TileMap;
 
+/// Slots one task integrates at least (the `parallel` feature): a body's move is a few
+/// nanoseconds.
+#[cfg(feature = "parallel")]
+const INTEGRATE_PER_TASK: usize = 4096;
+
 /// A slot of a set: its body, if any, and its generation (the generation of its next
 /// handle once the body is removed).
 #[derive(Clone, Debug)]
@@ -316,12 +321,26 @@ impl Bodies {
     }
 
     /// The third loop: every body makes its resolved move; proposed moves are cleared.
+    ///
+    /// With the `parallel` feature, many bodies are moved on the threads of the current
+    /// rayon pool (each on its own: the same result).
     pub fn integrate(&mut self) {
-        for body in self.bodies_mut() {
+        let make_move = |body: &mut Body| {
             body.position += body.resolved;
             body.proposed = Vec2::ZERO;
             body.resolved = Vec2::ZERO;
+        };
+        #[cfg(feature = "parallel")]
+        if self.slots.len() >= 2 * INTEGRATE_PER_TASK && rayon::current_num_threads() > 1 {
+            use rayon::prelude::*;
+            self.slots
+                .par_iter_mut()
+                .with_min_len(INTEGRATE_PER_TASK)
+                .filter_map(|slot| slot.body.as_mut())
+                .for_each(make_move);
+            return;
         }
+        self.bodies_mut().for_each(make_move);
     }
 }
 

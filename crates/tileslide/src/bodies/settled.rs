@@ -156,26 +156,28 @@ impl Settled {
         self.bodies[b] = Memory::of(start, motion, end, contacts, cut_short);
     }
 
-    /// Remembers that body `b` was not resolved (no proposed move): it stays at `at`.
-    /// [`remember`](Self::remember) for every body `b` for which `each(b)` gives what its
-    /// resolve saw and gave (`(start, motion, end, contacts, cut_short)`), and flags for the
-    /// next step each body that stayed for which `disturbed_next(b)` holds (the others are
-    /// resolved next step whatever their flag); on the threads of the current rayon pool,
-    /// each body's entries written by one task.
+    /// [`remember`](Self::remember) for every body `b` for which `each(b, &mut items[b])`
+    /// gives what its resolve saw and gave (`(start, motion, end, contacts, cut_short)`),
+    /// and flags for the next step each body that stayed for which `disturbed_next(b)` holds
+    /// (the others are resolved next step whatever their flag); on the threads of the
+    /// current rayon pool, each body's entries (and item, which `each` may write) taken by
+    /// one task.
     #[cfg(feature = "parallel")]
-    pub fn remember_each(
+    pub fn remember_each<T: Send>(
         &mut self,
-        each: impl Fn(usize) -> Option<(Vec2, Vec2, Vec2, usize, bool)> + Sync,
+        items: &mut [T],
+        each: impl Fn(usize, &mut T) -> Option<(Vec2, Vec2, Vec2, usize, bool)> + Sync,
         disturbed_next: impl Fn(usize) -> bool + Sync,
     ) {
         use rayon::prelude::*;
         self.bodies
             .par_iter_mut()
             .zip(self.disturbed_next.par_iter_mut())
+            .zip(items.par_iter_mut())
             .enumerate()
             .with_min_len(1024)
-            .for_each(|(b, (memory, next))| {
-                if let Some((start, motion, end, contacts, cut_short)) = each(b) {
+            .for_each(|(b, ((memory, next), item))| {
+                if let Some((start, motion, end, contacts, cut_short)) = each(b, item) {
                     *memory = Memory::of(start, motion, end, contacts, cut_short);
                 }
                 if memory.stayed && !*next {
@@ -184,6 +186,7 @@ impl Settled {
             });
     }
 
+    /// Remembers that body `b` was not resolved (no proposed move): it stays at `at`.
     pub fn remember_still(&mut self, b: usize, at: Vec2) {
         self.bodies[b] = Memory { end: at, ..UNKNOWN };
     }

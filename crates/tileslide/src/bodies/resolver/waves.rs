@@ -11,10 +11,11 @@
 //! wave runs, each of its bodies' lower neighbours has ended (an earlier wave) and each
 //! higher one has not started (a later wave): it reads exactly what it reads in slot order.
 //! The moving bodies of a wave are resolved on every thread, each into an [`Outcome`] kept
-//! in wave order; the calling thread then writes each one's end and whether it moved, which
-//! later waves read. What no later body reads (the resolved moves, the report's counts, the
-//! settled memory, the flags that disturb settled bodies next step) is written once every
-//! wave has run, again on every thread.
+//! in wave order; the task that resolves a body also writes where it ended and whether it
+//! moved into entries every task reads ([`Shared`], relaxed atomics), which later waves
+//! read. What no later body reads (the resolved moves, the report's counts, the settled
+//! memory, the flags that disturb settled bodies next step) is written once every wave has
+//! run, again on every thread.
 //!
 //! Made from the candidates rather than the rows, and for every body whether it moves or
 //! not, the schedule holds for every step until the candidates are found again (about
@@ -31,11 +32,12 @@
 //! one body at a time, with the same result, no faster than on one thread.
 
 use std::ops::Range;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
 use glam::Vec2;
 use rayon::prelude::*;
 
-use super::{Mover, Resolver, find_neighbours, wake_where_changed};
+use super::{Mover, Resolver, Stand, find_neighbours, wake_where_changed};
 use crate::bodies::body::Body;
 use crate::bodies::config::{ResolveConfig, ResolveReport};
 use crate::bodies::map_watch::MapChange;
@@ -70,15 +72,56 @@ struct Outcome {
 }
 
 /// The waves' buffers, kept between resolves.
-#[derive(Clone, Debug, Default)]
+#[derive(Debug, Default)]
 pub(super) struct Waves {
     schedule: Schedule,
     /// Per circle, its range of `near`'s walls (`(0, 0)` for still bodies).
     ranges: Vec<(u32, u32)>,
     /// The outcomes, in the schedule's order (`None` for still bodies).
     outcomes: Vec<Option<Outcome>>,
-    /// Per body, whether it moved.
-    moved: Vec<bool>,
+    /// Per body, where it stands: its start, then its end once its wave has run.
+    stand: Vec<Shared>,
+    /// Per body, whether it moved, once its wave has run.
+    moved: Vec<AtomicBool>,
+}
+
+/// A copy keeps the schedule; the buffers are filled anew by every resolve.
+impl Clone for Waves {
+    fn clone(&self) -> Self {
+        Self {
+            schedule: self.schedule.clone(),
+            ..Self::default()
+        }
+    }
+}
+
+/// A position the tasks of the waves share: a body's entry is written by the task that
+/// resolves it, and read only by bodies of later waves (after the join that ends its wave)
+/// or of none (see the module doc), so relaxed loads and stores see exactly what the
+/// resolve in slot order would read. On x86-64 they are plain moves.
+#[derive(Debug, Default)]
+struct Shared(AtomicU64);
+
+impl Shared {
+    fn get(&self) -> Vec2 {
+        let bits = self.0.load(Ordering::Relaxed);
+        Vec2::new(
+            f32::from_bits(bits as u32),
+            f32::from_bits((bits >> 32) as u32),
+        )
+    }
+
+    fn set(&self, at: Vec2) {
+        let bits = u64::from(at.x.to_bits()) | (u64::from(at.y.to_bits()) << 32);
+        self.0.store(bits, Ordering::Relaxed);
+    }
+}
+
+impl Stand for [Shared] {
+    #[inline]
+    fn at(&self, b: usize) -> Vec2 {
+        self[b].get()
+    }
 }
 
 impl Resolver {
@@ -91,10 +134,10 @@ impl Resolver {
     /// circle; the memories' start. The sequential resolve does the same work with the
     /// same inputs, the walls as each body comes.
     ///
-    /// Between waves, the calling thread only writes each body's end and whether it moved;
-    /// what the sequential resolve writes as it goes and later bodies do not read (the
-    /// resolved moves, the report's counts, the settled memory, the flags for the next
-    /// step) is written at the end, on every thread. A body that moved disturbs its
+    /// Each wave's tasks write where their bodies ended and whether each moved, for the
+    /// later waves; what the sequential resolve writes as it goes and later bodies do not
+    /// read (the resolved moves, the report's counts, the settled memory, the flags for the
+    /// next step) is written at the end, on every thread. A body that moved disturbs its
     /// neighbours (see `settled`): the ones after it in slot order this step, which a body
     /// checks at its turn by reading its lower neighbours' `moved`, and the ones before it
     /// next step, flagged at the end.
@@ -154,7 +197,15 @@ impl Resolver {
                 ranges,
             );
         };
+        let (stand, moved) = (&mut waves.stand, &mut waves.moved);
         let memories = || {
+            // Where each body stands when the waves start; every entry of `moved` is
+            // written by its body's wave before any body reads it.
+            stand.resize_with(n, Shared::default);
+            moved.resize_with(n, AtomicBool::default);
+            for (shared, &at) in stand.iter().zip(position.iter()) {
+                shared.set(at);
+            }
             settled.begin(position, change != MapChange::Everything, config);
             wake_where_changed(settled, watch, change, boxes, circle_body);
             for (b, &motion) in motion.iter().enumerate() {
@@ -164,9 +215,8 @@ impl Resolver {
             }
         };
         rayon::join(neighbours_and_schedule, || rayon::join(walls, memories));
-        waves.moved.clear();
-        waves.moved.resize(n, false);
-        waves.outcomes.clear();
+        // Every place is written by its wave.
+        waves.outcomes.truncate(n);
         waves.outcomes.resize(n, None);
         let schedule = &waves.schedule;
         for w in 0..schedule.starts.len().saturating_sub(1) {
@@ -174,22 +224,24 @@ impl Resolver {
             let wave = &schedule.order[places.clone()];
             let outcomes = &mut waves.outcomes[places];
             let this = &*self;
-            let (ranges, moved) = (&waves.ranges, &waves.moved);
+            let (ranges, stand, moved) = (&waves.ranges, &waves.stand[..], &waves.moved[..]);
             outcomes
                 .par_iter_mut()
                 .zip(wave)
                 .enumerate()
                 .with_min_len(MIN_BODIES_PER_TASK)
                 .for_each(|(k, (outcome, &b))| {
-                    this.prefetch_ahead(wave, k, ranges, moved);
-                    *outcome = this.outcome(b, ranges, moved, config, gap);
+                    this.prefetch_ahead(wave, k, ranges, stand, moved);
+                    *outcome = this.outcome(b, ranges, stand, moved, config, gap);
+                    let bi = b as usize;
+                    match outcome {
+                        Some(o) if !o.stayed => {
+                            stand[bi].set(o.end);
+                            moved[bi].store(o.end != o.start, Ordering::Relaxed);
+                        }
+                        _ => moved[bi].store(false, Ordering::Relaxed),
+                    }
                 });
-            for (&b, outcome) in wave.iter().zip(&*outcomes) {
-                if let Some(o) = outcome {
-                    self.position[b as usize] = o.end;
-                    waves.moved[b as usize] = o.end != o.start;
-                }
-            }
         }
         // What later bodies do not read, for every body at once.
         let outcomes = &waves.outcomes;
@@ -206,28 +258,19 @@ impl Resolver {
         {
             self.skipped += outcomes.iter().flatten().filter(|o| o.stayed).count();
         }
-        let (place, moved, motion) = (&waves.schedule.place, &waves.moved, &self.motion);
-        let done = |b: usize| outcomes[place[b] as usize].as_ref();
-        bodies
-            .par_iter_mut()
-            .enumerate()
-            .with_min_len(1024)
-            .for_each(|(b, body)| {
-                if let Some(o) = done(b) {
-                    body.resolved = if o.stayed {
-                        Vec2::ZERO
-                    } else {
-                        o.end - o.start
-                    };
-                }
-            });
+        let (place, moved, motion) = (&waves.schedule.place, &waves.moved[..], &self.motion);
         let (circle_body, first, neighbours) =
             (&self.circle_body, &self.first_circle, &self.neighbours);
         self.settled.remember_each(
-            |b| {
-                done(b)
-                    .filter(|o| !o.stayed)
-                    .map(|o| (o.start, motion[b], o.end, o.contacts, o.cut_short))
+            bodies,
+            |b, body| {
+                let o = outcomes[place[b] as usize].as_ref()?;
+                if o.stayed {
+                    body.resolved = Vec2::ZERO;
+                    return None;
+                }
+                body.resolved = o.end - o.start;
+                Some((o.start, motion[b], o.end, o.contacts, o.cut_short))
             },
             |b| {
                 let circles = first[b] as usize..first[b + 1] as usize;
@@ -240,7 +283,14 @@ impl Resolver {
     /// Asks the processor for what the bodies after the `k`th of `wave` will read (see
     /// [`AHEAD`]): the wave's bodies are far apart in slot order, so each one's entries are
     /// on cache lines of their own, and so are its neighbours'.
-    fn prefetch_ahead(&self, wave: &[u32], k: usize, ranges: &[(u32, u32)], moved: &[bool]) {
+    fn prefetch_ahead(
+        &self,
+        wave: &[u32],
+        k: usize,
+        ranges: &[(u32, u32)],
+        stand: &[Shared],
+        moved: &[AtomicBool],
+    ) {
         use crate::prefetch::prefetch;
         if let Some(&b) = wave.get(k + AHEAD[0]) {
             let b = b as usize;
@@ -266,18 +316,19 @@ impl Resolver {
             self.prefetch_neighbour_circles(b as usize);
         }
         if let Some(&b) = wave.get(k + AHEAD[4]) {
-            self.prefetch_neighbour_positions(b as usize, |other| prefetch(moved, other));
+            self.prefetch_neighbour_positions(b as usize, stand, |other| prefetch(moved, other));
         }
     }
 
-    /// Resolves body `b` against what stands now, as the sequential resolve does at its
-    /// turn, without writing anything (`None` for a body without a move); `moved` tells
-    /// which bodies of earlier waves moved.
+    /// Resolves body `b` against the bodies where `stand` has them now, as the sequential
+    /// resolve does at its turn, without writing anything (`None` for a body without a
+    /// move); `moved` tells which bodies of earlier waves moved.
     fn outcome(
         &self,
         b: u32,
         ranges: &[(u32, u32)],
-        moved: &[bool],
+        stand: &[Shared],
+        moved: &[AtomicBool],
         config: &ResolveConfig,
         gap: f32,
     ) -> Option<Outcome> {
@@ -318,6 +369,7 @@ impl Resolver {
         };
         let end = self.collide_and_slide(
             &mover,
+            stand,
             &ranges[circles],
             config,
             gap,
@@ -339,13 +391,13 @@ fn neighbour_moved(
     mut circles: Range<usize>,
     circle_body: &[u32],
     neighbours: &Neighbours,
-    moved: &[bool],
+    moved: &[AtomicBool],
     which: impl Fn(usize) -> bool,
 ) -> bool {
     circles.any(|c| {
         neighbours.row(c).iter().any(|&n| {
             let a = circle_body[n as usize] as usize;
-            which(a) && moved[a]
+            which(a) && moved[a].load(Ordering::Relaxed)
         })
     })
 }
@@ -396,10 +448,11 @@ impl Schedule {
             let circles = shape.first_circle[b] as usize..shape.first_circle[b + 1] as usize;
             for c in circles {
                 for &other in shape.neighbours.candidates(c) {
+                    // Without a branch: whether a candidate comes before is a coin toss
+                    // (the later ones' waves are not made yet, and are masked off).
                     let a = shape.circle_body[other as usize] as usize;
-                    if a < b {
-                        wave = wave.max(self.wave[a] + 1);
-                    }
+                    let after = self.wave[a] + 1;
+                    wave = wave.max(if a < b { after } else { 0 });
                 }
             }
             self.wave[b] = wave;
