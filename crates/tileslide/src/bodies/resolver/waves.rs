@@ -60,16 +60,20 @@ const MIN_BODIES_PER_TASK: usize = 32;
 /// 3, 1 did no better within this machine's noise.
 const AHEAD: [usize; 5] = [32, 8, 4, 2, 1];
 
-/// What resolving one body of a wave found.
+/// What resolving one body of a wave found: 16 bytes, with the `Option` around it (the
+/// flags' spare values mark `None`), so that the pass after the waves, which reads them in
+/// slot order and so all over the array, finds more of them in cache.
 #[derive(Clone, Copy, Debug)]
 struct Outcome {
-    start: Vec2,
+    /// Where it ended (its start is `position`).
     end: Vec2,
-    contacts: usize,
+    contacts: u32,
     cut_short: bool,
     /// Skipped as blocked in place again (see `settled`): `end` is its start.
     stayed: bool,
 }
+
+const _: () = assert!(std::mem::size_of::<Option<Outcome>>() == 16);
 
 /// The waves' buffers, kept between resolves.
 #[derive(Debug, Default)]
@@ -237,7 +241,7 @@ impl Resolver {
                     match outcome {
                         Some(o) if !o.stayed => {
                             stand[bi].set(o.end);
-                            moved[bi].store(o.end != o.start, Ordering::Relaxed);
+                            moved[bi].store(o.end != this.position[bi], Ordering::Relaxed);
                         }
                         _ => moved[bi].store(false, Ordering::Relaxed),
                     }
@@ -249,7 +253,7 @@ impl Resolver {
             .par_iter()
             .with_min_len(4096)
             .flatten()
-            .map(|o| (1, o.contacts, usize::from(o.cut_short)))
+            .map(|o| (1, o.contacts as usize, usize::from(o.cut_short)))
             .reduce(|| (0, 0, 0), |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2));
         report.moving += moving;
         report.contact_count += contacts;
@@ -258,7 +262,8 @@ impl Resolver {
         {
             self.skipped += outcomes.iter().flatten().filter(|o| o.stayed).count();
         }
-        let (place, moved, motion) = (&waves.schedule.place, &waves.moved[..], &self.motion);
+        let (place, moved) = (&waves.schedule.place, &waves.moved[..]);
+        let (position, motion) = (&self.position, &self.motion);
         let (circle_body, first, neighbours) =
             (&self.circle_body, &self.first_circle, &self.neighbours);
         self.settled.remember_each(
@@ -269,8 +274,9 @@ impl Resolver {
                     body.resolved = Vec2::ZERO;
                     return None;
                 }
-                body.resolved = o.end - o.start;
-                Some((o.start, motion[b], o.end, o.contacts, o.cut_short))
+                let start = position[b];
+                body.resolved = o.end - start;
+                Some((start, motion[b], o.end, o.contacts as usize, o.cut_short))
             },
             |b| {
                 let circles = first[b] as usize..first[b + 1] as usize;
@@ -351,9 +357,8 @@ impl Resolver {
             );
             if !disturbed {
                 return Some(Outcome {
-                    start,
                     end: start,
-                    contacts,
+                    contacts: u32::try_from(contacts).unwrap_or(u32::MAX),
                     cut_short,
                     stayed: true,
                 });
@@ -377,9 +382,8 @@ impl Resolver {
             &mut sink,
         );
         Some(Outcome {
-            start,
             end,
-            contacts: counts.contact_count,
+            contacts: u32::try_from(counts.contact_count).unwrap_or(u32::MAX),
             cut_short: counts.cut_short > 0,
             stayed: false,
         })
