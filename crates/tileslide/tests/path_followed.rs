@@ -259,3 +259,35 @@ fn paths_and_flow_fields_cross_a_one_way_platform_only_from_behind() {
         assert!(end.distance(to) <= ARRIVED, "{end}");
     }
 }
+
+/// A case the flow-field property test found: solid cells either side of a gap two cells
+/// wide (x from 8 to 10) in row 6, and below it the one-way platform from (8, 7) to (9, 7)
+/// (normal up), a ramp to its left and open cells to its right.
+const PLATFORM_END: &str = "\
+############
+#..........#
+#........=.#
+#.........=#
+###...#=..##
+#..##.=....#
+#..=/=\\#.=##
+##.=#../=..#
+#.=#...=/=.#
+############";
+
+/// A body of radius 0.7 just below that platform, 0.2 cells left of its right end, goes up
+/// through the platform and the gap to a goal 4.3 cells above. Only lines nearly along the
+/// platform's normal pass its end there, and the only node it joins is the end itself, by
+/// a line whose slant steepens as the body rises straight up; the field steers it only
+/// along lines every point of which joins the point it aims at, so it gets a direction at
+/// every step and arrives.
+#[test]
+fn a_body_following_a_flow_field_up_past_a_one_way_platforms_end_keeps_a_direction() {
+    let map = ascii::parse(PLATFORM_END, "platform_end.txt", 1.0).unwrap();
+    let nav = NavGrid::new(&map, NavConfig::default()).unwrap();
+    let (start, goal, r) = (v(8.794352, 7.28006), v(8.782031, 2.965796), 0.7);
+    let field = FlowField::new(&nav, &map, goal, r).unwrap();
+    let distance = field.distance(&nav, &map, start).unwrap().unwrap();
+    let end = follow_field(&nav, &map, &field, start, distance).unwrap();
+    assert!(end.distance(goal) <= ARRIVED, "{end}");
+}

@@ -5,7 +5,9 @@
 //! An agent steers towards the farthest of the next few nodes on its way that it can reach
 //! in a straight line, not towards the next node: it cuts the lattice's 45° turns and
 //! never aims at a node behind a corner it would have to round, so agents moved by the
-//! resolver flow around each other and corners instead of catching on them.
+//! resolver flow around each other and corners instead of catching on them. It aims only
+//! at points that every point of the line joins as well, so an agent that follows the
+//! directions from a point the field reaches gets one at every step until it arrives.
 //!
 //! A field catches up with the map by itself ([`FlowField::sync`]): it keeps, for every node
 //! it reaches, which moves into and out of the node were open, and after edits compares
@@ -95,7 +97,7 @@ impl FlowField {
         self.distance.fill(UNREACHED);
         self.next.fill(TO_GOAL);
         let mut open = RadixHeap::default();
-        for a in nav.attach(map, self.goal, self.radius, End::Goal) {
+        for a in nav.attach(map, self.goal, self.radius, End::Goal, |_| true) {
             let n = a.node as usize;
             if a.cost < self.distance[n] {
                 self.distance[n] = a.cost;
@@ -186,10 +188,12 @@ impl FlowField {
     /// go on straight to a goal there while every node it joins leads back round through
     /// the platform.
     fn entry(&self, nav: &NavGrid, map: &TileMap, p: Vec2) -> Option<(u32, Entry)> {
+        // Only nodes the field reaches: a point joined to nearby nodes that do not lead to
+        // the goal still looks farther for ones that do.
+        let reached = |n: usize| self.distance[n] != UNREACHED;
         let through = nav
-            .attach(map, p, self.radius, End::Start)
+            .attach(map, p, self.radius, End::Start, reached)
             .into_iter()
-            .filter(|a| self.distance[a.node as usize] != UNREACHED)
             .map(|a| {
                 (
                     a.cost.saturating_add(self.distance[a.node as usize]),
@@ -216,7 +220,9 @@ impl FlowField {
     }
 
     /// The unit direction a circle at `p` should move in to reach the goal: towards the
-    /// farthest of the next few points on its way that it reaches in a straight line.
+    /// farthest of the next few points on its way that it reaches in a straight line and
+    /// that every point of the line reaches the goal through too (a node within the block
+    /// `p` joins the lattice through, or the goal when it is at most 4 cells away).
     /// `None` if it cannot reach the goal or is on it.
     pub fn direction(
         &self,
@@ -235,28 +241,34 @@ impl FlowField {
             return Ok(None);
         };
         let clear = |q: Vec2| nav.table.segment_clearance(map, p, q) >= need;
-        // The way on: up to LOOKAHEAD nodes, then the goal if reached.
+        // The way on: up to LOOKAHEAD nodes, then the goal if reached; each with whether
+        // every point of the line from `p` to it joins it as `entry` joins points (a node
+        // `attach` tries for `p`, the goal when near), so that an agent moving along the
+        // line keeps a way to the goal. Away from one-way platforms some node near the
+        // agent always joins it; within reach of a platform's end, where only lines nearly
+        // along its normal are clear, none may.
         let mut way = Vec::with_capacity(LOOKAHEAD + 1);
         let mut n = node as usize;
-        way.push(lattice.position_of(n));
+        way.push((lattice.position_of(n), true));
         while way.len() <= LOOKAHEAD {
             let d = self.next[n];
             if d == TO_GOAL {
-                way.push(self.goal);
+                way.push((self.goal, NavGrid::is_near(map, p, self.goal)));
                 break;
             }
             let (i, j) = lattice.coords(n);
             let (dx, dy) = MOVES[d as usize];
-            n = lattice.index((i as i32 + dx) as u32, (j as i32 + dy) as u32);
-            way.push(lattice.position_of(n));
+            let (i, j) = ((i as i32 + dx) as u32, (j as i32 + dy) as u32);
+            n = lattice.index(i, j);
+            way.push((lattice.position(i, j), nav.in_join_block(p, i, j)));
         }
-        // The farthest point of the way in a straight line; the entry node always is.
+        // The farthest point of the way the agent keeps joining, in a straight line; the
+        // entry node always is.
         let target = way
             .iter()
             .rev()
-            .find(|&&q| q != p && clear(q))
-            .copied()
-            .unwrap_or(way[0]);
+            .find(|&&(q, joined)| joined && q != p && clear(q))
+            .map_or(way[0].0, |&(q, _)| q);
         Ok((target - p).try_normalize())
     }
 

@@ -280,10 +280,16 @@ impl NavGrid {
             .then(|| (radius + margin).min(own - margin * END_MARGIN * 0.5))
     }
 
+    /// True when `a` and `b` are near enough (at most [`NEAR_CELLS`] apart) to be joined
+    /// straight ([`joins_straight`](Self::joins_straight)).
+    pub(crate) fn is_near(map: &TileMap, a: Vec2, b: Vec2) -> bool {
+        a.distance(b) <= NEAR_CELLS * map.cell_size().min_element()
+    }
+
     /// True when `from` and `to` are near (at most [`NEAR_CELLS`] apart) and a circle of
     /// `radius` goes from one to the other in a straight line, clear as both ends need.
     pub(crate) fn joins_straight(&self, map: &TileMap, from: Vec2, to: Vec2, radius: f32) -> bool {
-        if from.distance(to) > NEAR_CELLS * map.cell_size().min_element() {
+        if !Self::is_near(map, from, to) {
             return false;
         }
         let ends = self
@@ -293,16 +299,23 @@ impl NavGrid {
         ends.is_some_and(|e| self.table.segment_clearance(map, from, to) >= e)
     }
 
-    /// The nodes around `p` a circle of `radius` reaches from `p` in a straight line (or,
-    /// for a goal, reaches `p` from), with the line's cost; empty if the circle does not
-    /// fit at `p`.
+    /// The nodes around `p` that `usable` accepts and a circle of `radius` reaches from `p`
+    /// in a straight line (or, for a goal, reaches `p` from), with the line's cost; empty
+    /// if the circle does not fit at `p`.
     ///
     /// The nodes of the 4 × 4 block around `p`, or if it reaches none of those, of the
     /// block [`WIDE_JOIN`] nodes each way: a circle just behind a one-way platform, near
     /// its end, goes on through the platform only nearly straight along its normal (any
     /// other line closes in on the end in front of it), where the nearest node may be a
     /// few cells away.
-    pub(crate) fn attach(&self, map: &TileMap, p: Vec2, radius: f32, end: End) -> Vec<Attach> {
+    pub(crate) fn attach(
+        &self,
+        map: &TileMap,
+        p: Vec2,
+        radius: f32,
+        end: End,
+        usable: impl Fn(usize) -> bool,
+    ) -> Vec<Attach> {
         let lattice = &self.table.lattice;
         let Some(need) = self.end_clearance(map, p, radius) else {
             return Vec::new();
@@ -320,6 +333,7 @@ impl NavGrid {
                         || j < 0
                         || i >= i64::from(lattice.nx)
                         || j >= i64::from(lattice.ny)
+                        || !usable(lattice.index(i as u32, j as u32))
                     {
                         continue;
                     }
@@ -343,6 +357,19 @@ impl NavGrid {
         out
     }
 
+    /// True when node (`i`, `j`) is among the nodes [`attach`](Self::attach) tries for
+    /// `p` (the block [`WIDE_JOIN`] nodes each way). Then it is among those it tries for
+    /// every point of the line from `p` to the node too: along the line each coordinate
+    /// only nears the node's.
+    pub(crate) fn in_join_block(&self, p: Vec2, i: u32, j: u32) -> bool {
+        let base = self.table.lattice.local(p).floor();
+        let within = |node: u32, b: f32| {
+            let d = i64::from(node) - b as i64;
+            (1 - WIDE_JOIN..=WIDE_JOIN).contains(&d)
+        };
+        within(i, base.x) && within(j, base.y)
+    }
+
     /// The shortest path this grid finds for a circle of `radius` from `from` to `to`,
     /// smoothed into straight runs; `None` when the circle does not fit at either end or
     /// cannot get from one to the other. Every run is clear by the map's circle cast with
@@ -361,8 +388,8 @@ impl NavGrid {
         check_point("from", from)?;
         check_point("to", to)?;
         let need = self.check(map, radius)?;
-        let starts = self.attach(map, from, radius, End::Start);
-        let goals = self.attach(map, to, radius, End::Goal);
+        let starts = self.attach(map, from, radius, End::Start, |_| true);
+        let goals = self.attach(map, to, radius, End::Goal, |_| true);
         if starts.is_empty() || goals.is_empty() {
             return Ok(None);
         }
