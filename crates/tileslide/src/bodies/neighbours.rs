@@ -85,14 +85,54 @@ impl Neighbours {
     /// bodies (`body_of`) differ and collide by `collides`. `boxes` are the discs' boxes:
     /// the candidates are found again with `kind` for them grown by a margin, unless every
     /// box is still inside the grown box the candidates were found for. `cell` is the map's
-    /// smaller cell side, the unit of the margin.
+    /// smaller cell side, the unit of the margin. `beside` runs with the candidates (found
+    /// again or kept) while the rows are filled.
     ///
     /// With the `parallel` feature, the rows are filled on the threads of the current
-    /// rayon pool, each from its own candidates: the same rows on any number of threads.
+    /// rayon pool, each from its own candidates (the same rows on any number of threads),
+    /// and `beside` runs beside them.
+    #[allow(clippy::too_many_arguments)]
     pub fn update(
         &mut self,
         kind: PairMethod,
         reach: &[Circle],
+        boxes: &[Aabb],
+        cell: f32,
+        body_of: impl Fn(u32) -> usize + Sync,
+        collides: impl Fn(usize, usize) -> bool + Sync,
+        beside: impl FnOnce(CandidateRows<'_>) + Send,
+    ) {
+        self.find_candidates(kind, boxes, cell, body_of, collides);
+        let rows = CandidateRows {
+            first: &self.first,
+            candidates: &self.candidates,
+            searches: self.searches,
+        };
+        let fill = || {
+            fill_rows(
+                &self.first,
+                &self.candidates,
+                reach,
+                &mut self.list,
+                &mut self.len,
+            );
+        };
+        #[cfg(feature = "parallel")]
+        rayon::join(fill, || beside(rows));
+        #[cfg(not(feature = "parallel"))]
+        {
+            let mut fill = fill;
+            fill();
+            beside(rows);
+        }
+    }
+
+    /// Finds the candidates again with `kind` for `boxes` grown by the margin, unless every
+    /// box is still inside the grown box the candidates were found for (see
+    /// [`update`](Self::update)).
+    fn find_candidates(
+        &mut self,
+        kind: PairMethod,
         boxes: &[Aabb],
         cell: f32,
         body_of: impl Fn(u32) -> usize + Sync,
@@ -115,21 +155,6 @@ impl Neighbours {
             self.candidate_rows(boxes.len());
             self.searches += 1;
         }
-        let n = boxes.len();
-        self.list.resize(self.candidates.len(), 0);
-        self.len.resize(n, 0);
-        let from = Candidates {
-            first: &self.first,
-            candidates: &self.candidates,
-            reach,
-        };
-        let (list, len) = (&mut self.list[..], &mut self.len[..]);
-        #[cfg(feature = "parallel")]
-        if n >= 2 * CIRCLES_PER_TASK && rayon::current_num_threads() > 1 {
-            from.fill_split(0..n, list, len);
-            return;
-        }
-        from.fill(0..n, list, len);
     }
 
     /// The candidates' rows from the pairs, by counting sort: count each circle's pairs,
@@ -161,21 +186,6 @@ impl Neighbours {
         // mispredicted branch or two per circle in a dense crowd).
     }
 
-    /// The candidates of circle `c`: a superset of its row, unchanged until the candidates
-    /// are found again (see [`searches`](Self::searches)).
-    #[cfg(feature = "parallel")]
-    #[inline]
-    pub fn candidates(&self, c: usize) -> &[u32] {
-        &self.candidates[self.first[c] as usize..self.first[c + 1] as usize]
-    }
-
-    /// How many times the candidates were found so far: the candidates are the same as
-    /// long as this is.
-    #[cfg(feature = "parallel")]
-    pub fn searches(&self) -> u64 {
-        self.searches
-    }
-
     /// Asks the processor to bring circle `c`'s row's place and length into its caches
     /// (see [`prefetch`](crate::prefetch)).
     #[cfg(feature = "parallel")]
@@ -199,6 +209,56 @@ impl Neighbours {
         let start = self.first[c] as usize;
         &self.list[start..start + self.len[c] as usize]
     }
+}
+
+/// The candidates' rows, read while the rows are filled (see [`Neighbours::update`]).
+#[derive(Clone, Copy)]
+pub(super) struct CandidateRows<'a> {
+    first: &'a [u32],
+    candidates: &'a [u32],
+    searches: u64,
+}
+
+#[cfg_attr(not(feature = "parallel"), allow(dead_code))]
+impl CandidateRows<'_> {
+    /// The candidates of circle `c`: a superset of its row, unchanged until the candidates
+    /// are found again (see [`searches`](Self::searches)).
+    #[inline]
+    pub fn candidates(&self, c: usize) -> &[u32] {
+        &self.candidates[self.first[c] as usize..self.first[c + 1] as usize]
+    }
+
+    /// How many times the candidates were found so far: the candidates are the same as
+    /// long as this is.
+    pub fn searches(&self) -> u64 {
+        self.searches
+    }
+}
+
+/// Fills the rows (`list`, `len`) from the candidates' rows (`first`, `candidates`): each
+/// circle's candidates whose `reach` discs overlap its own; on the threads of the current
+/// rayon pool for many circles (the `parallel` feature).
+fn fill_rows(
+    first: &[u32],
+    candidates: &[u32],
+    reach: &[Circle],
+    list: &mut Vec<u32>,
+    len: &mut Vec<u32>,
+) {
+    let n = reach.len();
+    list.resize(candidates.len(), 0);
+    len.resize(n, 0);
+    let from = Candidates {
+        first,
+        candidates,
+        reach,
+    };
+    #[cfg(feature = "parallel")]
+    if n >= 2 * CIRCLES_PER_TASK && rayon::current_num_threads() > 1 {
+        from.fill_split(0..n, list, len);
+        return;
+    }
+    from.fill(0..n, list, len);
 }
 
 /// What the rows are filled from: the candidates' rows and the reach discs.
@@ -295,7 +355,15 @@ pub(super) mod tests {
                 let discs: Vec<Circle> = centres.iter().map(|&c| Circle::new(c, 0.4)).collect();
                 let boxes: Vec<Aabb> = discs.iter().map(Circle::aabb).collect();
                 let grown_before = neighbours.grown.clone();
-                neighbours.update(kind, &discs, &boxes, 1.0, |i| i as usize / 2, |_, _| true);
+                neighbours.update(
+                    kind,
+                    &discs,
+                    &boxes,
+                    1.0,
+                    |i| i as usize / 2,
+                    |_, _| true,
+                    |_| {},
+                );
                 rebuilt += usize::from(neighbours.grown != grown_before);
                 for i in 0..n {
                     let mut row: Vec<u32> = neighbours.row(i).to_vec();
@@ -347,6 +415,7 @@ pub(super) mod tests {
                     1.0,
                     |i| i as usize,
                     |_, _| true,
+                    |_| {},
                 );
             });
             (0..n)
@@ -386,6 +455,7 @@ pub(super) mod tests {
             1.0,
             |i| i as usize,
             |_, _| true,
+            |_| {},
         );
         assert_eq!(neighbours.row(0), [1]);
         // The same boxes, but the bodies no longer collide: only a forgotten list knows.
@@ -397,6 +467,7 @@ pub(super) mod tests {
             1.0,
             |i| i as usize,
             |_, _| false,
+            |_| {},
         );
         assert!(neighbours.row(0).is_empty());
     }

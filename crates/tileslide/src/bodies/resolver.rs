@@ -32,7 +32,7 @@ use super::config::{ResolveConfig, ResolveReport};
 use super::contact::{Obstacle, band, slide, sweep_circle, sweep_wall};
 use super::map_watch::{MapChange, MapWatch};
 use super::near_walls::NearWalls;
-use super::neighbours::Neighbours;
+use super::neighbours::{CandidateRows, Neighbours};
 use super::settled::Settled;
 use super::trace::{Decision, Recorder, Sink};
 use crate::geometry::{Aabb, Circle, Segment, SweepHit, in_range};
@@ -398,6 +398,7 @@ impl Resolver {
             &self.boxes,
             &self.circle_body,
             &self.filter,
+            |_| {},
         );
         let change = self.map_changes(map);
         self.settled
@@ -643,7 +644,9 @@ struct Touch {
     radius: f32,
 }
 
-/// The circles each circle may meet ([`Neighbours::update`]), for the resolve's bodies.
+/// The circles each circle may meet ([`Neighbours::update`]), for the resolve's bodies;
+/// `beside` runs with the candidates while the rows are filled.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn find_neighbours(
     neighbours: &mut Neighbours,
     config: &ResolveConfig,
@@ -652,6 +655,7 @@ pub(super) fn find_neighbours(
     boxes: &[Aabb],
     circle_body: &[u32],
     filter: &[BodyFilter],
+    beside: impl FnOnce(CandidateRows<'_>) + Send,
 ) {
     neighbours.update(
         config.broadphase,
@@ -660,6 +664,7 @@ pub(super) fn find_neighbours(
         map.cell_size().min_element(),
         |i| circle_body[i as usize] as usize,
         |a, b| filter[a].collides(&filter[b]),
+        beside,
     );
 }
 

@@ -20,10 +20,10 @@
 //! Made from the candidates rather than the rows, and for every body whether it moves or
 //! not, the schedule holds for every step until the candidates are found again (about
 //! every fifth step in the crowd scene), so it is made only then; it has more waves than
-//! the rows would give, as the candidates chain further. The walls near every moving
-//! circle are gathered first, on the other threads, into the same memory the sequential
-//! resolve keeps (`NearWalls::around_all`), while the calling thread makes the schedule
-//! when it is due; the waves only read it.
+//! the rows would give, as the candidates chain further, and it reads only the
+//! candidates, so it is made beside the filling of the rows. The walls near every moving
+//! circle are gathered first, beside the neighbours, into the same memory the sequential
+//! resolve keeps (`NearWalls::around_all`); the waves only read it.
 //!
 //! There are as many waves as the longest chain of candidates in increasing slot order.
 //! Slots in no spatial order, as a crowd spawned at random has them, give short chains
@@ -41,7 +41,7 @@ use super::{Mover, Resolver, Stand, find_neighbours, wake_where_changed};
 use crate::bodies::body::Body;
 use crate::bodies::config::{ResolveConfig, ResolveReport};
 use crate::bodies::map_watch::MapChange;
-use crate::bodies::neighbours::Neighbours;
+use crate::bodies::neighbours::{CandidateRows, Neighbours};
 use crate::bodies::trace::Recorder;
 use crate::tiles::TileMap;
 
@@ -140,10 +140,10 @@ impl Resolver {
     /// Resolves every body in waves, into `report`; `load` has run.
     ///
     /// First, side by side on the pool's threads, three pieces of work that read and write
-    /// different things: finding the neighbours, then the waves' schedule when the
-    /// candidates were found again (each body's wave follows from those of the bodies
-    /// before it, so the schedule is one thread's work); the walls near each moving
-    /// circle; the memories' start. The sequential resolve does the same work with the
+    /// different things: finding the neighbours (the candidates, then the rows, beside
+    /// which the waves' schedule is made when the candidates were found again: each body's
+    /// wave follows from those of the bodies before it, so the schedule is one thread's
+    /// work); the walls near each moving circle; the memories' start. The sequential resolve does the same work with the
     /// same inputs, the walls as each body comes.
     ///
     /// Each wave's tasks write where their bodies ended and whether each moved, for the
@@ -190,12 +190,14 @@ impl Resolver {
                 boxes,
                 circle_body,
                 filter,
+                |candidates| {
+                    schedule.make(&Shape {
+                        circle_body,
+                        first_circle,
+                        candidates,
+                    });
+                },
             );
-            schedule.make(&Shape {
-                circle_body,
-                first_circle,
-                neighbours,
-            });
         };
         let walls = || {
             near.around_all(
@@ -430,7 +432,7 @@ struct Schedule {
     starts: Vec<u32>,
     /// Per wave, the next free place in `order` while filling it.
     next: Vec<u32>,
-    /// The candidates' search the schedule was made for (see [`Neighbours::searches`]).
+    /// The candidates' search the schedule was made for (see [`CandidateRows::searches`]).
     made_for: Option<u64>,
 }
 
@@ -439,14 +441,14 @@ struct Schedule {
 struct Shape<'a> {
     circle_body: &'a [u32],
     first_circle: &'a [u32],
-    neighbours: &'a Neighbours,
+    candidates: CandidateRows<'a>,
 }
 
 impl Schedule {
     /// Puts the bodies in waves, unless the candidates are those it was made for.
     fn make(&mut self, shape: &Shape<'_>) {
         let n = shape.first_circle.len().saturating_sub(1);
-        let searches = shape.neighbours.searches();
+        let searches = shape.candidates.searches();
         if self.made_for == Some(searches) && self.wave.len() == n {
             return;
         }
@@ -460,7 +462,7 @@ impl Schedule {
             let mut wave = 0;
             let circles = shape.first_circle[b] as usize..shape.first_circle[b + 1] as usize;
             for c in circles {
-                for &other in shape.neighbours.candidates(c) {
+                for &other in shape.candidates.candidates(c) {
                     // Without a branch: whether a candidate comes before is a coin toss
                     // (the later ones' waves are not made yet, and are masked off).
                     let a = shape.circle_body[other as usize] as usize;
