@@ -10,10 +10,10 @@
 //! neighbours keep for several steps. Bodies of one wave are never neighbours, and when a
 //! wave runs, each of its bodies' lower neighbours has ended (an earlier wave) and each
 //! higher one has not started (a later wave): it reads exactly what it reads in slot order.
-//! The moving bodies of a wave are resolved on every thread, each into an [`Outcome`] kept
-//! in wave order; the task that resolves a body also writes where it ended and whether it
-//! moved into entries every task reads ([`Shared`], relaxed atomics), which later waves
-//! read. What no later body reads (the resolved moves, the report's counts, the settled
+//! The moving bodies of a wave are resolved on every thread; the task that resolves a body
+//! writes where it ended and what its resolve found (whether it moved, its contacts) into
+//! the body's entry of an array every task reads ([`Shared`], relaxed atomics), which later
+//! waves read. What no later body reads (the resolved moves, the report's counts, the settled
 //! memory, the flags that disturb settled bodies next step) is written once every wave has
 //! run, again on every thread.
 //!
@@ -32,7 +32,7 @@
 //! one body at a time, with the same result, no faster than on one thread.
 
 use std::ops::Range;
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use glam::Vec2;
 use rayon::prelude::*;
@@ -68,9 +68,7 @@ const MAX_BODIES_PER_TASK: usize = 128;
 /// 3, 1 did no better within this machine's noise.
 const AHEAD: [usize; 5] = [32, 8, 4, 2, 1];
 
-/// What resolving one body of a wave found: 16 bytes, with the `Option` around it (the
-/// flags' spare values mark `None`), so that the pass after the waves, which reads them in
-/// slot order and so all over the array, finds more of them in cache.
+/// What resolving one body of a wave found.
 #[derive(Clone, Copy, Debug)]
 struct Outcome {
     /// Where it ended (its start is `position`).
@@ -81,20 +79,14 @@ struct Outcome {
     stayed: bool,
 }
 
-const _: () = assert!(std::mem::size_of::<Option<Outcome>>() == 16);
-
 /// The waves' buffers, kept between resolves.
 #[derive(Debug, Default)]
 pub(super) struct Waves {
     schedule: Schedule,
     /// Per circle, its range of `near`'s walls (`(0, 0)` for still bodies).
     ranges: Vec<(u32, u32)>,
-    /// The outcomes, in the schedule's order (`None` for still bodies).
-    outcomes: Vec<Option<Outcome>>,
-    /// Per body, where it stands: its start, then its end once its wave has run.
-    stand: Vec<Shared>,
-    /// Per body, whether it moved, once its wave has run.
-    moved: Vec<AtomicBool>,
+    /// Per body, where it stands and, once its wave has run, what its resolve found.
+    shared: Vec<Shared>,
 }
 
 /// A copy keeps the schedule; the buffers are filled anew by every resolve.
@@ -107,16 +99,22 @@ impl Clone for Waves {
     }
 }
 
-/// A position the tasks of the waves share: a body's entry is written by the task that
-/// resolves it, and read only by bodies of later waves (after the join that ends its wave)
-/// or of none (see the module doc), so relaxed loads and stores see exactly what the
-/// resolve in slot order would read. On x86-64 they are plain moves.
+/// A body's entry the tasks of the waves share: where it stands (its start, then its end
+/// once its wave has run) and, once its wave has run, what its resolve found (see
+/// [`Found`]). A body's entry is written by the task that resolves it, and read only by
+/// bodies of later waves (after the join that ends its wave) or once every wave has run
+/// (see the module doc), so relaxed loads and stores see exactly what the resolve in slot
+/// order would read; on x86-64 they are plain moves. Both halves share a cache line: a
+/// neighbour's position and whether it moved are read together.
 #[derive(Debug, Default)]
-struct Shared(AtomicU64);
+struct Shared {
+    at: AtomicU64,
+    found: AtomicU64,
+}
 
 impl Shared {
     fn get(&self) -> Vec2 {
-        let bits = self.0.load(Ordering::Relaxed);
+        let bits = self.at.load(Ordering::Relaxed);
         Vec2::new(
             f32::from_bits(bits as u32),
             f32::from_bits((bits >> 32) as u32),
@@ -125,7 +123,60 @@ impl Shared {
 
     fn set(&self, at: Vec2) {
         let bits = u64::from(at.x.to_bits()) | (u64::from(at.y.to_bits()) << 32);
-        self.0.store(bits, Ordering::Relaxed);
+        self.at.store(bits, Ordering::Relaxed);
+    }
+
+    fn found(&self) -> Found {
+        Found(self.found.load(Ordering::Relaxed))
+    }
+
+    fn set_found(&self, found: Found) {
+        self.found.store(found.0, Ordering::Relaxed);
+    }
+}
+
+/// What a body's resolve in its wave found, in 64 bits: whether it was resolved (it had
+/// a move), moved, stayed as blocked in place again (see `settled`), was cut short, and its
+/// contacts. Zero for a body without a move.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Found(u64);
+
+impl Found {
+    const RESOLVED: u64 = 1;
+    const MOVED: u64 = 1 << 1;
+    const STAYED: u64 = 1 << 2;
+    const CUT_SHORT: u64 = 1 << 3;
+
+    /// What `outcome` says, for a body that started at `start`.
+    fn of(outcome: &Outcome, start: Vec2) -> Self {
+        let flag = |yes: bool, bit: u64| if yes { bit } else { 0 };
+        Self(
+            Self::RESOLVED
+                | flag(!outcome.stayed && outcome.end != start, Self::MOVED)
+                | flag(outcome.stayed, Self::STAYED)
+                | flag(outcome.cut_short, Self::CUT_SHORT)
+                | (u64::from(outcome.contacts) << 32),
+        )
+    }
+
+    fn resolved(self) -> bool {
+        self.0 & Self::RESOLVED != 0
+    }
+
+    fn moved(self) -> bool {
+        self.0 & Self::MOVED != 0
+    }
+
+    fn stayed(self) -> bool {
+        self.0 & Self::STAYED != 0
+    }
+
+    fn cut_short(self) -> bool {
+        self.0 & Self::CUT_SHORT != 0
+    }
+
+    fn contacts(self) -> usize {
+        (self.0 >> 32) as usize
     }
 }
 
@@ -151,7 +202,7 @@ impl Resolver {
     /// read (the resolved moves, the report's counts, the settled memory, the flags for the
     /// next step) is written at the end, on every thread. A body that moved disturbs its
     /// neighbours (see `settled`): the ones after it in slot order this step, which a body
-    /// checks at its turn by reading its lower neighbours' `moved`, and the ones before it
+    /// checks at its turn by reading whether its lower neighbours moved, and the ones before it
     /// next step, flagged at the end.
     pub(super) fn resolve_in_waves(
         &mut self,
@@ -211,14 +262,13 @@ impl Resolver {
                 ranges,
             );
         };
-        let (stand, moved) = (&mut waves.stand, &mut waves.moved);
+        let shared = &mut waves.shared;
         let memories = || {
-            // Where each body stands when the waves start; every entry of `moved` is
-            // written by its body's wave before any body reads it.
-            stand.resize_with(n, Shared::default);
-            moved.resize_with(n, AtomicBool::default);
-            for (shared, &at) in stand.iter().zip(position.iter()) {
-                shared.set(at);
+            // Where each body stands when the waves start; what each found is written by
+            // its body's wave before any body reads it.
+            shared.resize_with(n, Shared::default);
+            for (entry, &at) in shared.iter().zip(position.iter()) {
+                entry.set(at);
             }
             settled.begin(position, change != MapChange::Everything, config);
             wake_where_changed(settled, watch, change, boxes, circle_body);
@@ -229,69 +279,67 @@ impl Resolver {
             }
         };
         rayon::join(neighbours_and_schedule, || rayon::join(walls, memories));
-        // Every place is written by its wave.
-        waves.outcomes.truncate(n);
-        waves.outcomes.resize(n, None);
         let schedule = &waves.schedule;
         for w in 0..schedule.starts.len().saturating_sub(1) {
-            let places = schedule.starts[w] as usize..schedule.starts[w + 1] as usize;
-            let wave = &schedule.order[places.clone()];
-            let outcomes = &mut waves.outcomes[places];
-            let this = &*self;
-            let (ranges, stand, moved) = (&waves.ranges, &waves.stand[..], &waves.moved[..]);
-            outcomes
-                .par_iter_mut()
-                .zip(wave)
+            let wave =
+                &schedule.order[schedule.starts[w] as usize..schedule.starts[w + 1] as usize];
+            let (this, shared) = (&*self, &waves.shared[..]);
+            wave.par_iter()
                 .enumerate()
                 .with_min_len(MIN_BODIES_PER_TASK)
                 .with_max_len(MAX_BODIES_PER_TASK)
-                .for_each(|(k, (outcome, &b))| {
-                    this.prefetch_ahead(wave, k, ranges, stand, moved);
-                    *outcome = this.outcome(b, ranges, stand, moved, config, gap);
+                .for_each(|(k, &b)| {
+                    this.prefetch_ahead(wave, k, ranges, shared);
                     let bi = b as usize;
-                    match outcome {
-                        Some(o) if !o.stayed => {
-                            stand[bi].set(o.end);
-                            moved[bi].store(o.end != this.position[bi], Ordering::Relaxed);
+                    let found = match this.outcome(b, ranges, shared, config, gap) {
+                        Some(o) => {
+                            if !o.stayed {
+                                shared[bi].set(o.end);
+                            }
+                            Found::of(&o, this.position[bi])
                         }
-                        _ => moved[bi].store(false, Ordering::Relaxed),
-                    }
+                        None => Found::default(),
+                    };
+                    shared[bi].set_found(found);
                 });
         }
         // What later bodies do not read, for every body at once.
-        let outcomes = &waves.outcomes;
-        let (moving, contacts, cut_short) = outcomes
+        let shared = &waves.shared[..];
+        let (moving, contacts, cut_short) = shared
             .par_iter()
             .with_min_len(4096)
-            .flatten()
-            .map(|o| (1, o.contacts as usize, usize::from(o.cut_short)))
+            .map(|entry| entry.found())
+            .filter(|f| f.resolved())
+            .map(|f| (1, f.contacts(), usize::from(f.cut_short())))
             .reduce(|| (0, 0, 0), |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2));
         report.moving += moving;
         report.contact_count += contacts;
         report.cut_short += cut_short;
         #[cfg(test)]
         {
-            self.skipped += outcomes.iter().flatten().filter(|o| o.stayed).count();
+            self.skipped += shared.iter().filter(|e| e.found().stayed()).count();
         }
-        let (place, moved) = (&waves.schedule.place, &waves.moved[..]);
         let (position, motion) = (&self.position, &self.motion);
         let (circle_body, first, neighbours) =
             (&self.circle_body, &self.first_circle, &self.neighbours);
         self.settled.remember_each(
             bodies,
             |b, body| {
-                let o = outcomes[place[b] as usize].as_ref()?;
-                if o.stayed {
+                let found = shared[b].found();
+                if !found.resolved() {
+                    return None;
+                }
+                if found.stayed() {
                     body.resolved = Vec2::ZERO;
                     return None;
                 }
-                let start = position[b];
-                body.resolved = o.end - start;
-                Some((start, motion[b], o.end, o.contacts as usize, o.cut_short))
+                let (start, end) = (position[b], shared[b].get());
+                body.resolved = end - start;
+                Some((start, motion[b], end, found.contacts(), found.cut_short()))
             },
             |b| {
                 let circles = first[b] as usize..first[b + 1] as usize;
-                neighbour_moved(circles, circle_body, neighbours, moved, |a| a > b)
+                neighbour_moved(circles, circle_body, neighbours, shared, |a| a > b)
             },
         );
         self.waves = waves;
@@ -300,14 +348,7 @@ impl Resolver {
     /// Asks the processor for what the bodies after the `k`th of `wave` will read (see
     /// [`AHEAD`]): the wave's bodies are far apart in slot order, so each one's entries are
     /// on cache lines of their own, and so are its neighbours'.
-    fn prefetch_ahead(
-        &self,
-        wave: &[u32],
-        k: usize,
-        ranges: &[(u32, u32)],
-        stand: &[Shared],
-        moved: &[AtomicBool],
-    ) {
+    fn prefetch_ahead(&self, wave: &[u32], k: usize, ranges: &[(u32, u32)], shared: &[Shared]) {
         use crate::prefetch::prefetch;
         if let Some(&b) = wave.get(k + AHEAD[0]) {
             let b = b as usize;
@@ -333,19 +374,18 @@ impl Resolver {
             self.prefetch_neighbour_circles(b as usize);
         }
         if let Some(&b) = wave.get(k + AHEAD[4]) {
-            self.prefetch_neighbour_positions(b as usize, stand, |other| prefetch(moved, other));
+            self.prefetch_neighbour_positions(b as usize, shared, |_| {});
         }
     }
 
-    /// Resolves body `b` against the bodies where `stand` has them now, as the sequential
+    /// Resolves body `b` against the bodies where `shared` has them now, as the sequential
     /// resolve does at its turn, without writing anything (`None` for a body without a
-    /// move); `moved` tells which bodies of earlier waves moved.
+    /// move); `shared` also tells which bodies of earlier waves moved.
     fn outcome(
         &self,
         b: u32,
         ranges: &[(u32, u32)],
-        stand: &[Shared],
-        moved: &[AtomicBool],
+        shared: &[Shared],
         config: &ResolveConfig,
         gap: f32,
     ) -> Option<Outcome> {
@@ -363,7 +403,7 @@ impl Resolver {
                 circles.clone(),
                 &self.circle_body,
                 &self.neighbours,
-                moved,
+                shared,
                 |a| a < bi,
             );
             if !disturbed {
@@ -385,7 +425,7 @@ impl Resolver {
         };
         let end = self.collide_and_slide(
             &mover,
-            stand,
+            shared,
             &ranges[circles],
             config,
             gap,
@@ -406,13 +446,13 @@ fn neighbour_moved(
     mut circles: Range<usize>,
     circle_body: &[u32],
     neighbours: &Neighbours,
-    moved: &[AtomicBool],
+    shared: &[Shared],
     which: impl Fn(usize) -> bool,
 ) -> bool {
     circles.any(|c| {
         neighbours.row(c).iter().any(|&n| {
             let a = circle_body[n as usize] as usize;
-            which(a) && moved[a].load(Ordering::Relaxed)
+            which(a) && shared[a].found().moved()
         })
     })
 }
@@ -426,8 +466,6 @@ struct Schedule {
     wave: Vec<u32>,
     /// The bodies by wave, in slot order within a wave.
     order: Vec<u32>,
-    /// Per body, its place in `order`.
-    place: Vec<u32>,
     /// Per wave, where it starts in `order`; one more entry at the end.
     starts: Vec<u32>,
     /// Per wave, the next free place in `order` while filling it.
@@ -482,15 +520,12 @@ impl Schedule {
         }
         self.order.clear();
         self.order.resize(n, 0);
-        self.place.clear();
-        self.place.resize(n, 0);
         // Filled in slot order, so each wave's bodies are in slot order.
         self.next.clear();
         self.next.extend_from_slice(&self.starts);
         for b in 0..n {
             let slot = &mut self.next[self.wave[b] as usize];
             self.order[*slot as usize] = b as u32;
-            self.place[b] = *slot;
             *slot += 1;
         }
     }
