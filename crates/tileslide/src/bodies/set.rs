@@ -204,6 +204,15 @@ impl Bodies {
         self.slots.iter_mut().filter_map(|s| s.body.as_mut())
     }
 
+    /// The bodies in slot order, for the resolver, in a list allocated at their number
+    /// (one grown as it fills is moved to a larger allocation a dozen times or more on the
+    /// way to 100,000 bodies).
+    fn body_list(&mut self) -> Vec<&mut Body> {
+        let mut list = Vec::with_capacity(self.len);
+        list.extend(self.bodies_mut());
+        list
+    }
+
     /// Sets the move `handle`'s body wants to make this step (zero: it stays, and others
     /// slide around it).
     ///
@@ -278,7 +287,7 @@ impl Bodies {
     pub fn resolve(&mut self, map: &TileMap) -> ResolveReport {
         let config = self.config;
         let mut resolver = std::mem::take(&mut self.resolver);
-        let mut bodies: Vec<&mut Body> = self.bodies_mut().collect();
+        let mut bodies = self.body_list();
         let report = resolver.resolve(&mut bodies, &config, map);
         self.resolver = resolver;
         report
@@ -299,7 +308,7 @@ impl Bodies {
         let config = self.config;
         let handles: Vec<BodyHandle> = self.iter().map(|(handle, _)| handle).collect();
         let mut resolver = std::mem::take(&mut self.resolver);
-        let mut bodies: Vec<&mut Body> = self.bodies_mut().collect();
+        let mut bodies = self.body_list();
         let mut recorder = Recorder::new(trace, map, &handles);
         let report = resolver.resolve_traced(&mut bodies, &config, map, &mut recorder);
         self.resolver = resolver;
