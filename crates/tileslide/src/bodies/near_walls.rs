@@ -1,13 +1,13 @@
 //! The walls near each circle, kept from one step to the next.
 //!
 //! A circle sweeps only against the walls its reach disc (everywhere it can be during the
-//! step: its circle grown by its move and the gap) touches. Gathering them reads a few cells' kind bytes, segment indices and
-//! segments, scattered over the map: about a fifth of a crowd step when done for every
-//! moving circle every step. But a circle moves a fraction of a cell per step, so the
-//! walls are gathered once for its reach disc grown by a margin ([`MARGIN`]) and kept while
-//! the reach disc stays inside that larger disc and the map does not change near it (see
-//! `map_watch`), the same bargain as Verlet neighbour lists (Verlet 1967) make for particle
-//! pairs.
+//! step: its circle grown by its move and the gap) touches. Gathering them reads a few
+//! cells' kind bytes, segment indices and segments, scattered over the map: about a fifth
+//! of a crowd step when done for every moving circle every step. But a circle moves a
+//! fraction of a cell per step, so the walls are gathered once for its reach disc grown by
+//! a margin ([`MARGIN`]) and kept while the reach disc stays inside that larger disc and
+//! the map does not change near it (see `map_watch`), the same bargain as Verlet neighbour
+//! lists (Verlet 1967) make for particle pairs.
 //!
 //! The kept list gives exactly the contacts the exact list would: it holds, in the same
 //! relative order (temporary segments, then cells row by row), every wall touching the

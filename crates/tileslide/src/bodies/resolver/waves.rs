@@ -194,16 +194,16 @@ impl Resolver {
     /// different things: finding the neighbours (the candidates, then the rows, beside
     /// which the waves' schedule is made when the candidates were found again: each body's
     /// wave follows from those of the bodies before it, so the schedule is one thread's
-    /// work); the walls near each moving circle; the memories' start. The sequential resolve does the same work with the
-    /// same inputs, the walls as each body comes.
+    /// work); the walls near each moving circle; the memories' start. The sequential
+    /// resolve does the same work with the same inputs, the walls as each body comes.
     ///
     /// Each wave's tasks write where their bodies ended and whether each moved, for the
     /// later waves; what the sequential resolve writes as it goes and later bodies do not
     /// read (the resolved moves, the report's counts, the settled memory, the flags for the
     /// next step) is written at the end, on every thread. A body that moved disturbs its
     /// neighbours (see `settled`): the ones after it in slot order this step, which a body
-    /// checks at its turn by reading whether its lower neighbours moved, and the ones before it
-    /// next step, flagged at the end.
+    /// checks at its turn by reading whether its lower neighbours moved, and the ones
+    /// before it next step, flagged at the end.
     pub(super) fn resolve_in_waves(
         &mut self,
         bodies: &mut [&mut Body],
