@@ -30,7 +30,7 @@ const SLIDE_LIFT: f32 = 1e-6;
 #[derive(Clone, Copy, Debug)]
 pub(super) enum Obstacle {
     /// A wall: met on its flat side, or at a rounded end; by the body's circle `circle`
-    /// (from its first), and found at `wall` in the near walls' pool.
+    /// (from its first), and found at `wall` in that circle's list of near walls.
     Wall { flat: bool, circle: u32, wall: u32 },
     /// Another body, by work index.
     Body(u32),

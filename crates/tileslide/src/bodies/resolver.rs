@@ -36,6 +36,7 @@ use super::neighbours::{CandidateRows, Neighbours};
 use super::settled::Settled;
 use super::trace::{Decision, Recorder, Sink};
 use crate::geometry::{Aabb, Circle, Segment, SweepHit, in_range};
+use crate::query::Capsule;
 use crate::tiles::TileMap;
 
 #[cfg(feature = "parallel")]
@@ -441,6 +442,7 @@ impl Resolver {
     ) -> Vec2 {
         let b = mover.body;
         let first = mover.first_circle as usize;
+        let walls = WallsNear::new(&self.near, first, ranges);
         let mut position = mover.start;
         let mut remaining = mover.motion;
         // The contact the remaining motion slides along (none for the move as proposed).
@@ -451,7 +453,7 @@ impl Resolver {
             }
             sink.pass(pass, position, remaining);
             let Some((hit, obstacle, id)) =
-                self.first_contact(mover, stand, position, ranges, remaining, gap, sink)
+                self.first_contact(mover, stand, position, &walls, remaining, gap, sink)
             else {
                 sink.free();
                 return off_contact(position, remaining, along);
@@ -489,7 +491,7 @@ impl Resolver {
                     Obstacle::Wall { circle, wall, .. } => {
                         let c = &self.circles[first + circle as usize];
                         Some(Touch {
-                            segment: self.near.wall(wall).segment,
+                            segment: walls.of(circle as usize)[wall as usize].segment,
                             offset: c.offset,
                             radius: c.radius,
                         })
@@ -521,15 +523,15 @@ impl Resolver {
         position
     }
 
-    /// The first contact of `mover` moving by `motion` from `origin`, against the walls at
-    /// `ranges` (one per circle) and its neighbours where `stand` has them.
+    /// The first contact of `mover` moving by `motion` from `origin`, against `walls` and
+    /// its neighbours where `stand` has them.
     #[allow(clippy::too_many_arguments)]
     fn first_contact<S: Sink, P: Stand + ?Sized>(
         &self,
         mover: &Mover,
         stand: &P,
         origin: Vec2,
-        ranges: &[(u32, u32)],
+        walls: &WallsNear<'_>,
         motion: Vec2,
         gap: f32,
         sink: &mut S,
@@ -544,10 +546,12 @@ impl Resolver {
             }
         };
         let first = mover.first_circle as usize;
-        for (k, c) in self.circles[first..first + ranges.len()].iter().enumerate() {
+        for (k, c) in self.circles[first..first + walls.ranges.len()]
+            .iter()
+            .enumerate()
+        {
             let center = origin + c.offset;
-            let range = ranges[k];
-            for (w, wall) in (range.0..).zip(self.near.walls(range)) {
+            for (w, wall) in (0..).zip(walls.of(k)) {
                 let distance2 = wall.segment.distance_squared_to(center);
                 let radius = band(distance2, c.radius, gap);
                 if distance2 > (radius + reach) * (radius + reach) {
@@ -599,6 +603,41 @@ impl Resolver {
             }
         }
         best
+    }
+}
+
+/// The walls near each circle of a body (one range of `near` per circle), with the first
+/// circle's looked up once for all the body's passes: most bodies are one circle, and a
+/// lookup finds the circle's pool first.
+struct WallsNear<'a> {
+    near: &'a NearWalls,
+    first_circle: usize,
+    ranges: &'a [(u32, u32)],
+    first: &'a [Capsule],
+}
+
+impl<'a> WallsNear<'a> {
+    fn new(near: &'a NearWalls, first_circle: usize, ranges: &'a [(u32, u32)]) -> Self {
+        let first = match ranges.first() {
+            Some(&range) => near.walls(first_circle, range),
+            None => &[],
+        };
+        Self {
+            near,
+            first_circle,
+            ranges,
+            first,
+        }
+    }
+
+    /// The walls near the body's circle `k` (from its first).
+    #[inline]
+    fn of(&self, k: usize) -> &'a [Capsule] {
+        if k == 0 {
+            self.first
+        } else {
+            self.near.walls(self.first_circle + k, self.ranges[k])
+        }
     }
 }
 

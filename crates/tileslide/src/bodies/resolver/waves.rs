@@ -366,7 +366,7 @@ impl Resolver {
         if let Some(&b) = wave.get(k + AHEAD[2]) {
             let c = self.first_circle[b as usize] as usize;
             if let Some(&range) = ranges.get(c) {
-                self.near.prefetch(range);
+                self.near.prefetch(c, range);
             }
             self.neighbours.prefetch_row(c);
         }
