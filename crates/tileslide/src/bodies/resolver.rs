@@ -62,6 +62,17 @@ struct WorkCircle {
     radius: f32,
 }
 
+/// A circle as the resolve in slot order sees it when it reads a neighbour: where it
+/// stands (its body's start plus its offset, its body's end plus its offset once resolved),
+/// its radius and its body. One entry a circle, so a neighbour is one read rather than its
+/// circle's and then its body's, which lie anywhere in memory.
+#[derive(Clone, Copy, Debug, Default)]
+struct Seen {
+    at: Vec2,
+    radius: f32,
+    body: u32,
+}
+
 /// The resolver of a [`Bodies`](crate::Bodies) set: its buffers, kept between resolves so
 /// that a step allocates nothing once warm, and its memories of the last resolve (which
 /// bodies may meet, the walls near each, which bodies were blocked in place), kept so that
@@ -84,6 +95,8 @@ pub(super) struct Resolver {
     /// everywhere it can be this step) and the disc's box.
     reach_discs: Vec<Circle>,
     boxes: Vec<Aabb>,
+    /// Per circle, how the resolve in slot order sees it (filled only for that resolve).
+    seen: Vec<Seen>,
     /// Whether `circles` and `first_circle` still describe the bodies (see `load`).
     shapes_known: bool,
     /// Per circle, the circles it may meet.
@@ -140,7 +153,11 @@ impl Resolver {
         mut sink: Option<&mut Recorder<'_>>,
     ) -> ResolveReport {
         let gap = config.gap;
-        self.load(bodies, gap);
+        #[cfg(feature = "parallel")]
+        let in_waves = sink.is_none() && rayon::current_num_threads() > 1;
+        #[cfg(not(feature = "parallel"))]
+        let in_waves = false;
+        self.load(bodies, gap, !in_waves);
         let mut report = ResolveReport::default();
         #[cfg(test)]
         {
@@ -150,7 +167,7 @@ impl Resolver {
         // the neighbours and starts the memories itself, beside other work: the same
         // result. A traced resolve stays on the calling thread, in slot order.
         #[cfg(feature = "parallel")]
-        if sink.is_none() && rayon::current_num_threads() > 1 {
+        if in_waves {
             self.resolve_in_waves(bodies, config, map, &mut report);
             return report;
         }
@@ -189,7 +206,7 @@ impl Resolver {
                 start,
                 motion,
             };
-            let stand = &self.position[..];
+            let stand = &self.seen[..];
             let end =
                 self.collide_and_slide(&mover, stand, &ranges, config, gap, &mut report, &mut sink);
             self.wall_ranges = ranges;
@@ -202,7 +219,7 @@ impl Resolver {
             self.settled
                 .remember(b, start, motion, end, contacts, cut_short);
             if end != start {
-                self.disturb_neighbours(b);
+                self.moved(b, end);
             }
         }
         report
@@ -223,26 +240,42 @@ impl Resolver {
 
     /// In the resolve in slot order, before body `b`: asks the processor for what the
     /// bodies a little further on will read of their neighbours, which are anywhere in the
-    /// per-body arrays (slot order is not spatial order; the rows themselves are in slot
-    /// order, and the hardware brings those). Two stages, as the second needs what the
-    /// first asked for: the neighbours' circles for body `b + NEIGHBOURS_AHEAD[0]`, then
-    /// their bodies' positions and disturbed flags for body `b + NEIGHBOURS_AHEAD[1]`.
-    /// Bodies without a move are left out: they read nothing.
+    /// per-circle and per-body arrays (slot order is not spatial order; the rows themselves
+    /// are in slot order, and the hardware brings those). Two stages, as the second needs
+    /// what the first asked for: the neighbours' entries of `seen` for body
+    /// `b + NEIGHBOURS_AHEAD[0]`, then their bodies' disturbed flags for body
+    /// `b + NEIGHBOURS_AHEAD[1]`. Bodies without a move are left out: they read nothing.
     #[inline]
     fn prefetch_neighbours(&self, b: usize) {
         let [far, near] = NEIGHBOURS_AHEAD;
         if b + far < self.position.len() {
-            self.prefetch_neighbour_circles(b + far);
+            self.each_neighbour(b + far, |m| {
+                crate::prefetch::prefetch(&self.seen, m);
+            });
         }
         if b + near < self.position.len() {
-            self.prefetch_neighbour_positions(b + near, &self.position, |other| {
-                self.settled.prefetch_flags(other);
+            self.each_neighbour(b + near, |m| {
+                self.settled.prefetch_flags(self.seen[m].body as usize);
             });
+        }
+    }
+
+    /// Calls `f` with every neighbour circle of body `b` (none for a body without a move).
+    #[inline]
+    fn each_neighbour(&self, b: usize, mut f: impl FnMut(usize)) {
+        if self.motion[b] == Vec2::ZERO {
+            return;
+        }
+        for c in self.first_circle[b]..self.first_circle[b + 1] {
+            for &m in self.neighbours.row(c as usize) {
+                f(m as usize);
+            }
         }
     }
 
     /// Asks the processor for the circles of body `b`'s neighbours (nothing for a body
     /// without a move).
+    #[cfg(feature = "parallel")]
     #[inline]
     fn prefetch_neighbour_circles(&self, b: usize) {
         if self.motion[b] == Vec2::ZERO {
@@ -262,6 +295,7 @@ impl Resolver {
     /// [`prefetch_neighbour_circles`] has asked for them.
     ///
     /// [`prefetch_neighbour_circles`]: Self::prefetch_neighbour_circles
+    #[cfg(feature = "parallel")]
     #[inline]
     fn prefetch_neighbour_positions<T>(&self, b: usize, positions: &[T], also: impl Fn(usize)) {
         if self.motion[b] == Vec2::ZERO {
@@ -276,19 +310,23 @@ impl Resolver {
         }
     }
 
-    /// Body `b` moved: flags the bodies whose reach discs touch its own as disturbed.
-    fn disturb_neighbours(&mut self, b: usize) {
+    /// In the resolve in slot order, body `b` moved to `end`: its circles are seen there
+    /// from now on, and the bodies whose reach discs touch its own are flagged as
+    /// disturbed.
+    fn moved(&mut self, b: usize, end: Vec2) {
         let circles = self.first_circle[b] as usize..self.first_circle[b + 1] as usize;
         for c in circles {
+            self.seen[c].at = end + self.circles[c].offset;
             for &n in self.neighbours.row(c) {
-                let other = self.circle_body[n as usize] as usize;
+                let other = self.seen[n as usize].body as usize;
                 self.settled.disturb(b, other);
             }
         }
     }
 
-    /// Copies the bodies into flat arrays.
-    fn load(&mut self, bodies: &[&mut Body], gap: f32) {
+    /// Copies the bodies into flat arrays; `in_slot_order` for the resolve in slot order,
+    /// which also reads `seen`.
+    fn load(&mut self, bodies: &[&mut Body], gap: f32, in_slot_order: bool) {
         // The circles change only when bodies are added or removed, which calls `forget`:
         // otherwise they are kept, and the bodies' shapes (each a list of its own, on the
         // heap) are not read again.
@@ -318,6 +356,8 @@ impl Resolver {
         self.reach_discs.resize(m, Circle::new(Vec2::ZERO, 0.0));
         self.boxes
             .resize(m, Aabb::from_corners(Vec2::ZERO, Vec2::ZERO));
+        self.seen
+            .resize(if in_slot_order { m } else { 0 }, Seen::default());
         // Each body, then each circle, on its own: on many threads for many bodies.
         let copy = |body: &Body,
                     position: &mut Vec2,
@@ -334,6 +374,12 @@ impl Resolver {
         let disc = |c: &WorkCircle, position: &[Vec2], reach: &[f32]| {
             let b = c.body as usize;
             Circle::new(position[b] + c.offset, c.radius + reach[b])
+        };
+        // Where a circle stands is its reach disc's centre.
+        let see = |c: &WorkCircle, d: &Circle| Seen {
+            at: d.center,
+            radius: c.radius,
+            body: c.body,
         };
         #[cfg(feature = "parallel")]
         if n >= 2 * LOAD_PER_TASK && rayon::current_num_threads() > 1 {
@@ -362,6 +408,15 @@ impl Resolver {
                     *d = disc(c, position, reach);
                     *bounds = d.aabb();
                 });
+            let (circles, discs) = (&self.circles[..], &self.reach_discs[..]);
+            (
+                self.seen.par_iter_mut(),
+                circles.par_iter(),
+                discs.par_iter(),
+            )
+                .into_par_iter()
+                .with_min_len(LOAD_PER_TASK)
+                .for_each(|(seen, c, d)| *seen = see(c, d));
             return;
         }
         for ((((body, position), motion), filter), reach) in bodies
@@ -374,6 +429,7 @@ impl Resolver {
             copy(body, position, motion, filter, reach);
         }
         let (position, reach) = (&self.position[..], &self.reach[..]);
+        let mut seen = self.seen.iter_mut();
         for ((c, d), bounds) in self
             .circles
             .iter()
@@ -382,6 +438,9 @@ impl Resolver {
         {
             *d = disc(c, position, reach);
             *bounds = d.aabb();
+            if let Some(seen) = seen.next() {
+                *seen = see(c, d);
+            }
         }
     }
 
@@ -575,10 +634,10 @@ impl Resolver {
             let neighbours = self.neighbours.row(ci);
             // The nearest neighbour contact, lowest circle index first on equal `t` (the
             // row is in broadphase order).
-            let mut nearest: Option<(SweepHit, u32, S::Id)> = None;
+            let mut nearest: Option<(SweepHit, u32, u32, S::Id)> = None;
             for &n in neighbours {
-                let other = &self.circles[n as usize];
-                let at = stand.at(other.body as usize) + other.offset;
+                let other = stand.circle(n as usize);
+                let at = other.at;
                 let distance2 = center.distance_squared(at);
                 let radius = band(distance2, c.radius + other.radius, gap);
                 if distance2 > (radius + reach) * (radius + reach) {
@@ -593,13 +652,13 @@ impl Resolver {
                 };
                 let id = sink.body(k as u32, who, at, other.radius, center, radius, motion, hit);
                 if let Some(hit) = hit
-                    && nearest.is_none_or(|(h, m, _)| hit.t < h.t || (hit.t == h.t && n < m))
+                    && nearest.is_none_or(|(h, m, _, _)| hit.t < h.t || (hit.t == h.t && n < m))
                 {
-                    nearest = Some((hit, n, id));
+                    nearest = Some((hit, n, other.body, id));
                 }
             }
-            if let Some((hit, n, id)) = nearest {
-                keep(hit, Obstacle::Body(self.circles[n as usize].body), id);
+            if let Some((hit, _, body, id)) = nearest {
+                keep(hit, Obstacle::Body(body), id);
             }
         }
         best
@@ -641,19 +700,19 @@ impl<'a> WallsNear<'a> {
     }
 }
 
-/// Where the bodies stand while one is resolved: the ones resolved before it where they
-/// ended, the others where they started.
+/// Where the circles stand while a body is resolved: those of the bodies resolved before
+/// it where they ended, the others where they started.
 trait Stand {
-    /// Where body `b` stands.
-    fn at(&self, b: usize) -> Vec2;
+    /// Circle `c` as the body being resolved sees it.
+    fn circle(&self, c: usize) -> Seen;
 }
 
-/// The resolve in slot order keeps them in `position`, each body's end written over its
-/// start as it is resolved.
-impl Stand for [Vec2] {
+/// The resolve in slot order keeps them in `seen`, each circle's entry moved as its body
+/// is resolved.
+impl Stand for [Seen] {
     #[inline]
-    fn at(&self, b: usize) -> Vec2 {
-        self[b]
+    fn circle(&self, c: usize) -> Seen {
+        self[c]
     }
 }
 

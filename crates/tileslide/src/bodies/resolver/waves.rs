@@ -37,7 +37,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use glam::Vec2;
 use rayon::prelude::*;
 
-use super::{Mover, Resolver, Stand, find_neighbours, wake_where_changed};
+use super::{Mover, Resolver, Seen, Stand, WorkCircle, find_neighbours, wake_where_changed};
 use crate::bodies::body::Body;
 use crate::bodies::config::{ResolveConfig, ResolveReport};
 use crate::bodies::map_watch::MapChange;
@@ -180,10 +180,22 @@ impl Found {
     }
 }
 
-impl Stand for [Shared] {
+/// Where the circles stand in the waves: each at its body's entry of `shared` plus its
+/// offset.
+struct Standing<'a> {
+    circles: &'a [WorkCircle],
+    shared: &'a [Shared],
+}
+
+impl Stand for Standing<'_> {
     #[inline]
-    fn at(&self, b: usize) -> Vec2 {
-        self[b].get()
+    fn circle(&self, c: usize) -> Seen {
+        let circle = &self.circles[c];
+        Seen {
+            at: self.shared[circle.body as usize].get() + circle.offset,
+            radius: circle.radius,
+            body: circle.body,
+        }
     }
 }
 
@@ -423,9 +435,13 @@ impl Resolver {
             start,
             motion,
         };
+        let stand = Standing {
+            circles: &self.circles,
+            shared,
+        };
         let end = self.collide_and_slide(
             &mover,
-            shared,
+            &stand,
             &ranges[circles],
             config,
             gap,
