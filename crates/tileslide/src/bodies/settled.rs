@@ -63,14 +63,19 @@ const UNKNOWN: Memory = Memory {
     stayed: false,
 };
 
+/// A body's flag: disturbed, it is resolved this step.
+const NOW: u8 = 1;
+/// A body's flag: disturbed, it is resolved next step.
+const NEXT: u8 = 2;
+
 /// The memory of the last resolve, per body in resolve order.
 #[derive(Clone, Debug, Default)]
 pub(super) struct Settled {
     bodies: Vec<Memory>,
-    /// Per body: something within its reach moved where it will see the change this step,
-    /// and next step.
-    disturbed: Vec<bool>,
-    disturbed_next: Vec<bool>,
+    /// Per body: something within its reach moved where it will see the change this step
+    /// ([`NOW`]), or next step ([`NEXT`]). Both in one byte: a body that moves sets one of
+    /// its neighbours' flags, and they lie anywhere in memory.
+    disturbed: Vec<u8>,
     config: Option<ResolveConfig>,
 }
 
@@ -90,16 +95,18 @@ impl Settled {
             && self.config.as_ref() == Some(config)
             // `==` on floats: a NaN never matches, so an unknown end never does either.
             && self.bodies.iter().zip(positions).all(|(m, &p)| m.end == p);
+        self.config = Some(*config);
         if !same {
             self.bodies.clear();
             self.bodies.resize(positions.len(), UNKNOWN);
-            self.disturbed_next.clear();
-            self.disturbed_next.resize(positions.len(), false);
+            self.disturbed.clear();
+            self.disturbed.resize(positions.len(), 0);
+            return;
         }
-        self.config = Some(*config);
-        std::mem::swap(&mut self.disturbed, &mut self.disturbed_next);
-        self.disturbed_next.clear();
-        self.disturbed_next.resize(positions.len(), false);
+        // Last step's flags for the next step are this step's.
+        for flags in &mut self.disturbed {
+            *flags >>= 1;
+        }
     }
 
     /// If body `b`, at `start` with move `motion`, is blocked in place again: adds what its
@@ -132,14 +139,14 @@ impl Settled {
     /// moves sets its neighbours' flags.
     pub fn prefetch_flags(&self, b: usize) {
         crate::prefetch::prefetch(&self.disturbed, b);
-        crate::prefetch::prefetch(&self.disturbed_next, b);
     }
 
     /// Whether body `b` stays as [`stays`](Self::stays) tells, without counting it: if so,
     /// its last resolve's contacts and whether it was cut short.
     pub fn kept(&self, b: usize, start: Vec2, motion: Vec2) -> Option<(usize, bool)> {
         let m = &self.bodies[b];
-        let stays = m.stayed && !self.disturbed[b] && m.start == start && m.motion == motion;
+        let stays =
+            m.stayed && self.disturbed[b] & NOW == 0 && m.start == start && m.motion == motion;
         stays.then_some((m.contacts as usize, m.cut_short))
     }
 
@@ -172,16 +179,16 @@ impl Settled {
         use rayon::prelude::*;
         self.bodies
             .par_iter_mut()
-            .zip(self.disturbed_next.par_iter_mut())
+            .zip(self.disturbed.par_iter_mut())
             .zip(items.par_iter_mut())
             .enumerate()
             .with_min_len(1024)
-            .for_each(|(b, ((memory, next), item))| {
+            .for_each(|(b, ((memory, flags), item))| {
                 if let Some((start, motion, end, contacts, cut_short)) = each(b, item) {
                     *memory = Memory::of(start, motion, end, contacts, cut_short);
                 }
-                if memory.stayed && !*next {
-                    *next = disturbed_next(b);
+                if memory.stayed && *flags & NEXT == 0 && disturbed_next(b) {
+                    *flags |= NEXT;
                 }
             });
     }
@@ -194,16 +201,15 @@ impl Settled {
     /// Something within body `b`'s reach changed (the map, near it): it is resolved this
     /// step.
     pub fn wake(&mut self, b: usize) {
-        self.disturbed[b] = true;
+        self.disturbed[b] |= NOW;
     }
 
     /// Body `mover` moved, and body `other`'s reach disc touches its own: `other` sees the change
     /// this step if it is resolved later, the next step otherwise.
     pub fn disturb(&mut self, mover: usize, other: usize) {
-        // Both flags written, without a branch: which one is set is a coin toss (slot
-        // order is random in space).
-        self.disturbed[other] |= other > mover;
-        self.disturbed_next[other] |= other <= mover;
+        // A select rather than a branch: which flag is set is a coin toss (slot order is
+        // random in space).
+        self.disturbed[other] |= if other > mover { NOW } else { NEXT };
     }
 }
 
