@@ -273,43 +273,6 @@ impl Resolver {
         }
     }
 
-    /// Asks the processor for the circles of body `b`'s neighbours (nothing for a body
-    /// without a move).
-    #[cfg(feature = "parallel")]
-    #[inline]
-    fn prefetch_neighbour_circles(&self, b: usize) {
-        if self.motion[b] == Vec2::ZERO {
-            return;
-        }
-        for c in self.first_circle[b]..self.first_circle[b + 1] {
-            for &m in self.neighbours.row(c as usize) {
-                crate::prefetch::prefetch(&self.circles, m as usize);
-                crate::prefetch::prefetch(&self.circle_body, m as usize);
-            }
-        }
-    }
-
-    /// Asks the processor for the positions of body `b`'s neighbours' bodies (their entries
-    /// of `positions`, one per body), and for whatever else `also` asks for of each (nothing
-    /// for a body without a move). Reads the neighbours' bodies: call it once
-    /// [`prefetch_neighbour_circles`] has asked for them.
-    ///
-    /// [`prefetch_neighbour_circles`]: Self::prefetch_neighbour_circles
-    #[cfg(feature = "parallel")]
-    #[inline]
-    fn prefetch_neighbour_positions<T>(&self, b: usize, positions: &[T], also: impl Fn(usize)) {
-        if self.motion[b] == Vec2::ZERO {
-            return;
-        }
-        for c in self.first_circle[b]..self.first_circle[b + 1] {
-            for &m in self.neighbours.row(c as usize) {
-                let other = self.circle_body[m as usize] as usize;
-                crate::prefetch::prefetch(positions, other);
-                also(other);
-            }
-        }
-    }
-
     /// In the resolve in slot order, body `b` moved to `end`: its circles are seen there
     /// from now on, and the bodies whose reach discs touch its own are flagged as
     /// disturbed.

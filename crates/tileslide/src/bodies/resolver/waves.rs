@@ -37,7 +37,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use glam::Vec2;
 use rayon::prelude::*;
 
-use super::{Mover, Resolver, Seen, Stand, WorkCircle, find_neighbours, wake_where_changed};
+use super::{Mover, Resolver, Seen, Stand, find_neighbours, wake_where_changed};
 use crate::bodies::body::Body;
 use crate::bodies::config::{ResolveConfig, ResolveReport};
 use crate::bodies::map_watch::MapChange;
@@ -60,8 +60,9 @@ const MAX_BODIES_PER_TASK: usize = 128;
 /// How many bodies ahead in its wave a task asks for a body's own entries (its start, move,
 /// first circle and settled memory), for its circles' (their walls' range, shape and row's
 /// place), for its circles' walls and rows, which need those read first, for its
-/// neighbours' circles, which need the rows, and for its neighbours' positions and whether
-/// they moved, which need the circles. A body left settled takes a few dozen nanoseconds, a
+/// neighbours' circles' entries (where each stands), which need the rows, and, for a body
+/// blocked in place last time, whether its neighbours moved, which needs the circles'
+/// bodies. A body left settled takes a few dozen nanoseconds, a
 /// moving one a microsecond or more: far enough ahead for a run of settled bodies. Measured
 /// on the crowd of 50,000 on two threads (docs/parallel.md): the first three stages made
 /// the step 9 % faster, the neighbours' two another 10 %; 32, 16, 8, 4, 2 and 32, 12, 6,
@@ -87,6 +88,8 @@ pub(super) struct Waves {
     ranges: Vec<(u32, u32)>,
     /// Per body, where it stands and, once its wave has run, what its resolve found.
     shared: Vec<Shared>,
+    /// Per circle, where it stands, its radius and its body: what a neighbour reads of it.
+    circles: Vec<SharedCircle>,
 }
 
 /// A copy keeps the schedule; the buffers are filled anew by every resolve.
@@ -104,26 +107,36 @@ impl Clone for Waves {
 /// [`Found`]). A body's entry is written by the task that resolves it, and read only by
 /// bodies of later waves (after the join that ends its wave) or once every wave has run
 /// (see the module doc), so relaxed loads and stores see exactly what the resolve in slot
-/// order would read; on x86-64 they are plain moves. Both halves share a cache line: a
-/// neighbour's position and whether it moved are read together.
+/// order would read; on x86-64 they are plain moves. Neighbours read a body's circles'
+/// entries ([`SharedCircle`]) for where it stands, and this entry for whether it moved
+/// (a body blocked in place last time, to tell whether it was disturbed); the pass after
+/// the waves reads these entries front to back.
 #[derive(Debug, Default)]
 struct Shared {
     at: AtomicU64,
     found: AtomicU64,
 }
 
+/// A point's coordinates' bits in 64 bits.
+fn pack(at: Vec2) -> u64 {
+    u64::from(at.x.to_bits()) | (u64::from(at.y.to_bits()) << 32)
+}
+
+/// The point [`pack`] packed.
+fn unpack(bits: u64) -> Vec2 {
+    Vec2::new(
+        f32::from_bits(bits as u32),
+        f32::from_bits((bits >> 32) as u32),
+    )
+}
+
 impl Shared {
     fn get(&self) -> Vec2 {
-        let bits = self.at.load(Ordering::Relaxed);
-        Vec2::new(
-            f32::from_bits(bits as u32),
-            f32::from_bits((bits >> 32) as u32),
-        )
+        unpack(self.at.load(Ordering::Relaxed))
     }
 
     fn set(&self, at: Vec2) {
-        let bits = u64::from(at.x.to_bits()) | (u64::from(at.y.to_bits()) << 32);
-        self.at.store(bits, Ordering::Relaxed);
+        self.at.store(pack(at), Ordering::Relaxed);
     }
 
     fn found(&self) -> Found {
@@ -180,19 +193,30 @@ impl Found {
     }
 }
 
-/// Where the circles stand in the waves: each at its body's entry of `shared` plus its
-/// offset.
-struct Standing<'a> {
-    circles: &'a [WorkCircle],
-    shared: &'a [Shared],
+/// A circle's entry the tasks of the waves share, what a neighbour reads of it: where it
+/// stands (its body's start plus its offset, then its body's end plus its offset once its
+/// body's wave has run, written by the task that resolves the body, under the same rules
+/// as [`Shared`]), its radius and its body. One entry rather than the circle's and then
+/// its body's: one cache line a neighbour.
+#[derive(Debug, Default)]
+struct SharedCircle {
+    at: AtomicU64,
+    radius: f32,
+    body: u32,
 }
 
-impl Stand for Standing<'_> {
+impl SharedCircle {
+    fn set(&self, at: Vec2) {
+        self.at.store(pack(at), Ordering::Relaxed);
+    }
+}
+
+impl Stand for [SharedCircle] {
     #[inline]
     fn circle(&self, c: usize) -> Seen {
-        let circle = &self.circles[c];
+        let circle = &self[c];
         Seen {
-            at: self.shared[circle.body as usize].get() + circle.offset,
+            at: unpack(circle.at.load(Ordering::Relaxed)),
             radius: circle.radius,
             body: circle.body,
         }
@@ -228,6 +252,7 @@ impl Resolver {
         let mut waves = std::mem::take(&mut self.waves);
         let change = self.map_changes(map);
         let Self {
+            circles,
             circle_body,
             first_circle,
             position,
@@ -274,13 +299,22 @@ impl Resolver {
                 ranges,
             );
         };
-        let shared = &mut waves.shared;
+        let (shared, shared_circles) = (&mut waves.shared, &mut waves.circles);
         let memories = || {
-            // Where each body stands when the waves start; what each found is written by
-            // its body's wave before any body reads it.
+            // Where each body and circle stands when the waves start (a circle's reach
+            // disc is centred there); what each found is written by its body's wave
+            // before any body reads it.
             shared.resize_with(n, Shared::default);
             for (entry, &at) in shared.iter().zip(position.iter()) {
                 entry.set(at);
+            }
+            shared_circles.resize_with(circles.len(), SharedCircle::default);
+            for (entry, (c, disc)) in shared_circles
+                .iter_mut()
+                .zip(circles.iter().zip(reach_discs))
+            {
+                *entry.at.get_mut() = pack(disc.center);
+                (entry.radius, entry.body) = (c.radius, c.body);
             }
             settled.begin(position, change != MapChange::Everything, config);
             wake_where_changed(settled, watch, change, boxes, circle_body);
@@ -295,20 +329,28 @@ impl Resolver {
         for w in 0..schedule.starts.len().saturating_sub(1) {
             let wave =
                 &schedule.order[schedule.starts[w] as usize..schedule.starts[w + 1] as usize];
-            let (this, shared) = (&*self, &waves.shared[..]);
+            let (this, shared, circles) = (&*self, &waves.shared[..], &waves.circles[..]);
             wave.par_iter()
                 .enumerate()
                 .with_min_len(MIN_BODIES_PER_TASK)
                 .with_max_len(MAX_BODIES_PER_TASK)
                 .for_each(|(k, &b)| {
-                    this.prefetch_ahead(wave, k, ranges, shared);
+                    this.prefetch_ahead(wave, k, ranges, shared, circles);
                     let bi = b as usize;
-                    let found = match this.outcome(b, ranges, shared, config, gap) {
+                    let found = match this.outcome(b, ranges, shared, circles, config, gap) {
                         Some(o) => {
-                            if !o.stayed {
+                            let found = Found::of(&o, this.position[bi]);
+                            if found.moved() {
                                 shared[bi].set(o.end);
+                                let own = this.first_circle[bi] as usize
+                                    ..this.first_circle[bi + 1] as usize;
+                                for (entry, c) in
+                                    circles[own.clone()].iter().zip(&this.circles[own])
+                                {
+                                    entry.set(o.end + c.offset);
+                                }
                             }
-                            Found::of(&o, this.position[bi])
+                            found
                         }
                         None => Found::default(),
                     };
@@ -360,7 +402,14 @@ impl Resolver {
     /// Asks the processor for what the bodies after the `k`th of `wave` will read (see
     /// [`AHEAD`]): the wave's bodies are far apart in slot order, so each one's entries are
     /// on cache lines of their own, and so are its neighbours'.
-    fn prefetch_ahead(&self, wave: &[u32], k: usize, ranges: &[(u32, u32)], shared: &[Shared]) {
+    fn prefetch_ahead(
+        &self,
+        wave: &[u32],
+        k: usize,
+        ranges: &[(u32, u32)],
+        shared: &[Shared],
+        circles: &[SharedCircle],
+    ) {
         use crate::prefetch::prefetch;
         if let Some(&b) = wave.get(k + AHEAD[0]) {
             let b = b as usize;
@@ -383,10 +432,21 @@ impl Resolver {
             self.neighbours.prefetch_row(c);
         }
         if let Some(&b) = wave.get(k + AHEAD[3]) {
-            self.prefetch_neighbour_circles(b as usize);
+            self.each_neighbour(b as usize, |m| {
+                prefetch(circles, m);
+                prefetch(&self.circle_body, m);
+            });
         }
+        // Whether a neighbour moved is read only for a body blocked in place last time.
         if let Some(&b) = wave.get(k + AHEAD[4]) {
-            self.prefetch_neighbour_positions(b as usize, shared, |_| {});
+            let b = b as usize;
+            if self
+                .settled
+                .kept(b, self.position[b], self.motion[b])
+                .is_some()
+            {
+                self.each_neighbour(b, |m| prefetch(shared, self.circle_body[m] as usize));
+            }
         }
     }
 
@@ -398,6 +458,7 @@ impl Resolver {
         b: u32,
         ranges: &[(u32, u32)],
         shared: &[Shared],
+        standing: &[SharedCircle],
         config: &ResolveConfig,
         gap: f32,
     ) -> Option<Outcome> {
@@ -435,13 +496,9 @@ impl Resolver {
             start,
             motion,
         };
-        let stand = Standing {
-            circles: &self.circles,
-            shared,
-        };
         let end = self.collide_and_slide(
             &mover,
-            &stand,
+            standing,
             &ranges[circles],
             config,
             gap,
