@@ -594,3 +594,50 @@ fn a_long_ray_a_hair_beside_a_grid_line_lists_every_floor_it_crosses() {
         "the square of row 3 is missing: {floors:?}"
     );
 }
+
+/// Regression: the same kind of ray a hair inside the map's own edge. From (−6e-8, 1) by
+/// (0.25, 6.5e7) on a map of half cells at (−3.5, 12.25) whose right edge is x = 0, the
+/// ray runs up through column 6 without leaving the map; rounded to `f32` grid units its
+/// `f64` clipped piece lay on that edge, and the walk left the map after the first floor.
+/// Both faces count: it crosses the tops of rows 3 and 7 from behind (y = 14.25, 16.25).
+#[test]
+fn a_long_ray_a_hair_inside_the_maps_edge_lists_every_floor_it_crosses() {
+    let e = None;
+    let t = |id: u32| Some(TileId(id));
+    #[rustfmt::skip]
+    let tiles = [
+        t(1), t(1), e, e, t(1), e, t(1),
+        t(1), e, t(2), e, t(3), t(1), t(4),
+        e, t(1), e, t(4), t(1), t(4), e,
+        e, t(3), t(1), e, e, t(1), t(2),
+        e, t(3), t(1), t(1), t(1), t(1), e,
+        t(2), e, t(2), t(1), t(1), t(1), t(2),
+        t(1), t(1), t(4), t(4), t(1), t(2), t(1),
+        t(4), e, t(2), t(1), t(2), e, t(1),
+    ];
+    let set = Arc::new(ascii::tile_set(0.5).unwrap());
+    let map = TileMap::from_tiles(set, 7, 8, Vec2::new(-3.5, 12.25), &tiles).unwrap();
+    let ray = Ray {
+        origin: Vec2::new(-5.960_464_5e-8, 1.0),
+        delta: Vec2::new(0.25, 64_631_264.0),
+    };
+    let filter = QueryFilter {
+        faces: Faces::Both,
+        ..QueryFilter::default()
+    };
+    let all = map.cast_ray_all(ray, &filter);
+    let first = map.cast_ray(ray, &filter).map(|h| h.point);
+    assert_eq!(all.first().map(|h| h.point), first);
+    let floors: Vec<(f32, Option<(u32, u32)>)> = all
+        .iter()
+        .map(|h| (h.point.y, h.cell().map(|c| (c.col, c.row))))
+        .collect();
+    for (y, row) in [(14.25, 3), (14.75, 5), (16.25, 7)] {
+        assert!(
+            floors
+                .iter()
+                .any(|&(fy, cell)| fy == y && cell == Some((6, row))),
+            "the floor of row {row} at y = {y} is missing: {floors:?}"
+        );
+    }
+}

@@ -262,50 +262,21 @@ impl TileMap {
     /// map (an `f64` keeps 53 bits of the origin's magnitude) to say which cells it
     /// crosses, so every cell is visited: such an origin is outside the range tileslide
     /// handles, and the answer is then the `f64` kernel's on every segment.
-    fn wide_cells(&self, p0: Vec2, delta: Vec2, mut visit: impl FnMut(usize)) {
+    fn wide_cells(&self, p0: Vec2, delta: Vec2, visit: impl FnMut(usize)) {
         if !in_range(p0) {
             (0..self.width() as usize * self.height() as usize).for_each(visit);
             return;
         }
-        let Some(clipped) = self.clipped_grid_ray(p0, delta) else {
+        let Some((origin, delta)) = self.clipped_grid_ray(p0, delta) else {
             return;
         };
-        if clipped.delta == Vec2::ZERO {
-            // Shorter than the smallest f32 in cells: the cells around its one point.
-            let o = clipped.origin;
-            let range = |v: f32, n: u32| {
-                let cell = |v: f32| (v.floor().max(0.0) as u32).min(n - 1);
-                cell(v - TOUCH_TOLERANCE)..=cell(v + TOUCH_TOLERANCE)
-            };
-            for row in range(o.y, self.height()) {
-                for col in range(o.x, self.width()) {
-                    visit(row as usize * self.width() as usize + col as usize);
-                }
-            }
-            return;
-        }
-        // Each walked cell with its eight neighbours: the clipped piece is rounded to `f32`
-        // grid units, where a ray a hair beside a grid line (closer than an `f32` ulp of
-        // the grid coordinate) can be walked on the wrong side of it for its whole length,
-        // and its hits on segments ending at that line lost. Every segment of a visited
-        // cell is solved exactly in `f64`, so a cell visited needlessly adds no false hit,
-        // only work, on these rare rays.
-        let (width, height) = (self.width() as usize, self.height() as usize);
-        walk(&clipped, 1.0, |index, _| {
-            let (col, row) = (index % width, index / width);
-            for r in row.saturating_sub(1)..=(row + 1).min(height - 1) {
-                for c in col.saturating_sub(1)..=(col + 1).min(width - 1) {
-                    visit(r * width + c);
-                }
-            }
-            false
-        });
+        walk_wide(origin, delta, self.width(), self.height(), visit);
     }
 
     /// The part of the ray from `p0` (within `MAX_COORD`) by `delta` inside the map's
-    /// rectangle widened by twice the touch tolerance, in grid units, computed in `f64`;
-    /// `None` when the ray misses that rectangle.
-    fn clipped_grid_ray(&self, p0: Vec2, delta: Vec2) -> Option<GridRay> {
+    /// rectangle widened by twice the touch tolerance, in grid units, computed in `f64`:
+    /// its start and its motion; `None` when the ray misses that rectangle.
+    fn clipped_grid_ray(&self, p0: Vec2, delta: Vec2) -> Option<(DVec2, DVec2)> {
         // (Subtracted in f64: in f32 the origin's rounding would move the line by up to a
         // unit at 2²⁴.)
         let (o, d) = (p0.as_dvec2() - self.origin().as_dvec2(), delta.as_dvec2());
@@ -333,12 +304,7 @@ impl TileMap {
         }
         let start = o + d * t_lo;
         let end = o + d * t_hi;
-        Some(GridRay {
-            origin: (start / cell).as_vec2(),
-            delta: ((end - start) / cell).as_vec2(),
-            width: self.width(),
-            height: self.height(),
-        })
+        Some((start / cell, (end - start) / cell))
     }
 
     /// The closest-hit walk for the rays the fast walk declines (kept out of line so the
@@ -487,4 +453,47 @@ enum Found {
     Face(Cell, usize, u32, u8),
     /// Cell, its index, and the segment's index in it.
     Tile(Cell, usize, u32),
+}
+
+/// Calls `visit` with every cell of a `width` × `height` grid that the piece from `o` by
+/// `d` (grid units, in `f64`; within the grid widened by a little) passes through, in walk
+/// order, each with its eight neighbours (a cell may come more than once). Walked in `f64`:
+/// rounded to `f32` grid units, a piece a hair beside a grid line can lie on the wrong side
+/// of it for its whole length (a ray from (−6e-8, 1) by (0.25, 6.5e7) on a map whose right
+/// edge is x = 0 rounds onto that edge and would leave the map at once, losing every floor
+/// after the first); the neighbours cover what rounding is left.
+fn walk_wide(o: DVec2, d: DVec2, width: u32, height: u32, mut visit: impl FnMut(usize)) {
+    let (w, h) = (i64::from(width), i64::from(height));
+    let cell = |v: f64, n: i64| (v.floor() as i64).clamp(0, n - 1);
+    let (mut col, mut row) = (cell(o.x, w), cell(o.y, h));
+    let step = |d: f64| i64::from(d > 0.0) - i64::from(d < 0.0);
+    let (step_x, step_y) = (step(d.x), step(d.y));
+    // The fraction of the piece where it crosses the grid line past cell `c` along an
+    // axis (never, for no motion along it).
+    let next = |c: i64, step: i64, o: f64, d: f64| {
+        if step == 0 {
+            f64::INFINITY
+        } else {
+            ((c + i64::from(step > 0)) as f64 - o) / d
+        }
+    };
+    loop {
+        for r in (row - 1).max(0)..=(row + 1).min(h - 1) {
+            for c in (col - 1).max(0)..=(col + 1).min(w - 1) {
+                visit((r * w + c) as usize);
+            }
+        }
+        let (tx, ty) = (next(col, step_x, o.x, d.x), next(row, step_y, o.y, d.y));
+        if tx.min(ty) > 1.0 {
+            return;
+        }
+        if tx <= ty {
+            col += step_x;
+        } else {
+            row += step_y;
+        }
+        if !(0..w).contains(&col) || !(0..h).contains(&row) {
+            return;
+        }
+    }
 }
