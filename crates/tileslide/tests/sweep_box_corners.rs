@@ -59,6 +59,8 @@ fn reference(case: Case, tol: f64) -> Expected {
     let mut t_enter = f64::NEG_INFINITY;
     let mut t_exit = f64::INFINITY;
     let mut entries = Vec::new();
+    // The entry's `t` as a quotient `num / den` (`den > 0`), for the exact sign below.
+    let (mut num, mut den) = (-1.0, 1.0);
     for &d in &dirs {
         let support = dot(a, d).max(dot(b, d)) + h[0] * d[0].abs() + h[1] * d[1].abs();
         let (cd, md) = (dot(c, d), dot(m, d));
@@ -74,6 +76,9 @@ fn reference(case: Case, tol: f64) -> Expected {
         } else if md < 0.0 {
             let t = (cd - support) / -md;
             entries.push((t, d));
+            if t > t_enter {
+                (num, den) = (cd - support, -md);
+            }
             t_enter = t_enter.max(t);
         } else {
             t_exit = t_exit.min((support - cd) / md);
@@ -89,7 +94,9 @@ fn reference(case: Case, tol: f64) -> Expected {
     if !(t_enter < t_exit && (0.0..=1.0).contains(&t_enter)) {
         return Expected::Miss;
     }
-    // The centre's height over the segment's line at the contact.
+    // The centre's height over the segment's line at the contact, and its sign without
+    // rounding `t`: `den` times it is `(c − a)·n·den + num·(m·n)`, exact on the grid of
+    // eighths (rounded, `t` can put a centre that is on the line a hair to either side).
     let height = dot(
         [c[0] + m[0] * t_enter - a[0], c[1] + m[1] * t_enter - a[1]],
         nf,
@@ -97,6 +104,7 @@ fn reference(case: Case, tol: f64) -> Expected {
     if tol > 0.0 && height.abs() <= tol {
         return Expected::Unclear;
     }
+    let height = dot([c[0] - a[0], c[1] - a[1]], nf) * den + num * dot(m, nf);
     let outcome = |d: [f64; 2]| -> Option<Vec2> {
         if d == nf {
             return Some(n);
