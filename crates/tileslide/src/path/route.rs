@@ -56,11 +56,12 @@ impl NavPath {
 
     /// True when `change` may have blocked this path or opened a shorter way near it: an
     /// edit changed moves within reach of the path, and opened or closed some move for its
-    /// radius. Far-away edits and edits that only change clearances no circle of this
-    /// radius notices do not affect it; a grid rebuilt from scratch
-    /// ([`NavChange::is_rebuild`]) affects every path.
+    /// radius, or an edited cell lies within the radius of one of its runs. Far-away edits
+    /// and edits that only change clearances no circle of this radius notices do not
+    /// affect it; a grid rebuilt from scratch ([`NavChange::is_rebuild`]) affects every
+    /// path.
     #[must_use]
     pub fn is_affected_by(&self, change: &NavChange) -> bool {
-        change.affects(&self.bounds, self.need)
+        change.affects(&self.bounds, self.need) || change.touches_runs(&self.points, self.radius)
     }
 }

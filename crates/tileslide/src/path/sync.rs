@@ -8,7 +8,7 @@ use glam::Vec2;
 
 use super::clearance::{ChangedMove, Clearance};
 use super::{NavError, NavGrid, lattice};
-use crate::geometry::Aabb;
+use crate::geometry::{Aabb, Segment};
 use crate::tiles::{JournalError, MapRevision, TileMap};
 
 /// What the map's edits changed in a [`NavGrid`] since it last caught up (from
@@ -22,6 +22,8 @@ pub struct NavChange {
     edits: Vec<(usize, Option<Aabb>)>,
     /// The extent of every changed move, or the whole map after a rebuild.
     region: Option<Aabb>,
+    /// The rectangle of each edited cell, in the order of the edits.
+    cells: Vec<Aabb>,
     /// True when the grid was built anew: the map's journal no longer reached back to it.
     rebuilt: bool,
 }
@@ -33,6 +35,7 @@ impl NavChange {
             moves: Vec::new(),
             edits: Vec::new(),
             region: None,
+            cells: Vec::new(),
             rebuilt: false,
         }
     }
@@ -63,8 +66,9 @@ impl NavChange {
         self.moves.len()
     }
 
-    /// Records the moves one edited cell changed.
-    fn push_edit(&mut self, lattice: &lattice::Lattice, moves: Vec<ChangedMove>) {
+    /// Records the moves edited cell `cell` (its rectangle) changed.
+    fn push_edit(&mut self, lattice: &lattice::Lattice, cell: Aabb, moves: Vec<ChangedMove>) {
+        self.cells.push(cell);
         let region = moves.iter().fold(None, |acc: Option<Aabb>, m| {
             let p = lattice.position_of(m.node as usize);
             let (di, dj) = lattice::MOVES[m.dir as usize];
@@ -84,6 +88,21 @@ impl NavChange {
     /// edit, as if the grid had caught up after each).
     ///
     /// [`NavPath::is_affected_by`]: super::NavPath::is_affected_by
+    /// True when some edited cell comes within `radius` of a run between consecutive
+    /// `points`: its new walls may meet a circle of that radius on the run, whichever
+    /// lattice moves it changed (a run is not a lattice move: filling a slope beside a
+    /// run can block it while every move near it stays open).
+    pub(super) fn touches_runs(&self, points: &[Vec2], radius: f32) -> bool {
+        // A little more than the radius, for rounding: a cell that close may block the run.
+        let reach = radius * (1.0 + 1e-4) + 1e-4;
+        self.cells.iter().any(|cell| {
+            let grown = cell.expand(reach);
+            points
+                .windows(2)
+                .any(|run| grown.overlaps_segment(&Segment::new(run[0], run[1])))
+        })
+    }
+
     pub(super) fn affects(&self, bounds: &Aabb, need: u16) -> bool {
         if self.rebuilt {
             return true;
@@ -135,7 +154,7 @@ impl NavGrid {
                     for class in &mut memory.classes {
                         class.apply(&self.table, &moves);
                     }
-                    change.push_edit(&self.table.lattice, moves);
+                    change.push_edit(&self.table.lattice, map.cell_rect(cell), moves);
                 }
             }
         }
