@@ -554,6 +554,24 @@ proptest! {
     }
 }
 
+/// A map of `width` × `height` half cells at (−3.5, 12.25), row by row, of the tiles of the
+/// ASCII set with the ids `ids` (0: none).
+fn half_cells(width: u32, height: u32, ids: &[u32]) -> TileMap {
+    let tiles: Vec<Option<TileId>> = ids
+        .iter()
+        .map(|&id| (id != 0).then_some(TileId(id)))
+        .collect();
+    let set = Arc::new(ascii::tile_set(0.5).unwrap());
+    TileMap::from_tiles(set, width, height, Vec2::new(-3.5, 12.25), &tiles).unwrap()
+}
+
+/// Where each hit is: its height, and its cell's column and row.
+fn floors(hits: &[RayHit]) -> Vec<(f32, Option<(u32, u32)>)> {
+    hits.iter()
+        .map(|h| (h.point.y, h.cell().map(|c| (c.col, c.row))))
+        .collect()
+}
+
 /// Regression: a long ray running a hair beside a grid line, from far enough to take the
 /// `f64` path, was walked on the wrong side of the line, and `cast_ray_all` listed the
 /// first floor it crosses but missed the ones after it (found by
@@ -563,19 +581,15 @@ proptest! {
 /// it, and it crosses the second at x ≈ −1.2e-8, t ≈ 4.75e-8.
 #[test]
 fn a_long_ray_a_hair_beside_a_grid_line_lists_every_floor_it_crosses() {
-    let e = None;
-    let t = |id: u32| Some(TileId(id));
     #[rustfmt::skip]
-    let tiles = [
-        t(2), t(1), t(4), t(1), t(1), t(2), t(1), e,
-        e, e, e, e, t(4), t(3), t(4), t(2),
-        e, t(3), e, t(2), t(1), t(1), e, t(1),
-        e, e, e, t(2), t(1), t(2), t(1), t(3),
-        t(3), e, t(3), t(2), t(4), t(1), t(2), e,
-        t(1), t(1), t(1), e, t(2), e, t(3), t(1),
-    ];
-    let set = Arc::new(ascii::tile_set(0.5).unwrap());
-    let map = TileMap::from_tiles(set, 8, 6, Vec2::new(-3.5, 12.25), &tiles).unwrap();
+    let map = half_cells(8, 6, &[
+        2, 1, 4, 1, 1, 2, 1, 0,
+        0, 0, 0, 0, 4, 3, 4, 2,
+        0, 3, 0, 2, 1, 1, 0, 1,
+        0, 0, 0, 2, 1, 2, 1, 3,
+        3, 0, 3, 2, 4, 1, 2, 0,
+        1, 1, 1, 0, 2, 0, 3, 1,
+    ]);
     let ray = Ray {
         origin: Vec2::new(-5.960_464_5e-8, 1.0),
         delta: Vec2::new(1.0, 268_435_460.0),
@@ -585,10 +599,7 @@ fn a_long_ray_a_hair_beside_a_grid_line_lists_every_floor_it_crosses() {
     assert_eq!((hit.normal, hit.point.y), (Vec2::new(0.0, -1.0), 12.25));
     let all = map.cast_ray_all(ray, &QueryFilter::default());
     assert_eq!(all.first().map(|h| h.point), Some(hit.point));
-    let floors: Vec<(f32, Option<(u32, u32)>)> = all
-        .iter()
-        .map(|h| (h.point.y, h.cell().map(|c| (c.col, c.row))))
-        .collect();
+    let floors = floors(&all);
     assert!(
         floors.contains(&(13.75, Some((6, 3)))),
         "the square of row 3 is missing: {floors:?}"
@@ -602,21 +613,17 @@ fn a_long_ray_a_hair_beside_a_grid_line_lists_every_floor_it_crosses() {
 /// Both faces count: it crosses the tops of rows 3 and 7 from behind (y = 14.25, 16.25).
 #[test]
 fn a_long_ray_a_hair_inside_the_maps_edge_lists_every_floor_it_crosses() {
-    let e = None;
-    let t = |id: u32| Some(TileId(id));
     #[rustfmt::skip]
-    let tiles = [
-        t(1), t(1), e, e, t(1), e, t(1),
-        t(1), e, t(2), e, t(3), t(1), t(4),
-        e, t(1), e, t(4), t(1), t(4), e,
-        e, t(3), t(1), e, e, t(1), t(2),
-        e, t(3), t(1), t(1), t(1), t(1), e,
-        t(2), e, t(2), t(1), t(1), t(1), t(2),
-        t(1), t(1), t(4), t(4), t(1), t(2), t(1),
-        t(4), e, t(2), t(1), t(2), e, t(1),
-    ];
-    let set = Arc::new(ascii::tile_set(0.5).unwrap());
-    let map = TileMap::from_tiles(set, 7, 8, Vec2::new(-3.5, 12.25), &tiles).unwrap();
+    let map = half_cells(7, 8, &[
+        1, 1, 0, 0, 1, 0, 1,
+        1, 0, 2, 0, 3, 1, 4,
+        0, 1, 0, 4, 1, 4, 0,
+        0, 3, 1, 0, 0, 1, 2,
+        0, 3, 1, 1, 1, 1, 0,
+        2, 0, 2, 1, 1, 1, 2,
+        1, 1, 4, 4, 1, 2, 1,
+        4, 0, 2, 1, 2, 0, 1,
+    ]);
     let ray = Ray {
         origin: Vec2::new(-5.960_464_5e-8, 1.0),
         delta: Vec2::new(0.25, 64_631_264.0),
@@ -628,10 +635,7 @@ fn a_long_ray_a_hair_inside_the_maps_edge_lists_every_floor_it_crosses() {
     let all = map.cast_ray_all(ray, &filter);
     let first = map.cast_ray(ray, &filter).map(|h| h.point);
     assert_eq!(all.first().map(|h| h.point), first);
-    let floors: Vec<(f32, Option<(u32, u32)>)> = all
-        .iter()
-        .map(|h| (h.point.y, h.cell().map(|c| (c.col, c.row))))
-        .collect();
+    let floors = floors(&all);
     for (y, row) in [(14.25, 3), (14.75, 5), (16.25, 7)] {
         assert!(
             floors
