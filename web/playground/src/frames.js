@@ -102,7 +102,8 @@ export function runFrames({
       const start = performance.now();
       let steps = 0;
       if (!paused()) {
-        owed += Math.min(((now - before) / 1000) * stepsPerSecond * speed(), maxSteps);
+        // A frame's timestamp can precede the time the loop started: no steps owed then.
+        owed += Math.min((Math.max(0, now - before) / 1000) * stepsPerSecond * speed(), maxSteps);
         steps = Math.floor(owed);
         owed -= steps;
         for (let i = 0; i < steps; i++) step();

@@ -22,6 +22,8 @@ function waitForPlayer(condition, timeout = 10_000) {
 }
 
 test("the bundled level starts with the player standing at its start", async () => {
+  // The player's contacts are known once it has moved: the first frames may run no step.
+  await waitForPlayer((s) => s.steps > 0);
   const s = await stateOf(session.page);
   assert.equal(s.name, "platformer.txt");
   assert.equal(s.grounded, true);
