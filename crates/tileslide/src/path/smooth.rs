@@ -10,10 +10,12 @@
 //! path turns round, where the exact shortest path of a circle wraps an arc of its radius
 //! round the wall's corner. So each corner is then cut: its two runs are joined by the
 //! longest chord, at the same fraction back along each run (at most half of each, so the
-//! corner at a run's other end keeps its share), that the circle cast finds clear, and the two new corners are cut in turn until they turn by less than
-//! [`FINE_TURN`]. That is corner cutting in the manner of Chaikin's subdivision, but
-//! maximal and checked; the cuts shrink towards the arc from outside, each one shorter
-//! than what it replaces.
+//! corner at a run's other end keeps its share), that the circle cast finds clear, and
+//! the two new corners are cut in turn until they turn by less than [`FINE_TURN`]. That
+//! is corner cutting in the manner of Chaikin's subdivision, but maximal and checked; the
+//! cuts shrink towards the arc from outside, each one shorter than what it replaces. The
+//! pieces kept of the two runs are cast again, as the new corners lie on them only up to
+//! rounding.
 
 use glam::Vec2;
 
@@ -235,11 +237,18 @@ impl Cutter<'_> {
         // The longest clear chord by halving; `t = 0` is the corner itself.
         let lo = largest_clear(clear);
         let (p, q) = chord(lo);
-        if lo == 0.0 || p == v || q == v {
+        // The new corners lie on the old runs only up to rounding, which can bring a run
+        // that grazes a wall's corner at the radius onto it: the pieces kept of the old
+        // runs are cast too, so every run of the result has been checked itself.
+        if lo == 0.0
+            || p == v
+            || q == v
+            || !is_clear(self.map, prev, p, self.radius, self.table)
+            || !is_clear(self.map, q, next, self.radius, self.table)
+        {
             out.push(v);
             return;
         }
-        // Both new corners lie on the old runs, so the runs to and from them are clear.
         self.cut(out, p, q, depth - 1);
         self.cut(out, q, next, depth - 1);
     }
