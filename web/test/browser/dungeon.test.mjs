@@ -107,9 +107,10 @@ test("an imp summoned with I and a click stands where it was put", async () => {
 test("the explain tool: a click on the imp tells its last step", async () => {
   assert.equal((await stateOf(session.page)).paused, true);
   await session.page.keyboard.press("e");
-  // A few steps traced, then paused again.
+  // A few steps traced (however many frames they take), then paused again.
+  const { steps } = await stateOf(session.page);
   await session.page.keyboard.press("Space");
-  await waitFrames(session.page, 4);
+  await session.page.waitForFunction((n) => window.__tileslide.state().steps >= n + 3, steps);
   await session.page.keyboard.press("Space");
   const fighters = await session.page.evaluate(() => window.__tileslide.fighters());
   const imp = fighters.findIndex((v, i) => i % 7 === 3 && v === 2) - 3;
