@@ -11,10 +11,15 @@
 //!
 //! The sweeps count a contact only where the shapes move into each other, so for a pair
 //! whose paths only graze (the pair test, which counts touching, says they meet; the
-//! sweeps see no approach) the time is found by bisecting the pair test over the move
-//! instead: the first time at which the pair test says the volumes touch. (For a path that
-//! only grazes, that is within about √ε of the sizes of the true touch: `f32` squared
-//! distances cannot tell a tangent approach from a touch closer than that.)
+//! sweeps see no approach) the time comes from the distance between the shapes' cores
+//! instead, which is convex along the move (the distance from a point moving on a line to
+//! a convex set, their Minkowski difference): a golden-section search finds its least, the
+//! nearest approach; where the shapes touch there, bisection finds the first time they do,
+//! on the stretch before, where the distance only falls. (For a path that only grazes, that
+//! is within about √ε of the sizes of the true touch: `f32` distances cannot tell a
+//! tangent approach from a touch closer than that. Bisecting the swept pair test itself
+//! is not enough: for an exactly tangent path it answers by rounding for every time past
+//! the touch, so the bisection can end anywhere after it.)
 
 use glam::Vec2;
 
@@ -34,6 +39,14 @@ pub(super) struct Contact {
 /// spacing of `f32` near 1 (2⁻²⁴) with room to spare; the loop also stops as soon as the
 /// middle of the interval rounds to one of its ends.
 const BISECTION_STEPS: u32 = 32;
+
+/// Golden-section steps for a grazing pair's nearest approach: the interval shrinks to
+/// 0.618 of itself each step, so 48 reach 10⁻¹⁰ (below the spacing of `f32` near 1); the
+/// loop also stops as soon as its two inner points round together or onto an end.
+const GOLDEN_STEPS: u32 = 48;
+
+/// The share of the interval between each end and the inner point nearer it, 1 − 1/φ.
+const GOLDEN_SHARE: f32 = 0.381_966;
 
 impl Placed {
     /// When and where `self`, placed where the frame starts and moving by `motion`, first
@@ -78,23 +91,73 @@ impl Placed {
         }
     }
 
-    /// The least `t` at which `self`, moved by `motion · t`, meets `other`, by bisection:
-    /// meeting over a part of the move implies meeting over any longer part, so the pair
-    /// test is monotonic in `t`.
+    /// The first `t` at which `self`, moved by `motion · t`, touches `other`, for a pair
+    /// the sweeps see no approach in (see the module's notes): the nearest approach, or the
+    /// first time before it at which the gap closes.
     fn first_meeting(&self, motion: Vec2, other: &Placed) -> f32 {
+        // The squared distance between the cores is convex in `t` too (the square of a
+        // convex function that is never negative), and its comparison with the squared
+        // reach resolves a tangent approach as finely as `f32` can.
+        let apart = |t: f32| self.core_distance_squared(motion * t, other);
+        let reach = self.reach(other);
+        let touches = |t: f32| apart(t) <= reach * reach;
         let (mut lo, mut hi) = (0.0f32, 1.0f32);
+        for _ in 0..GOLDEN_STEPS {
+            let share = (hi - lo) * GOLDEN_SHARE;
+            let (m1, m2) = (lo + share, hi - share);
+            if !(lo < m1 && m1 < m2 && m2 < hi) {
+                break;
+            }
+            // On a tie (a stretch where the distance is flat) the earlier part is kept.
+            if apart(m1) <= apart(m2) {
+                hi = m2;
+            } else {
+                lo = m1;
+            }
+        }
+        let nearest = if apart(lo) <= apart(hi) { lo } else { hi };
+        if !touches(nearest) {
+            return nearest;
+        }
+        // The distance only falls from 0 to `nearest`, and the pair does not touch at 0:
+        // the first time it does.
+        let (mut lo, mut hi) = (0.0f32, nearest);
         for _ in 0..BISECTION_STEPS {
             let mid = 0.5 * (lo + hi);
             if mid <= lo || mid >= hi {
                 break;
             }
-            if self.meets(motion * mid, other) {
+            if touches(mid) {
                 hi = mid;
             } else {
                 lo = mid;
             }
         }
         hi
+    }
+
+    /// The squared distance between the cores of `self` moved by `offset` and of `other`
+    /// (0 where they overlap): convex in `offset`.
+    fn core_distance_squared(&self, offset: Vec2, other: &Placed) -> f32 {
+        #[cfg(feature = "aim")]
+        if !(self.is_rounded_box() && other.is_rounded_box()) {
+            let moved = self.rounded().moved(offset);
+            return moved.core_distance_squared(&other.rounded());
+        }
+        let (a, b) = (moved(self.rounded_box().0, offset), other.rounded_box().0);
+        (b.min - a.max)
+            .max(a.min - b.max)
+            .max(Vec2::ZERO)
+            .length_squared()
+    }
+
+    /// The sum of the radii that round the two cores.
+    fn reach(&self, other: &Placed) -> f32 {
+        #[cfg(feature = "aim")]
+        if !(self.is_rounded_box() && other.is_rounded_box()) {
+            return self.rounded().reach(&other.rounded());
+        }
+        self.rounded_box().1 + other.rounded_box().1
     }
 }
 
@@ -252,6 +315,25 @@ mod tests {
         );
         assert_eq!(c.t, 0.5);
         assert_eq!(c.point, Vec2::new(3.0, 1.0));
+    }
+
+    #[test]
+    fn an_exactly_tangent_path_touches_at_its_closest_approach_not_later() {
+        // A circle of radius 0.25 from (2.25, −2.625) by (−5.625, 7.5) past a rectangle of
+        // width 0 from (−0.125, −0.5) to (−0.125, 0.125): the centre's path is tangent to
+        // the circle of radius 0.25 round the top end, at t = 29/75 (the quadratic's
+        // discriminant is exactly 0). The swept pair test answers by rounding for every
+        // time past that; the time reported is the touch.
+        let c = hit(
+            circle(2.25, -2.625, 0.25),
+            Vec2::new(-5.625, 7.5),
+            rect(-0.125, -0.5, -0.125, 0.125),
+        );
+        assert!((c.t - 29.0 / 75.0).abs() < 1e-4, "{c:?}");
+        let centre = Vec2::new(2.25, -2.625) + Vec2::new(-5.625, 7.5) * c.t;
+        let top = Vec2::new(-0.125, 0.125);
+        assert!((centre.distance(top) - 0.25).abs() < 1e-4, "{c:?}");
+        assert!(c.point.distance(top) < 1e-4, "{c:?}");
     }
 
     #[cfg(feature = "aim")]

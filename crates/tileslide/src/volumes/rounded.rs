@@ -156,6 +156,26 @@ impl Rounded {
             ))
     }
 
+    /// The squared distance between the two cores: 0 when they overlap (one holds a corner
+    /// of the other, or edges cross), else the least between an edge of each.
+    pub fn core_distance_squared(&self, other: &Rounded) -> f32 {
+        if other.contains(self.corners[0]) || self.contains(other.corners[0]) {
+            return 0.0;
+        }
+        (self.edges())
+            .flat_map(|e| {
+                other
+                    .edges()
+                    .map(move |f| e.distance_squared_to_segment(&f))
+            })
+            .fold(f32::INFINITY, f32::min)
+    }
+
+    /// The sum of the two radii.
+    pub fn reach(&self, other: &Rounded) -> f32 {
+        self.radius + other.radius
+    }
+
     /// The first time in `[0, 1]` at which `self`, moving by `motion`, touches `other`,
     /// from the exact sweeps of each corner of one, rounded by both radii, against each face
     /// of the other and its end caps. `None` when no sweep reports a contact: the shapes
