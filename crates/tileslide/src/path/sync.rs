@@ -83,11 +83,6 @@ impl NavChange {
         }
     }
 
-    /// True when some edit changed moves within `bounds` and opened or closed some move for
-    /// a circle needing `need` clearance steps (what [`NavPath::is_affected_by`] asks, edit by
-    /// edit, as if the grid had caught up after each).
-    ///
-    /// [`NavPath::is_affected_by`]: super::NavPath::is_affected_by
     /// True when some edited cell comes within `radius` of a run between consecutive
     /// `points`: its new walls may meet a circle of that radius on the run, whichever
     /// lattice moves it changed (a run is not a lattice move: filling a slope beside a
@@ -103,6 +98,11 @@ impl NavChange {
         })
     }
 
+    /// True when some edit changed moves within `bounds` and opened or closed some move for
+    /// a circle needing `need` clearance steps (what [`NavPath::is_affected_by`] asks, edit by
+    /// edit, as if the grid had caught up after each).
+    ///
+    /// [`NavPath::is_affected_by`]: super::NavPath::is_affected_by
     pub(super) fn affects(&self, bounds: &Aabb, need: u16) -> bool {
         if self.rebuilt {
             return true;
